@@ -1,0 +1,34 @@
+# Sourced by scripts/test.sh, scripts/demo.sh and .ci/run: the Debian 12 packages bonl needs.
+BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev)
+command -v python3 >/dev/null 2>&1 || BONL_APT_PACKAGES+=(python3-pip)
+
+step() { printf '\n==> %s\n' "$*"; }
+
+# apt-get update + install of every package (through sudo when not root).
+bonl_apt_install() {
+  local sudo=()
+  [[ $(id -u) -eq 0 ]] || sudo=(sudo)
+  step "apt-get update"
+  "${sudo[@]}" apt-get update
+  step "apt-get install ${BONL_APT_PACKAGES[*]}"
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y --no-install-recommends "${BONL_APT_PACKAGES[@]}"
+}
+
+# Like bonl_apt_install, but skips apt when dpkg says every package is already installed.
+bonl_ensure_deps() {
+  local missing=() p
+  if ! command -v dpkg-query >/dev/null 2>&1; then
+    step "no dpkg-query (not Debian?): assuming the dependencies are installed"
+    return
+  fi
+  for p in "${BONL_APT_PACKAGES[@]}"; do
+    [[ $(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null) == installed ]] || missing+=("$p")
+  done
+  if ((${#missing[@]} == 0)); then
+    step "apt packages already installed, skipping apt"
+  else
+    echo "missing packages: ${missing[*]}"
+    bonl_apt_install
+  fi
+}

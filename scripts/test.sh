@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Builds and runs every C++ test, then installs bonl and builds examples/consumer against it.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source scripts/deps.sh
+bonl_ensure_deps
+
+step "configure (build/ci)"
+cmake -S . -B build/ci -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DBONL_BUILD_TESTS=ON -DBONL_BUILD_BENCH=ON -DBONL_WARNINGS_AS_ERRORS=ON
+
+step "build"
+cmake --build build/ci -j2
+
+step "ctest"
+status=0
+ctest --test-dir build/ci --output-on-failure --no-tests=error || status=1
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+step "install to a temporary prefix, build and run examples/consumer against it"
+cmake --install build/ci --prefix "$tmp/prefix"
+cmake -S examples/consumer -B "$tmp/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$tmp/prefix"
+cmake --build "$tmp/consumer" -j2
+"$tmp/consumer/consumer"
+
+if ((status != 0)); then
+  step "FAILED: some tests failed (see the ctest summary above)"
+  exit 1
+fi
+step "all passed"

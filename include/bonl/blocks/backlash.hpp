@@ -1,0 +1,100 @@
+#pragma once
+// Backlash (play) blocks of the P-H-W model (paper eqs. 10-12).
+// - Backlash: the symmetric, unit-slope form used for identification, half-width c >= 0:
+//     y(k) = x(k) - c if x(k) > y(k-1) + c;  x(k) + c if x(k) < y(k-1) - c;  else y(k-1).
+// - GeneralBacklash: separate right/left thresholds and a slope m, for simulation (Fig. 9):
+//     y(k) = m (x(k) - c_right) if m (x(k) - c_right) > y(k-1);
+//            m (x(k) + c_left)  if m (x(k) + c_left)  < y(k-1);  else y(k-1).
+// Both keep y(k-1) as their memory; they start engaged at a chosen output (default 0).
+
+#include <cmath>
+#include <string>
+
+#include "../detail/validate.hpp"
+
+namespace bonl {
+
+/// Switching function g3 of the paper: 1 when the input pushes the upper edge, x > y_prev + c.
+template <typename Scalar>
+constexpr Scalar backlash_g3(Scalar x, Scalar y_prev, Scalar c) noexcept {
+  return y_prev + c < x ? Scalar(1) : Scalar(0);
+}
+
+/// Switching function g4 of the paper: 1 when the input pushes the lower edge, x < y_prev - c.
+template <typename Scalar>
+constexpr Scalar backlash_g4(Scalar x, Scalar y_prev, Scalar c) noexcept {
+  return y_prev - c > x ? Scalar(1) : Scalar(0);
+}
+
+template <typename Scalar_ = double>
+class Backlash {
+ public:
+  using Scalar = Scalar_;
+
+  explicit Backlash(Scalar c = Scalar(0), Scalar y0 = Scalar(0)) : m_y(y0) { set_c(c); }
+
+  Scalar c() const noexcept { return m_c; }
+  void set_c(Scalar c) {
+    detail::require(std::isfinite(c) && c >= Scalar(0), "backlash half-width c must be finite and >= 0, got " +
+                                                            std::to_string(static_cast<double>(c)));
+    m_c = c;
+  }
+  /// The memory y(k-1).
+  Scalar output() const noexcept { return m_y; }
+  void reset(Scalar y0 = Scalar(0)) noexcept { m_y = y0; }
+
+  Scalar step(Scalar x) noexcept {
+    m_y = map(x, m_y, m_c);
+    return m_y;
+  }
+
+  /// One step of the play operator without state.
+  static Scalar map(Scalar x, Scalar y_prev, Scalar c) noexcept {
+    if (x > y_prev + c) return x - c;
+    if (x < y_prev - c) return x + c;
+    return y_prev;
+  }
+
+ private:
+  Scalar m_c = Scalar(0);
+  Scalar m_y = Scalar(0);
+};
+
+template <typename Scalar_ = double>
+class GeneralBacklash {
+ public:
+  using Scalar = Scalar_;
+
+  GeneralBacklash(Scalar c_left, Scalar c_right, Scalar slope = Scalar(1), Scalar y0 = Scalar(0))
+      : m_c_left(c_left), m_c_right(c_right), m_slope(slope), m_y(y0) {
+    detail::require(std::isfinite(c_left) && c_left >= Scalar(0), "c_left must be finite and >= 0");
+    detail::require(std::isfinite(c_right) && c_right >= Scalar(0), "c_right must be finite and >= 0");
+    detail::require(std::isfinite(slope) && slope > Scalar(0), "slope m must be finite and > 0");
+    detail::require(std::isfinite(y0), "initial output y0 must be finite");
+  }
+
+  Scalar c_left() const noexcept { return m_c_left; }
+  Scalar c_right() const noexcept { return m_c_right; }
+  Scalar slope() const noexcept { return m_slope; }
+  Scalar output() const noexcept { return m_y; }
+  void reset(Scalar y0 = Scalar(0)) noexcept { m_y = y0; }
+
+  Scalar step(Scalar x) noexcept {
+    const Scalar up = m_slope * (x - m_c_right);
+    const Scalar down = m_slope * (x + m_c_left);
+    if (up > m_y) {
+      m_y = up;
+    } else if (down < m_y) {
+      m_y = down;
+    }
+    return m_y;
+  }
+
+ private:
+  Scalar m_c_left;
+  Scalar m_c_right;
+  Scalar m_slope;
+  Scalar m_y;
+};
+
+}  // namespace bonl

@@ -1,0 +1,79 @@
+#pragma once
+// Linear dynamic block L of the models (paper eqs. 6-8), with the sign convention of eq. (7):
+//   A(z^-1) x(k) = z^-nk B(z^-1) w(k),  A = 1 + a_1 z^-1 + ... + a_na z^-na,
+//   B = b_0 + b_1 z^-1 + ... + b_nb z^-nb,
+// i.e. x(k) = -sum_j a_j x(k-j) + sum_i b_i w(k-nk-i). The block starts at rest: every past w and
+// x is zero.
+
+#include <Eigen/Core>
+
+#include "../detail/history.hpp"
+#include "../detail/validate.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic>
+class LinearBlock {
+ public:
+  using Scalar = Scalar_;
+  using ACoeffs = Eigen::Matrix<Scalar, Na_, 1>;
+  using BCoeffs = Eigen::Matrix<Scalar, detail::poly_size(Nb_), 1>;
+
+  /// na >= 1 poles, nb >= 0 (b has nb + 1 coefficients), pure delay nk >= 0. a = 0, b = [1, 0...].
+  LinearBlock(Eigen::Index na, Eigen::Index nb, Eigen::Index nk) : m_nk(nk) {
+    detail::require_order(na, 1, "na");
+    detail::require_order(nb, 0, "nb");
+    detail::require_order(nk, 0, "nk");
+    detail::require_matches_template(na, Na_, "na");
+    detail::require_matches_template(nb, Nb_, "nb");
+    m_a = ACoeffs::Zero(na);
+    m_b = BCoeffs::Zero(nb + 1);
+    m_b[0] = Scalar(1);
+    m_w = detail::History<Scalar>(nk + nb + 1);
+    m_x = detail::History<Scalar>(na);
+  }
+
+  Eigen::Index na() const noexcept { return m_a.size(); }
+  Eigen::Index nb() const noexcept { return m_b.size() - 1; }
+  Eigen::Index nk() const noexcept { return m_nk; }
+  const ACoeffs& a() const noexcept { return m_a; }
+  const BCoeffs& b() const noexcept { return m_b; }
+
+  template <typename A>
+  void set_a(const Eigen::MatrixBase<A>& a) {
+    detail::require_size(a, m_a.size(), "a");
+    detail::require_finite(a, "a");
+    m_a = a;
+  }
+  template <typename B>
+  void set_b(const Eigen::MatrixBase<B>& b) {
+    detail::require_size(b, m_b.size(), "b");
+    detail::require_finite(b, "b");
+    m_b = b;
+  }
+
+  /// Back to rest.
+  void reset() noexcept {
+    m_w.clear();
+    m_x.clear();
+  }
+
+  /// Feeds w(k), returns x(k).
+  Scalar step(Scalar w) noexcept {
+    m_w.push(w);
+    Scalar x = Scalar(0);
+    for (Eigen::Index i = 0; i < m_b.size(); ++i) x += m_b[i] * m_w[m_nk + i];
+    for (Eigen::Index j = 0; j < m_a.size(); ++j) x -= m_a[j] * m_x[j];
+    m_x.push(x);
+    return x;
+  }
+
+ private:
+  ACoeffs m_a;
+  BCoeffs m_b;
+  Eigen::Index m_nk;
+  detail::History<Scalar> m_w;
+  detail::History<Scalar> m_x;
+};
+
+}  // namespace bonl

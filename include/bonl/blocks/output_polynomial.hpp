@@ -1,0 +1,77 @@
+#pragma once
+// Output block N2 of the Hammerstein-Wiener model (paper eq. 9): y = sum_{m=1..r1} q_m x^m.
+// For identification q_1 = 1 (normalisation), but the block itself accepts any q_1.
+
+#include <Eigen/Core>
+#include <cmath>
+
+#include "../detail/validate.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int R1_ = Eigen::Dynamic>
+class OutputPolynomial {
+ public:
+  using Scalar = Scalar_;
+  using Coeffs = Eigen::Matrix<Scalar, R1_, 1>;
+
+  /// Degree r1 >= 1; q = [1, 0, ..., 0] (the identity).
+  explicit OutputPolynomial(Eigen::Index r1 = (R1_ == Eigen::Dynamic ? 1 : R1_)) {
+    detail::require_order(r1, 1, "r1 (output polynomial degree)");
+    detail::require_matches_template(r1, R1_, "r1");
+    m_q = Coeffs::Zero(r1);
+    m_q[0] = Scalar(1);
+  }
+
+  Eigen::Index degree() const noexcept { return m_q.size(); }
+  /// q_1..q_r1.
+  const Coeffs& q() const noexcept { return m_q; }
+  template <typename Q>
+  void set_q(const Eigen::MatrixBase<Q>& q) {
+    detail::require_size(q, m_q.size(), "q");
+    detail::require_finite(q, "q");
+    m_q = q;
+  }
+
+  Scalar operator()(Scalar x) const noexcept { return evaluate(m_q, x); }
+  Scalar derivative(Scalar x) const noexcept { return evaluate_derivative(m_q, x); }
+
+  /// y = sum_m q_m x^m for q = q_1..q_r1.
+  template <typename Q>
+  static Scalar evaluate(const Eigen::MatrixBase<Q>& q, Scalar x) noexcept {
+    Scalar y = Scalar(0);
+    for (Eigen::Index m = q.size() - 1; m >= 0; --m) y = (y + q[m]) * x;
+    return y;
+  }
+  template <typename Q>
+  static Scalar evaluate_derivative(const Eigen::MatrixBase<Q>& q, Scalar x) noexcept {
+    Scalar d = Scalar(0);
+    for (Eigen::Index m = q.size() - 1; m >= 0; --m) d = d * x + Scalar(m + 1) * q[m];
+    return d;
+  }
+
+  /// Solves q(x) = y by Newton's method from `guess`. Returns false (and leaves x alone) when the
+  /// polynomial is not locally invertible there: a vanishing slope, or no convergence in 30 steps.
+  template <typename Q>
+  static bool invert(const Eigen::MatrixBase<Q>& q, Scalar y, Scalar guess, Scalar& x) noexcept {
+    Scalar z = guess;
+    const Scalar scale = Scalar(1) + std::abs(y);
+    for (int iteration = 0; iteration < 30; ++iteration) {
+      const Scalar slope = evaluate_derivative(q, z);
+      if (!(slope > Scalar(1e-6))) return false;
+      const Scalar step = (evaluate(q, z) - y) / slope;
+      z -= step;
+      if (!std::isfinite(z)) return false;
+      if (std::abs(step) <= Scalar(64) * Eigen::NumTraits<Scalar>::epsilon() * scale) {
+        x = z;
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  Coeffs m_q;
+};
+
+}  // namespace bonl

@@ -1,0 +1,93 @@
+#pragma once
+// Input block N1 of the Hammerstein-type models (paper eqs. 3-5): a polynomial of degree r for
+// u >= 0 and another for u < 0, written as w = sum_l f_l u^l + h(u) sum_l p_l u^l with the
+// switching function h(u) = 1 for u < 0, else 0, and p_l = g_l - f_l.
+
+#include <Eigen/Core>
+
+#include "../detail/validate.hpp"
+
+namespace bonl {
+
+/// Switching function h(u) of eq. (4): 1 on the negative side, 0 for u >= 0.
+template <typename Scalar>
+constexpr Scalar input_switch(Scalar u) noexcept {
+  return u < Scalar(0) ? Scalar(1) : Scalar(0);
+}
+
+template <typename Scalar_ = double, int R_ = Eigen::Dynamic>
+class TwoSegmentPolynomial {
+ public:
+  using Scalar = Scalar_;
+  static constexpr int kCoeffs = detail::poly_size(R_);
+  static constexpr int kBasisSize = kCoeffs == Eigen::Dynamic ? Eigen::Dynamic : 2 * kCoeffs;
+  using Coeffs = Eigen::Matrix<Scalar, kCoeffs, 1>;
+
+  /// Degree r >= 1; all coefficients zero.
+  explicit TwoSegmentPolynomial(Eigen::Index r = (R_ == Eigen::Dynamic ? 1 : R_)) {
+    detail::require_order(r, 1, "r (input polynomial degree)");
+    detail::require_matches_template(r, R_, "r");
+    m_f = Coeffs::Zero(r + 1);
+    m_p = Coeffs::Zero(r + 1);
+  }
+
+  /// f holds f_0..f_r (u >= 0), p holds p_0..p_r = g_l - f_l (added for u < 0).
+  template <typename F, typename P>
+  TwoSegmentPolynomial(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p)
+      : TwoSegmentPolynomial(f.size() - 1) {
+    set_f(f);
+    set_p(p);
+  }
+
+  Eigen::Index degree() const noexcept { return m_f.size() - 1; }
+  const Coeffs& f() const noexcept { return m_f; }
+  const Coeffs& p() const noexcept { return m_p; }
+  /// Coefficients of the negative-side polynomial, g_l = f_l + p_l.
+  Coeffs g() const { return m_f + m_p; }
+
+  template <typename F>
+  void set_f(const Eigen::MatrixBase<F>& f) {
+    detail::require_size(f, m_f.size(), "f");
+    detail::require_finite(f, "f");
+    m_f = f;
+  }
+  template <typename P>
+  void set_p(const Eigen::MatrixBase<P>& p) {
+    detail::require_size(p, m_p.size(), "p");
+    detail::require_finite(p, "p");
+    m_p = p;
+  }
+
+  Scalar operator()(Scalar u) const noexcept { return evaluate(m_f, m_p, u); }
+
+  /// w for coefficient vectors f and p of equal length (Horner's scheme).
+  template <typename F, typename P>
+  static Scalar evaluate(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p, Scalar u) noexcept {
+    Scalar w = Scalar(0);
+    if (u < Scalar(0)) {
+      for (Eigen::Index l = f.size() - 1; l >= 0; --l) w = w * u + (f[l] + p[l]);
+    } else {
+      for (Eigen::Index l = f.size() - 1; l >= 0; --l) w = w * u + f[l];
+    }
+    return w;
+  }
+
+  /// The key-term regressor of the block: [1, u, ..., u^r, h, h u, ..., h u^r], so that
+  /// w = basis . [f; p]. `out` must have 2 (r + 1) entries.
+  template <typename Out>
+  static void basis(Scalar u, Eigen::Index r, Eigen::MatrixBase<Out>& out) noexcept {
+    const Scalar h = input_switch(u);
+    Scalar power = Scalar(1);
+    for (Eigen::Index l = 0; l <= r; ++l) {
+      out[l] = power;
+      out[r + 1 + l] = h * power;
+      power *= u;
+    }
+  }
+
+ private:
+  Coeffs m_f;
+  Coeffs m_p;
+};
+
+}  // namespace bonl

@@ -1,0 +1,202 @@
+#pragma once
+// What the three block models share: the Hammerstein front (two-segment input polynomial, then
+// the linear block with b_0 = 1), its parameters in eq. (19) order, its free-run simulation, and the
+// key-term regressor of its linear-in-parameters form (eq. 14). Users never name this header.
+
+#include <Eigen/Core>
+#include <cmath>
+
+#include "../blocks/linear_block.hpp"
+#include "../blocks/two_segment_polynomial.hpp"
+#include "../estimator/method.hpp"
+#include "history.hpp"
+#include "validate.hpp"
+
+namespace bonl::detail {
+
+/// Parameter count of the front: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na.
+constexpr int front_params(int na, int nb, int r) {
+  return (na == Eigen::Dynamic || nb == Eigen::Dynamic || r == Eigen::Dynamic) ? Eigen::Dynamic
+                                                                               : 2 * (r + 1) + nb + na;
+}
+
+template <typename Scalar_, int Na_, int Nb_, int R_, int Extra_>
+class HammersteinFront {
+ public:
+  using Scalar = Scalar_;
+  static constexpr int kFrontParams = front_params(Na_, Nb_, R_);
+  static constexpr int kNumParams = add_sizes(kFrontParams, Extra_);
+  static constexpr bool kHasInternalVariables = true;
+  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using InputBlock = TwoSegmentPolynomial<Scalar, R_>;
+  using Linear = LinearBlock<Scalar, Na_, Nb_>;
+
+  Eigen::Index na() const noexcept { return m_na; }
+  Eigen::Index nb() const noexcept { return m_nb; }
+  Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index r() const noexcept { return m_r; }
+  Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  Eigen::Index front_size() const noexcept { return 2 * (m_r + 1) + m_nb + m_na; }
+
+  /// Parameters in the order of eq. (19).
+  const Params& theta() const noexcept { return m_theta; }
+  template <typename T>
+  void set_theta(const Eigen::MatrixBase<T>& theta) {
+    require_size(theta, m_theta.size(), "theta");
+    require_finite(theta, "theta");
+    m_theta = theta;
+  }
+
+  VectorX f() const { return m_theta.segment(0, m_r + 1); }
+  VectorX p() const { return m_theta.segment(m_r + 1, m_r + 1); }
+  /// b_0..b_nb; b_0 is 1 (the key-term normalisation).
+  VectorX b() const {
+    VectorX b(m_nb + 1);
+    b[0] = Scalar(1);
+    b.tail(m_nb) = m_theta.segment(2 * (m_r + 1), m_nb);
+    return b;
+  }
+  VectorX a() const { return m_theta.segment(2 * (m_r + 1) + m_nb, m_na); }
+
+  template <typename T>
+  void set_f(const Eigen::MatrixBase<T>& f) {
+    require_size(f, m_r + 1, "f");
+    require_finite(f, "f");
+    m_theta.segment(0, m_r + 1) = f;
+  }
+  template <typename T>
+  void set_p(const Eigen::MatrixBase<T>& p) {
+    require_size(p, m_r + 1, "p");
+    require_finite(p, "p");
+    m_theta.segment(m_r + 1, m_r + 1) = p;
+  }
+  /// b_0..b_nb with b_0 = 1.
+  template <typename T>
+  void set_b(const Eigen::MatrixBase<T>& b) {
+    require_size(b, m_nb + 1, "b");
+    require_finite(b, "b");
+    require(b[0] == Scalar(1), "b[0] (b_0) must be 1: the block models are normalised so that b_0 = 1");
+    m_theta.segment(2 * (m_r + 1), m_nb) = b.tail(m_nb);
+  }
+  template <typename T>
+  void set_a(const Eigen::MatrixBase<T>& a) {
+    require_size(a, m_na, "a");
+    require_finite(a, "a");
+    m_theta.segment(2 * (m_r + 1) + m_nb, m_na) = a;
+  }
+
+  InputBlock input_block() const { return InputBlock(f(), p()); }
+  Linear linear_block() const {
+    Linear block(m_na, m_nb, m_nk);
+    block.set_a(a());
+    block.set_b(b());
+    return block;
+  }
+
+ protected:
+  HammersteinFront(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index extra) {
+    require_order(na, 1, "na");
+    require_order(nb, 0, "nb");
+    require_order(nk, 0, "nk");
+    require_order(r, 1, "r");
+    require_matches_template(na, Na_, "na");
+    require_matches_template(nb, Nb_, "nb");
+    require_matches_template(r, R_, "r");
+    m_na = na;
+    m_nb = nb;
+    m_nk = nk;
+    m_r = r;
+    m_theta = Params::Zero(front_size() + extra);
+  }
+
+  /// Free run from rest: w = N1(u), x = L(w), y = output(x). Returns false as soon as the
+  /// simulation leaves the finite numbers (an unstable or diverging model).
+  template <typename U, typename OutputMap>
+  bool simulate_front(const Eigen::MatrixBase<U>& u, VectorX& y, OutputMap&& output) const {
+    Linear linear = linear_block();
+    const VectorX fv = f();
+    const VectorX pv = p();
+    y.resize(u.size());
+    for (Eigen::Index k = 0; k < u.size(); ++k) {
+      const Scalar x = linear.step(InputBlock::evaluate(fv, pv, u[k]));
+      y[k] = output(x);
+      if (!std::isfinite(y[k])) return false;
+    }
+    return true;
+  }
+
+  Params m_theta;
+  Eigen::Index m_na = 0;
+  Eigen::Index m_nb = 0;
+  Eigen::Index m_nk = 0;
+  Eigen::Index m_r = 0;
+};
+
+/// The front's part of the key-term regressor (eq. 14 with eq. 7's signs):
+///   [basis(u(k-nk)), w(k-nk-1), ..., w(k-nk-nb), -x(k-1), ..., -x(k-na)],
+/// so that x(k) = regressor . theta_front. Before the record starts, u, w and x are zero
+/// (the model is at rest), which is what the free-run simulation assumes too.
+template <typename Scalar>
+class FrontKeyTerms {
+ public:
+  FrontKeyTerms() = default;
+  FrontKeyTerms(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_u(nk + nb + 1), m_w(nk + nb + 1), m_x(na) {}
+
+  void reset() noexcept {
+    m_u.clear();
+    m_w.clear();
+    m_x.clear();
+    m_k = 0;
+  }
+
+  /// Pushes u(k) and writes the front's regressor into phi.head(front size).
+  template <typename Theta, typename Phi>
+  void begin(const Theta& theta, Scalar u, Method method, Phi& phi) noexcept {
+    m_u.push(u);
+    const Eigen::Index n_fp = 2 * (m_r + 1);
+    if (m_k >= m_nk) {
+      TwoSegmentPolynomial<Scalar>::basis(m_u[m_nk], m_r, phi);
+    } else {
+      for (Eigen::Index l = 0; l < n_fp; ++l) phi[l] = Scalar(0);
+    }
+    for (Eigen::Index i = 1; i <= m_nb; ++i) {
+      Scalar w = Scalar(0);
+      if (m_k - m_nk - i >= 0) {
+        // Paper: w as estimated when it entered (eq. 24). Default: recomputed with the newest
+        // f, p, so that the regressor is consistent with the parameters being estimated.
+        w = method == Method::Paper ? m_w[m_nk + i - 1]
+                                    : TwoSegmentPolynomial<Scalar>::evaluate(theta.segment(0, m_r + 1),
+                                                                             theta.segment(m_r + 1, m_r + 1),
+                                                                             m_u[m_nk + i]);
+      }
+      phi[n_fp + i - 1] = w;
+    }
+    for (Eigen::Index j = 1; j <= m_na; ++j) phi[n_fp + m_nb + j - 1] = -m_x[j - 1];
+  }
+
+  /// x(k) = regressor . theta over the front's entries.
+  template <typename Theta, typename Phi>
+  Scalar internal(const Theta& theta, const Phi& phi) const noexcept {
+    const Eigen::Index n = 2 * (m_r + 1) + m_nb + m_na;
+    return phi.head(n).dot(theta.head(n));
+  }
+
+  /// Stores x(k) (the value later regressors use as a lag) and, for the paper's method, w(k).
+  template <typename Theta>
+  void end(const Theta& theta, Scalar u, Scalar x_lag, Method method) noexcept {
+    m_x.push(x_lag);
+    if (method == Method::Paper) {
+      m_w.push(TwoSegmentPolynomial<Scalar>::evaluate(theta.segment(0, m_r + 1), theta.segment(m_r + 1, m_r + 1), u));
+    }
+    if (m_k < m_nk + m_nb + 1) ++m_k;  // only "before or after the record start" matters
+  }
+
+ private:
+  Eigen::Index m_na = 0, m_nb = 0, m_nk = 0, m_r = 0;
+  History<Scalar> m_u, m_w, m_x;
+  Eigen::Index m_k = 0;
+};
+
+}  // namespace bonl::detail

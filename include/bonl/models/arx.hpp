@@ -1,0 +1,137 @@
+#pragma once
+// ARX model (the paper's linear reference):
+//   y(k) = -sum_{j=1..na} a_j y(k-j) + sum_{i=0..nb} b_i u(k-nk-i) + e(k).
+// b_0 is free (no normalisation). Parameter vector: [b_0..b_nb, a_1..a_na].
+
+#include <Eigen/Core>
+#include <cmath>
+
+#include "../blocks/linear_block.hpp"
+#include "../detail/history.hpp"
+#include "../detail/model_runs.hpp"
+#include "../detail/validate.hpp"
+#include "../estimator/method.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic>
+class ARX {
+ public:
+  using Scalar = Scalar_;
+  static constexpr int kNumParams = detail::add_sizes(detail::poly_size(Nb_), Na_);
+  /// ARX has no unmeasured internal variable: its regressor is made of measured data only.
+  static constexpr bool kHasInternalVariables = false;
+  static constexpr const char* kName = "ARX";
+  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Linear = LinearBlock<Scalar, Na_, Nb_>;
+
+  ARX(Eigen::Index na, Eigen::Index nb, Eigen::Index nk) : m_na(na), m_nb(nb), m_nk(nk) {
+    detail::require_order(na, 1, "na");
+    detail::require_order(nb, 0, "nb");
+    detail::require_order(nk, 0, "nk");
+    detail::require_matches_template(na, Na_, "na");
+    detail::require_matches_template(nb, Nb_, "nb");
+    m_theta = Params::Zero(nb + 1 + na);
+  }
+
+  Eigen::Index na() const noexcept { return m_na; }
+  Eigen::Index nb() const noexcept { return m_nb; }
+  Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index num_params() const noexcept { return m_theta.size(); }
+
+  const Params& theta() const noexcept { return m_theta; }
+  template <typename T>
+  void set_theta(const Eigen::MatrixBase<T>& theta) {
+    detail::require_size(theta, m_theta.size(), "theta");
+    detail::require_finite(theta, "theta");
+    m_theta = theta;
+  }
+  VectorX b() const { return m_theta.head(m_nb + 1); }
+  VectorX a() const { return m_theta.tail(m_na); }
+  template <typename T>
+  void set_b(const Eigen::MatrixBase<T>& b) {
+    detail::require_size(b, m_nb + 1, "b");
+    detail::require_finite(b, "b");
+    m_theta.head(m_nb + 1) = b;
+  }
+  template <typename T>
+  void set_a(const Eigen::MatrixBase<T>& a) {
+    detail::require_size(a, m_na, "a");
+    detail::require_finite(a, "a");
+    m_theta.tail(m_na) = a;
+  }
+
+  Linear linear_block() const {
+    Linear block(m_na, m_nb, m_nk);
+    block.set_a(a());
+    block.set_b(b());
+    return block;
+  }
+
+  /// Free-run simulation from rest. Throws NumericalError if the output leaves the finite numbers.
+  template <typename U>
+  VectorX simulate(const Eigen::MatrixBase<U>& u) const {
+    return detail::simulate_checked(*this, u);
+  }
+  /// As simulate(), but reports divergence by returning false instead of throwing.
+  template <typename U>
+  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+    Linear linear = linear_block();
+    y.resize(u.size());
+    for (Eigen::Index k = 0; k < u.size(); ++k) {
+      y[k] = linear.step(u[k]);
+      if (!std::isfinite(y[k])) return false;
+    }
+    return true;
+  }
+
+  /// One-step-ahead prediction from measured u and y.
+  template <typename U, typename Y>
+  VectorX predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
+    return detail::predict_one_step(*this, u, y);
+  }
+
+  /// Where the recursive estimator starts (all zero).
+  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
+
+  /// Regressor [u(k-nk), ..., u(k-nk-nb), -y(k-1), ..., -y(k-na)]; target y(k). Both methods agree.
+  class KeyTerms {
+   public:
+    explicit KeyTerms(const ARX& model)
+        : m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_u(model.nk() + model.nb() + 1), m_y(model.na()) {}
+    void reset() noexcept {
+      m_u.clear();
+      m_y.clear();
+    }
+    template <typename Phi>
+    Scalar begin(const Params& theta, Scalar u, Method /*method*/, Phi& phi) noexcept {
+      m_u.push(u);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) phi[i] = m_u[m_nk + i];
+      for (Eigen::Index j = 1; j <= m_na; ++j) phi[m_nb + j] = -m_y[j - 1];
+      return phi.dot(theta);
+    }
+    Scalar predicted_output(const Params& /*theta*/, Scalar x) const noexcept { return x; }
+    template <typename Phi>
+    bool regress(const Params& /*theta*/, Scalar /*x*/, Scalar y, Method /*method*/, Phi& /*phi*/,
+                 Scalar& target) noexcept {
+      target = y;
+      return true;
+    }
+    template <typename Phi>
+    void end(const Params& /*theta*/, const Phi& /*phi*/, Scalar /*u*/, Scalar y, Method /*method*/) noexcept {
+      m_y.push(y);
+    }
+    void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
+
+   private:
+    Eigen::Index m_na, m_nb, m_nk;
+    detail::History<Scalar> m_u, m_y;
+  };
+
+ private:
+  Params m_theta;
+  Eigen::Index m_na, m_nb, m_nk;
+};
+
+}  // namespace bonl

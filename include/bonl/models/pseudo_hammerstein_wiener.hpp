@@ -1,0 +1,133 @@
+#pragma once
+// Pseudo-Hammerstein-Wiener (P-H-W) model: the Hammerstein model followed by a symmetric,
+// unit-slope backlash of half-width c (eqs. 10-12), starting engaged at y(-1) = 0.
+// Parameters in eq. (19) order: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na, c.
+
+#include <algorithm>
+#include <cmath>
+
+#include "../blocks/backlash.hpp"
+#include "../detail/hammerstein_front.hpp"
+#include "../detail/model_runs.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic>
+class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 1> {
+  using Front = detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 1>;
+
+ public:
+  using typename Front::Params;
+  using typename Front::Scalar;
+  using typename Front::VectorX;
+  static constexpr const char* kName = "Pseudo-Hammerstein-Wiener";
+
+  PseudoHammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r) : Front(na, nb, nk, r, 1) {}
+
+  /// Backlash half-width c (the model is valid for c >= 0).
+  Scalar c() const noexcept { return this->m_theta[this->num_params() - 1]; }
+  void set_c(Scalar c) {
+    detail::require(std::isfinite(c) && c >= Scalar(0), "c (backlash half-width) must be finite and >= 0");
+    this->m_theta[this->num_params() - 1] = c;
+  }
+  Backlash<Scalar> backlash() const { return Backlash<Scalar>(std::max(c(), Scalar(0))); }
+
+  template <typename U>
+  VectorX simulate(const Eigen::MatrixBase<U>& u) const {
+    return detail::simulate_checked(*this, u);
+  }
+  template <typename U>
+  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+    Backlash<Scalar> play = backlash();
+    return this->simulate_front(u, y, [&play](Scalar x) { return play.step(x); });
+  }
+
+  /// One-step-ahead prediction: the backlash's memory is the measured y(k-1), and past x are the
+  /// model's estimates clipped to [y - c, y + c], the band the measured output allows.
+  template <typename U, typename Y>
+  VectorX predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
+    return detail::predict_one_step(*this, u, y);
+  }
+
+  /// Zero, but c = c0 (the paper starts from c(0) = 0.01).
+  Params initial_estimate(Scalar c0) const {
+    Params theta = Params::Zero(this->num_params());
+    theta[this->num_params() - 1] = c0;
+    return theta;
+  }
+
+  /// Key-term form (eqs. 15-18): [front, s(k)] . theta = y_c(k).
+  /// Paper: s = 0.5 {(1 - sgn dx) g4 - (1 + sgn dx) g3} and y_c from eq. (27), with g3, g4 from
+  /// eqs. (30)-(31) and dx the change of the model's free-run x.
+  /// Default: the a-priori x decides the regime against the measured y(k-1) (eqs. 30-31); pushing
+  /// up gives y = x - c (s = -1), down y = x + c (s = +1); inside the gap y(k) = y(k-1) says nothing
+  /// about theta and the sample is skipped. Past x are clipped to [y - c, y + c].
+  class KeyTerms {
+   public:
+    explicit KeyTerms(const PseudoHammersteinWiener& model)
+        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_last(model.num_params() - 1) {}
+    void reset() noexcept {
+      m_front.reset();
+      m_y_prev = Scalar(0);
+      m_x_prev = Scalar(0);
+    }
+    template <typename Phi>
+    Scalar begin(const Params& theta, Scalar u, Method method, Phi& phi) noexcept {
+      m_front.begin(theta, u, method, phi);
+      phi[m_last] = Scalar(0);
+      return m_front.internal(theta, phi);
+    }
+    Scalar predicted_output(const Params& theta, Scalar x) const noexcept {
+      return Backlash<Scalar>::map(x, m_y_prev, std::max(theta[m_last], Scalar(0)));
+    }
+    template <typename Phi>
+    bool regress(const Params& theta, Scalar x, Scalar y, Method method, Phi& phi, Scalar& target) noexcept {
+      if (method == Method::Paper) {
+        const Scalar c = theta[m_last];
+        const Scalar g3 = backlash_g3(x, m_y_prev, c);
+        const Scalar g4 = backlash_g4(x, m_y_prev, c);
+        const Scalar dx = x - m_x_prev;
+        const Scalar sgn = dx > Scalar(0) ? Scalar(1) : (dx < Scalar(0) ? Scalar(-1) : Scalar(0));
+        const Scalar y1 = x - Scalar(0.5) * c * (sgn + Scalar(1)) * g3 + Scalar(0.5) * c * (Scalar(1) - sgn) * g4;
+        target = y - (m_y_prev - y1) * (g3 - Scalar(1)) * (g4 - Scalar(1));
+        phi[m_last] = Scalar(0.5) * ((Scalar(1) - sgn) * g4 - (Scalar(1) + sgn) * g3);
+        return true;
+      }
+      target = y;
+      if (theta.head(m_last).isZero(0)) {
+        // No model yet (the estimate's front is still all zero): the a-priori x says nothing about
+        // the regime, so do not guess one; the sample informs the front as a Hammerstein sample.
+        phi[m_last] = Scalar(0);
+        return true;
+      }
+      const Scalar c = std::max(theta[m_last], Scalar(0));
+      const Scalar g3 = backlash_g3(x, m_y_prev, c);
+      const Scalar g4 = backlash_g4(x, m_y_prev, c);
+      phi[m_last] = g4 - g3;
+      return g3 + g4 > Scalar(0);
+    }
+    template <typename Phi>
+    void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
+      const Scalar x_model = m_front.internal(theta, phi);
+      Scalar x_lag = x_model;
+      if (method == Method::Default) {
+        const Scalar c = std::max(theta[m_last], Scalar(0));
+        x_lag = std::min(std::max(x_model, y - c), y + c);
+      }
+      m_front.end(theta, u, x_lag, method);
+      m_x_prev = x_model;
+      m_y_prev = y;
+    }
+    void constrain(Params& theta, Method method) const noexcept {
+      if (method == Method::Default && theta[m_last] < Scalar(0)) theta[m_last] = Scalar(0);
+    }
+
+   private:
+    detail::FrontKeyTerms<Scalar> m_front;
+    Eigen::Index m_last;
+    Scalar m_y_prev = Scalar(0);
+    Scalar m_x_prev = Scalar(0);
+  };
+};
+
+}  // namespace bonl

@@ -1,0 +1,10 @@
+#pragma once
+// Estimation: the recursive least-squares core, the forgetting schedule, the generic recursive
+// estimator (MRLSA) over any model, output-error refinement and whole-record identification.
+
+#include "estimator/forgetting_schedule.hpp"
+#include "estimator/identify.hpp"
+#include "estimator/method.hpp"
+#include "estimator/output_error.hpp"
+#include "estimator/recursive_estimator.hpp"
+#include "estimator/rls.hpp"

@@ -1,0 +1,111 @@
+// The recursive least-squares core (estimator/rls.hpp) against its batch oracle: with forgetting
+// factor 1, N recursive updates from theta0 with P(0) = p0 I give exactly the regularised batch
+// solution  theta = (Phi' Phi + I / p0)^-1 (Phi' y + theta0 / p0);  with a constant lambda < 1 the
+// data and the prior are weighted by lambda^(N-k) and lambda^N.
+
+#include "test_support.hpp"
+
+#include <Eigen/Cholesky>
+#include <random>
+
+using namespace bonl_test;
+
+namespace {
+
+struct Problem {
+  Eigen::MatrixXd phi;  // one regressor per row
+  Eigen::VectorXd y;
+};
+
+Problem random_problem(Eigen::Index samples, Eigen::Index n, double noise, unsigned seed) {
+  std::mt19937_64 generator(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Problem problem{Eigen::MatrixXd(samples, n), Eigen::VectorXd(samples)};
+  Eigen::VectorXd truth(n);
+  for (Eigen::Index i = 0; i < n; ++i) truth[i] = normal(generator);
+  for (Eigen::Index k = 0; k < samples; ++k) {
+    for (Eigen::Index i = 0; i < n; ++i) problem.phi(k, i) = normal(generator);
+    problem.y[k] = problem.phi.row(k).dot(truth) + noise * normal(generator);
+  }
+  return problem;
+}
+
+Eigen::VectorXd batch_solution(const Problem& problem, const Eigen::VectorXd& theta0, double p0, double lambda) {
+  const Eigen::Index samples = problem.phi.rows();
+  const Eigen::Index n = problem.phi.cols();
+  Eigen::MatrixXd normal = std::pow(lambda, static_cast<double>(samples)) / p0 * Eigen::MatrixXd::Identity(n, n);
+  Eigen::VectorXd rhs = std::pow(lambda, static_cast<double>(samples)) / p0 * theta0;
+  for (Eigen::Index k = 0; k < samples; ++k) {
+    const double weight = std::pow(lambda, static_cast<double>(samples - 1 - k));
+    normal += weight * problem.phi.row(k).transpose() * problem.phi.row(k);
+    rhs += weight * problem.phi.row(k).transpose() * problem.y[k];
+  }
+  return normal.ldlt().solve(rhs);
+}
+
+double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).norm() / b.norm(); }
+
+}  // namespace
+
+TEST_CASE("RLS with forgetting factor 1 equals regularised batch least squares", "[rls]") {
+  const double p0 = GENERATE(1e6, 10.0, 0.1);
+  const Problem problem = random_problem(400, 12, 0.1, 42);
+  const Eigen::VectorXd theta0 = Eigen::VectorXd::LinSpaced(12, -1.0, 1.0);
+  bonl::Rls<double> rls(12, p0);
+  rls.reset(theta0, p0);
+  for (Eigen::Index k = 0; k < problem.phi.rows(); ++k) {
+    REQUIRE(rls.update(problem.phi.row(k).transpose(), problem.y[k], 1.0));
+  }
+  INFO("p0 = " << p0);
+  CHECK(relative_difference(rls.theta(), batch_solution(problem, theta0, p0, 1.0)) <= 1e-8);
+}
+
+TEST_CASE("RLS with a constant forgetting factor equals exponentially weighted least squares", "[rls]") {
+  const Problem problem = random_problem(300, 8, 0.1, 7);
+  const Eigen::VectorXd theta0 = Eigen::VectorXd::Zero(8);
+  bonl::Rls<double, 8> rls(8, 100.0);
+  for (Eigen::Index k = 0; k < problem.phi.rows(); ++k) {
+    REQUIRE(rls.update(problem.phi.row(k).transpose(), problem.y[k], 0.98));
+  }
+  CHECK(relative_difference(rls.theta(), batch_solution(problem, theta0, 100.0, 0.98)) <= 1e-8);
+}
+
+TEST_CASE("the covariance stays exactly symmetric and positive definite", "[rls]") {
+  const Problem problem = random_problem(2000, 18, 0.01, 3);
+  bonl::Rls<double, 18> rls(18, 1e6);
+  for (Eigen::Index k = 0; k < problem.phi.rows(); ++k) {
+    REQUIRE(rls.update(problem.phi.row(k).transpose(), problem.y[k], k < 200 ? 0.98 : 1.0));
+  }
+  const Eigen::Matrix<double, 18, 18> p = rls.covariance();
+  CHECK(p == p.transpose());
+  CHECK(p.llt().info() == Eigen::Success);
+}
+
+TEST_CASE("the model estimator with lambda = 1 equals batch least squares on the ARX regressors", "[rls]") {
+  // The whole path (model regressor + estimator) against the batch solution built by hand.
+  const bonl::PaperARX truth = known_arx();
+  const Eigen::VectorXd u = bonl::signals::random_levels(1500, 3, 1.0, 21);
+  const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 22);
+  const double p0 = 1e3;
+  bonl::EstimatorOptions options;
+  options.forgetting = bonl::ForgettingSchedule::constant(1.0);
+  options.p0 = p0;
+  bonl::Estimator<bonl::PaperARX> estimator(truth, options);
+  Problem problem{Eigen::MatrixXd::Zero(u.size(), 6), y};
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    for (Eigen::Index i = 0; i <= 2; ++i) problem.phi(k, i) = k - kNk - i >= 0 ? u[k - kNk - i] : 0.0;
+    for (Eigen::Index j = 1; j <= 3; ++j) problem.phi(k, 2 + j) = k - j >= 0 ? -y[k - j] : 0.0;
+    REQUIRE(estimator.update(u[k], y[k]) == bonl::UpdateStatus::Updated);
+  }
+  CHECK(relative_difference(estimator.theta(), batch_solution(problem, Eigen::VectorXd::Zero(6), p0, 1.0)) <= 1e-8);
+}
+
+TEST_CASE("an unsafe update is refused and leaves the state untouched", "[rls]") {
+  bonl::Rls<double, 2> rls(2, 1.0);
+  const Eigen::Vector2d theta = rls.theta();
+  const Eigen::Matrix2d p = rls.covariance();
+  const Eigen::Vector2d huge(1e200, 1e200);
+  CHECK_FALSE(rls.update(huge, 1.0, 1.0));  // phi' P phi overflows
+  CHECK(rls.theta() == theta);
+  CHECK(rls.covariance() == p);
+}

@@ -1,0 +1,100 @@
+#pragma once
+// The dipper-joint plant integrated by SUNDIALS CVODE (BDF, Newton iteration, dense linear solver).
+// The command voltage is sampled and held on a 1 kHz grid (the controller's rate), where the pilot
+// stage's hysteresis and the pin backlash, both play operators, are evaluated; the integrator is
+// stopped at every grid point so that it never steps across a change of the held command.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+
+#include "../error.hpp"
+#include "parameters.hpp"
+
+namespace bonl::plant {
+
+/// Command voltage V(t) [V] on the 0-5 V scale (neutral 2.5 V).
+using Command = std::function<double(double)>;
+
+struct Tolerances {
+  double relative = 1e-6;
+  double absolute_position = 1e-8;   ///< h [m]
+  double absolute_velocity = 1e-8;   ///< v [m/s]
+  double absolute_pressure = 1.0;    ///< p1, p2 [Pa]
+  double absolute_spool = 1e-8;      ///< xv [-]
+  long max_steps_per_interval = 5000;
+};
+
+struct SimulationOptions {
+  double duration = 50.0;        ///< [s]
+  double sample_time = 0.01;     ///< output grid [s]; an integer multiple of 1 / command_rate
+  double command_rate = 1000.0;  ///< command grid [Hz]
+  Tolerances tolerances;
+  /// External load F_L(t) [N] opposing extension; empty means none.
+  std::function<double(double)> load;
+  /// Sensor noise on the measured angle: added with this seed when sensor_noise is true.
+  bool sensor_noise = true;
+  std::uint64_t noise_seed = 1;
+  /// Initial piston position [m]; negative means mid-stroke (plant.md's start).
+  double initial_position = -1.0;
+};
+
+/// Everything on the output grid, sample k at time[k] = k * sample_time.
+struct Trajectory {
+  Eigen::VectorXd time;              ///< [s]
+  Eigen::VectorXd command;           ///< V, as held on the command grid [V]
+  Eigen::VectorXd input;             ///< u = V - V0, the identification input [V]
+  Eigen::VectorXd position;          ///< h [m]
+  Eigen::VectorXd velocity;          ///< v [m/s]
+  Eigen::VectorXd head_pressure;     ///< p1 [Pa]
+  Eigen::VectorXd rod_pressure;      ///< p2 [Pa]
+  Eigen::VectorXd spool;             ///< xv [-]
+  Eigen::VectorXd pilot;             ///< xc, the pilot stage's output (after its hysteresis) [-]
+  Eigen::VectorXd head_flow;         ///< Q1, into the head chamber [m^3/s]
+  Eigen::VectorXd rod_flow;          ///< Q2, out of the rod chamber [m^3/s]
+  Eigen::VectorXd joint_angle;       ///< theta [rad]
+  Eigen::VectorXd joint_rate;        ///< dtheta/dt = v / r(h) [rad/s]
+  Eigen::VectorXd pin_angle;         ///< theta_m = play(theta; delta / 2), noise-free [rad]
+  Eigen::VectorXd measured_angle;    ///< theta_m + sensor noise [rad]
+  double min_position = 0.0;         ///< smallest h reached on the command grid [m]
+  double max_position = 0.0;         ///< largest h reached on the command grid [m]
+  bool reached_end_stop = false;     ///< h left [0, L] at some point of the command grid
+  long steps = 0;                    ///< CVODE's internal steps
+};
+
+/// CVODE failed: its return flag and the time it had reached.
+class CvodeError : public NumericalError {
+ public:
+  CvodeError(const std::string& message, int flag, double time)
+      : NumericalError(message), m_flag(flag), m_time(time) {}
+  int flag() const noexcept { return m_flag; }
+  double time() const noexcept { return m_time; }
+
+ private:
+  int m_flag;
+  double m_time;
+};
+
+/// Initial state of plant.md's experiment at piston position h0: at rest, spool closed,
+/// p2 = ps / 4, p1 from the force balance A1 p1 = A2 p2 + Fs(h0).
+struct State {
+  double position = 0.0;
+  double velocity = 0.0;
+  double head_pressure = 0.0;
+  double rod_pressure = 0.0;
+  double spool = 0.0;
+};
+State initial_state(const Parameters& parameters, double position);
+
+/// Right-hand side of the plant's ODE for a held pilot output xc and load F_L: d(state)/dt.
+/// Exposed so that tests can check it against an independent integrator.
+State derivative(const Parameters& parameters, const State& state, double pilot, double load);
+
+/// Spring (gravity) force at the rod, Fs(h) = m_dcg g cos(theta + theta_g) / r(h) [N].
+double gravity_force(const Parameters& parameters, double position);
+
+/// Integrates the plant under `command`. Validates parameters and options (std::invalid_argument);
+/// a CVODE failure throws CvodeError with CVODE's flag and the time reached.
+Trajectory simulate(const Parameters& parameters, const Command& command, const SimulationOptions& options = {});
+
+}  // namespace bonl::plant

@@ -2,37 +2,8 @@
 // covariance symmetric. Allocations are counted by replacing the global operator new in this test
 // executable only.
 
+#include "counting_allocator.hpp"
 #include "test_support.hpp"
-
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void* operator new(std::size_t size, std::align_val_t align) {
-  ++g_allocations;
-  const std::size_t a = static_cast<std::size_t>(align);
-  if (void* p = std::aligned_alloc(a, (size + a - 1) / a * a)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size, std::align_val_t align) { return operator new(size, align); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 
 using namespace bonl_test;
 
@@ -51,10 +22,10 @@ TEMPLATE_TEST_CASE("fixed-size updates allocate nothing", "[allocation]", bonl::
     bonl::EstimatorOptions options;
     options.method = method;
     bonl::Estimator<TestType> estimator(structure, options);
-    const long before = g_allocations.load();
+    const long before = bonl_test::allocations();
     for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
     estimator.update(std::nan(""), 0.0);
-    const long after = g_allocations.load();
+    const long after = bonl_test::allocations();
     CHECK(after - before == 0);
     const auto p = estimator.covariance();
     CHECK(p == p.transpose());

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds and runs the identification example (examples/identify).
+# The main job: builds bonl_demo and runs the paper's experiment on the simulated excavator arm.
+# Extra arguments go to bonl_demo (e.g. --json out.json --csv out.csv, or --sweep DIR).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh
@@ -7,10 +8,10 @@ bonl_ensure_deps
 
 step "configure (build/demo)"
 cmake -S . -B build/demo -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DBONL_BUILD_TESTS=OFF -DBONL_BUILD_BENCH=OFF -DBONL_BUILD_EXAMPLES=ON
+  -DBONL_BUILD_TESTS=OFF -DBONL_BUILD_BENCH=OFF -DBONL_BUILD_EXAMPLES=OFF
 
-step "build bonl_identify_example"
-cmake --build build/demo -j2 --target bonl_identify_example
+step "build bonl_demo"
+cmake --build build/demo -j2 --target bonl_demo
 
-step "run bonl_identify_example"
-./build/demo/examples/identify/bonl_identify_example
+step "run bonl_demo $*"
+./build/demo/examples/demo/bonl_demo "$@"

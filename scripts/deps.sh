@@ -1,6 +1,5 @@
 # Sourced by scripts/test.sh, scripts/demo.sh and .ci/run: the Debian 12 packages bonl needs.
-BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev)
-command -v python3 >/dev/null 2>&1 || BONL_APT_PACKAGES+=(python3-pip)
+BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev nlohmann-json3-dev python3 python3-pip python3-venv)
 
 step() { printf '\n==> %s\n' "$*"; }
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds and runs every C++ test, then installs bonl and builds examples/consumer against it.
+# Builds and runs every C++ test, installs bonl and builds examples/consumer against it, then
+# builds the Python package into build/venv and runs pytest.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh
@@ -25,8 +26,19 @@ cmake -S examples/consumer -B "$tmp/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Releas
 cmake --build "$tmp/consumer" -j2
 "$tmp/consumer/consumer"
 
+step "Python: build and install the package in a virtual environment (build/venv)"
+[[ -x build/venv/bin/python ]] || python3 -m venv build/venv
+build/venv/bin/python -m pip install -q --disable-pip-version-check numpy scipy matplotlib pytest pybind11-stubgen
+build/venv/bin/python -m pip install -q --disable-pip-version-check .
+
+step "pytest"
+pytest_status=0
+BONL_MODEL_TOOL="$PWD/build/ci/tests/bonl_model_tool" build/venv/bin/python -m pytest tests/python -q -p no:cacheprovider || pytest_status=$?
+# pytest exits 5 when it collected nothing: that is a failure here too.
+((pytest_status == 0)) || status=1
+
 if ((status != 0)); then
-  step "FAILED: some tests failed (see the ctest summary above)"
+  step "FAILED: some tests failed (see the ctest and pytest summaries above)"
   exit 1
 fi
 step "all passed"

@@ -1,0 +1,216 @@
+// Estimation in Python: bonl.identify (whole record) and bonl.Estimator (online, one sample at a time).
+
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <bonl/estimator.hpp>
+#include <bonl/models.hpp>
+
+#include <variant>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+
+namespace bonl_python {
+namespace {
+
+bonl::Method parse_method(const std::string& method) {
+  if (method == "default") return bonl::Method::Default;
+  if (method == "paper") return bonl::Method::Paper;
+  throw py::value_error("method must be 'default' or 'paper', got '" + method + "'");
+}
+
+/// None: the paper's schedule (0.98 for 200 samples, then 1); a number: constant; a tuple
+/// (initial, initial_samples, final).
+bonl::ForgettingSchedule parse_forgetting(const py::object& forgetting) {
+  if (forgetting.is_none()) return bonl::ForgettingSchedule::paper();
+  if (py::isinstance<py::tuple>(forgetting) || py::isinstance<py::list>(forgetting)) {
+    const auto items = forgetting.cast<py::sequence>();
+    if (items.size() != 3) {
+      throw py::value_error("forgetting must be a number or a tuple (initial, initial_samples, final)");
+    }
+    return {items[0].cast<double>(), items[1].cast<Eigen::Index>(), items[2].cast<double>()};
+  }
+  try {
+    return bonl::ForgettingSchedule::constant(forgetting.cast<double>());
+  } catch (const py::cast_error&) {
+    throw py::value_error("forgetting must be a number or a tuple (initial, initial_samples, final)");
+  }
+}
+
+bonl::EstimatorOptions estimator_options(const std::string& method, const py::object& forgetting, double p0,
+                                         double c0) {
+  bonl::EstimatorOptions options;
+  options.method = parse_method(method);
+  options.forgetting = parse_forgetting(forgetting);
+  options.p0 = p0;
+  options.c0 = c0;
+  options.validate();
+  return options;
+}
+
+const char* kIdentifyDoc = R"doc(Identify a model's parameters from an input/output record.
+
+Parameters
+----------
+model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    Gives the structure (orders); its parameter values are not used.
+u, y : array_like, shape (n,)
+    Input and measured output.
+passes : int, default 1
+    Passes of the recursive estimator over the record (the paper's step 5).
+method : {'default', 'paper'}
+    'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
+    measured-output internals, then refinement by minimising the free-run simulation error.
+forgetting : float or tuple, optional
+    Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
+    paper's 0.98 for 200 samples, then 1.
+p0 : float, default 1e6
+    P(0) = p0 I.
+c0 : float, default 0.01
+    Initial backlash half-width (P-H-W).
+refine_iterations : int, default 100
+    Levenberg-Marquardt iterations of the default method's refinement (0: none).
+
+Returns
+-------
+model
+    A new model of the same type with the identified parameters.
+
+Raises
+------
+ValueError
+    Bad orders, settings, lengths or non-finite samples.
+bonl.NumericalError
+    The estimator broke down numerically.)doc";
+
+template <class Model>
+void def_identify(py::module_& m) {
+  m.def(
+      "identify",
+      [](const Model& model, const py::object& u, const py::object& y, int passes, const std::string& method,
+         const py::object& forgetting, double p0, double c0, int refine_iterations) {
+        bonl::IdentifyOptions options;
+        static_cast<bonl::EstimatorOptions&>(options) = estimator_options(method, forgetting, p0, c0);
+        options.passes = passes;
+        options.refine_iterations = refine_iterations;
+        const Eigen::VectorXd input = to_vector(u, "u");
+        const Eigen::VectorXd output = to_vector(y, "y");
+        py::gil_scoped_release release;
+        return bonl::identify(model, input, output, options);
+      },
+      py::arg("model"), py::arg("u"), py::arg("y"), py::kw_only(), py::arg("passes") = 1,
+      py::arg("method") = "default", py::arg("forgetting") = py::none(), py::arg("p0") = 1e6, py::arg("c0") = 0.01,
+      py::arg("refine_iterations") = 100, kIdentifyDoc);
+}
+
+/// One Python class over the four estimators.
+class AnyEstimator {
+ public:
+  using Variant = std::variant<bonl::Estimator<bonl::ARXd>, bonl::Estimator<bonl::Hammersteind>,
+                               bonl::Estimator<bonl::HammersteinWienerd>, bonl::Estimator<bonl::PseudoHammersteinWienerd>>;
+
+  template <class Model>
+  AnyEstimator(const Model& model, const bonl::EstimatorOptions& options)
+      : m_estimator(std::in_place_type<bonl::Estimator<Model>>, model, options) {}
+
+  bonl::UpdateStatus update(double u, double y) noexcept {
+    return std::visit([&](auto& estimator) { return estimator.update(u, y); }, m_estimator);
+  }
+  Eigen::VectorXd theta() const {
+    return std::visit([](const auto& estimator) { return Eigen::VectorXd(estimator.theta()); }, m_estimator);
+  }
+  Eigen::MatrixXd covariance() const {
+    return std::visit([](const auto& estimator) { return Eigen::MatrixXd(estimator.covariance()); }, m_estimator);
+  }
+  py::object model() const {
+    return std::visit([](const auto& estimator) { return py::cast(estimator.model()); }, m_estimator);
+  }
+  Eigen::Index samples() const {
+    return std::visit([](const auto& estimator) { return estimator.samples(); }, m_estimator);
+  }
+  bool diverged() const {
+    return std::visit([](const auto& estimator) { return estimator.diverged(); }, m_estimator);
+  }
+  void reset() {
+    std::visit([](auto& estimator) { estimator.reset(); }, m_estimator);
+  }
+  void reset_to(const Eigen::VectorXd& theta) {
+    std::visit([&](auto& estimator) { estimator.reset(theta); }, m_estimator);
+  }
+  void start_pass() {
+    std::visit([](auto& estimator) { estimator.start_pass(); }, m_estimator);
+  }
+
+ private:
+  Variant m_estimator;
+};
+
+template <class Model>
+void def_estimator_init(py::class_<AnyEstimator>& cls) {
+  cls.def(py::init([](const Model& model, const std::string& method, const py::object& forgetting, double p0,
+                      double c0) { return AnyEstimator(model, estimator_options(method, forgetting, p0, c0)); }),
+          py::arg("model"), py::kw_only(), py::arg("method") = "default", py::arg("forgetting") = py::none(),
+          py::arg("p0") = 1e6, py::arg("c0") = 0.01);
+}
+
+}  // namespace
+
+void bind_estimation(py::module_& m) {
+  py::enum_<bonl::UpdateStatus>(m, "UpdateStatus", "What one online update did.")
+      .value("updated", bonl::UpdateStatus::Updated, "theta and P were updated")
+      .value("no_information", bonl::UpdateStatus::NoInformation,
+             "the sample says nothing about theta (inside the backlash gap)")
+      .value("rejected_non_finite", bonl::UpdateStatus::RejectedNonFinite,
+             "u or y was NaN or infinite; the estimator's state is untouched")
+      .value("numerical_failure", bonl::UpdateStatus::NumericalFailure,
+             "the update would have broken the covariance; theta and P kept, diverged is set");
+
+  def_identify<bonl::ARXd>(m);
+  def_identify<bonl::Hammersteind>(m);
+  def_identify<bonl::HammersteinWienerd>(m);
+  def_identify<bonl::PseudoHammersteinWienerd>(m);
+
+  py::class_<AnyEstimator> estimator(m, "Estimator", R"doc(Online recursive estimator (the paper's MRLSA) for one model.
+
+Parameters
+----------
+model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    Gives the structure; the estimate starts from the paper's initial values (zero, c = c0).
+method : {'default', 'paper'}
+forgetting : float or tuple, optional
+    As for identify; default the paper's schedule.
+p0 : float, default 1e6
+c0 : float, default 0.01
+)doc");
+  def_estimator_init<bonl::ARXd>(estimator);
+  def_estimator_init<bonl::Hammersteind>(estimator);
+  def_estimator_init<bonl::HammersteinWienerd>(estimator);
+  def_estimator_init<bonl::PseudoHammersteinWienerd>(estimator);
+  estimator
+      .def("update", &AnyEstimator::update, py::arg("u"), py::arg("y"), R"doc(Process one sample.
+
+Parameters
+----------
+u, y : float
+    Input and measured output at this sample.
+
+Returns
+-------
+UpdateStatus
+    A non-finite u or y is rejected (rejected_non_finite) and leaves the state untouched.)doc")
+      .def_property_readonly("theta", &AnyEstimator::theta, "numpy.ndarray: current estimate (eq. 19 order).")
+      .def_property_readonly("covariance", &AnyEstimator::covariance, "numpy.ndarray: current P (symmetric).")
+      .def_property_readonly("model", &AnyEstimator::model, "The current estimate as a model.")
+      .def_property_readonly("samples", &AnyEstimator::samples, "int: samples since the last pass started.")
+      .def_property_readonly("diverged", &AnyEstimator::diverged, "bool: an update was refused for numerical reasons.")
+      .def("reset", &AnyEstimator::reset, "Back to the initial estimate, P = p0 I, internal variables at rest.")
+      .def(
+          "reset_to",
+          [](AnyEstimator& self, const py::object& theta) { self.reset_to(to_vector(theta, "theta")); },
+          py::arg("theta"), "Restart from a given estimate (a warm start), P = p0 I.")
+      .def("start_pass", &AnyEstimator::start_pass,
+           "A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.");
+}
+
+}  // namespace bonl_python

@@ -1,0 +1,34 @@
+// bonl.load_model: the JSON model format shared with C++ (bonl/io/model_json.hpp).
+
+#include <bonl/io/model_json.hpp>
+
+#include <variant>
+
+#include "bindings.hpp"
+
+namespace bonl_python {
+
+void bind_io(py::module_& m) {
+  m.def(
+      "load_model",
+      [](const std::string& text) {
+        return std::visit([](const auto& model) { return py::cast(model); }, bonl::io::load_model(text));
+      },
+      py::arg("text"), R"doc(Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
+
+Parameters
+----------
+text : str
+    The JSON text.
+
+Returns
+-------
+ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+
+Raises
+------
+ValueError
+    The text is not valid JSON or not a valid bonl model (the message names the problem).)doc");
+}
+
+}  // namespace bonl_python

@@ -1,0 +1,748 @@
+"""
+bonl: identification of block-oriented nonlinear models (C++ core).
+"""
+from __future__ import annotations
+import numpy
+import numpy.typing
+import typing
+from . import metrics
+from . import plant
+__all__: list[str] = ['ARX', 'Estimator', 'Hammerstein', 'HammersteinWiener', 'NumericalError', 'PseudoHammersteinWiener', 'UpdateStatus', 'identify', 'load_model', 'metrics', 'plant']
+class NumericalError(ArithmeticError):
+    pass
+class ARX:
+    """
+    ARX model y(k) = -sum a_j y(k-j) + sum_{i=0..nb} b_i u(k-nk-i).
+    
+    Parameters
+    ----------
+    na, nb, nk : int
+        Orders: na >= 1 poles, nb >= 0 (b has nb + 1 entries), delay nk >= 0.
+    b : array_like, optional
+        b_0..b_nb (b_0 is free for ARX).
+    a : array_like, optional
+        a_1..a_na.
+    """
+    def __copy__(self) -> ARX:
+        ...
+    def __deepcopy__(self, memo: dict) -> ARX:
+        ...
+    def __getstate__(self) -> str:
+        ...
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: str) -> None:
+        ...
+    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        One-step-ahead prediction from measured data.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        y : array_like, shape (n,)
+            Measured output; y[k] is used to predict y[k + 1].
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
+            measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
+            backlash memory is the measured y[k - 1]).
+        """
+    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Free-run simulation from rest.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The model's output, driven by u alone (past inputs and outputs are zero).
+        
+        Raises
+        ------
+        ValueError
+            If u is not a finite 1-D array.
+        bonl.NumericalError
+            If the simulation leaves the finite numbers (an unstable model).
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
+        """
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        """
+    @property
+    def na(self) -> int:
+        """
+        int: poles of the linear block.
+        """
+    @property
+    def nb(self) -> int:
+        """
+        int: B has nb + 1 coefficients b_0..b_nb.
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: pure delay in samples.
+        """
+    @property
+    def num_params(self) -> int:
+        """
+        int: number of identified parameters.
+        """
+    @property
+    def params(self) -> dict:
+        """
+        dict: {'b': b_0..b_nb, 'a': a_1..a_na} as numpy arrays.
+        """
+    @property
+    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: the parameter vector in the order of eq. (19).
+        """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
+class Hammerstein:
+    """
+    Hammerstein model: two-segment input polynomial, then the linear block (b_0 = 1).
+    
+    w = sum_l f_l u^l + h(u) sum_l p_l u^l (h(u) = 1 for u < 0), x(k) = -sum a_j x(k-j) + sum b_i w(k-nk-i), y = x.
+    
+    Parameters
+    ----------
+    na, nb, nk, r : int
+        Orders; r >= 1 is the polynomials' degree.
+    f, p : array_like, optional
+        f_0..f_r and p_0..p_r (p_l = g_l - f_l, the change for u < 0).
+    b : array_like, optional
+        b_0..b_nb with b_0 = 1.
+    a : array_like, optional
+        a_1..a_na.
+    """
+    def __copy__(self) -> Hammerstein:
+        ...
+    def __deepcopy__(self, memo: dict) -> Hammerstein:
+        ...
+    def __getstate__(self) -> str:
+        ...
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, *, f: typing.Any = None, p: typing.Any = None, b: typing.Any = None, a: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: str) -> None:
+        ...
+    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        One-step-ahead prediction from measured data.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        y : array_like, shape (n,)
+            Measured output; y[k] is used to predict y[k + 1].
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
+            measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
+            backlash memory is the measured y[k - 1]).
+        """
+    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Free-run simulation from rest.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The model's output, driven by u alone (past inputs and outputs are zero).
+        
+        Raises
+        ------
+        ValueError
+            If u is not a finite 1-D array.
+        bonl.NumericalError
+            If the simulation leaves the finite numbers (an unstable model).
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
+        """
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        """
+    @property
+    def na(self) -> int:
+        """
+        int: poles of the linear block.
+        """
+    @property
+    def nb(self) -> int:
+        """
+        int: B has nb + 1 coefficients b_0..b_nb.
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: pure delay in samples.
+        """
+    @property
+    def num_params(self) -> int:
+        """
+        int: number of identified parameters.
+        """
+    @property
+    def params(self) -> dict:
+        """
+        dict: {'f', 'p', 'b', 'a'} as numpy arrays.
+        """
+    @property
+    def r(self) -> int:
+        """
+        int: degree of the input polynomials.
+        """
+    @property
+    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: the parameter vector in the order of eq. (19).
+        """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
+class HammersteinWiener:
+    """
+    Hammerstein-Wiener model: the Hammerstein model followed by y = sum_{m=1..r1} q_m x^m (q_1 = 1).
+    
+    Parameters
+    ----------
+    na, nb, nk, r, r1 : int
+        Orders; r1 >= 2 is the output polynomial's degree.
+    f, p, b, a : array_like, optional
+        As for Hammerstein.
+    q : array_like, optional
+        q_1..q_r1 with q_1 = 1.
+    """
+    def __copy__(self) -> HammersteinWiener:
+        ...
+    def __deepcopy__(self, memo: dict) -> HammersteinWiener:
+        ...
+    def __getstate__(self) -> str:
+        ...
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, *, f: typing.Any = None, p: typing.Any = None, b: typing.Any = None, a: typing.Any = None, q: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: str) -> None:
+        ...
+    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        One-step-ahead prediction from measured data.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        y : array_like, shape (n,)
+            Measured output; y[k] is used to predict y[k + 1].
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
+            measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
+            backlash memory is the measured y[k - 1]).
+        """
+    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Free-run simulation from rest.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The model's output, driven by u alone (past inputs and outputs are zero).
+        
+        Raises
+        ------
+        ValueError
+            If u is not a finite 1-D array.
+        bonl.NumericalError
+            If the simulation leaves the finite numbers (an unstable model).
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
+        """
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        """
+    @property
+    def na(self) -> int:
+        """
+        int: poles of the linear block.
+        """
+    @property
+    def nb(self) -> int:
+        """
+        int: B has nb + 1 coefficients b_0..b_nb.
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: pure delay in samples.
+        """
+    @property
+    def num_params(self) -> int:
+        """
+        int: number of identified parameters.
+        """
+    @property
+    def params(self) -> dict:
+        """
+        dict: {'f', 'p', 'b', 'a', 'q'} as numpy arrays.
+        """
+    @property
+    def r(self) -> int:
+        """
+        int: degree of the input polynomials.
+        """
+    @property
+    def r1(self) -> int:
+        """
+        int: degree of the output polynomial.
+        """
+    @property
+    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: the parameter vector in the order of eq. (19).
+        """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
+class PseudoHammersteinWiener:
+    """
+    Pseudo-Hammerstein-Wiener model: the Hammerstein model followed by a symmetric, unit-slope backlash of half-width c.
+    
+    y(k) = x(k) - c if x(k) > y(k-1) + c; x(k) + c if x(k) < y(k-1) - c; else y(k-1).
+    
+    Parameters
+    ----------
+    na, nb, nk, r : int
+        Orders, as for Hammerstein.
+    f, p, b, a : array_like, optional
+        As for Hammerstein.
+    c : float, optional
+        Backlash half-width, c >= 0.
+    """
+    def __copy__(self) -> PseudoHammersteinWiener:
+        ...
+    def __deepcopy__(self, memo: dict) -> PseudoHammersteinWiener:
+        ...
+    def __getstate__(self) -> str:
+        ...
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, *, f: typing.Any = None, p: typing.Any = None, b: typing.Any = None, a: typing.Any = None, c: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: str) -> None:
+        ...
+    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        One-step-ahead prediction from measured data.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        y : array_like, shape (n,)
+            Measured output; y[k] is used to predict y[k + 1].
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
+            measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
+            backlash memory is the measured y[k - 1]).
+        """
+    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Free-run simulation from rest.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The model's output, driven by u alone (past inputs and outputs are zero).
+        
+        Raises
+        ------
+        ValueError
+            If u is not a finite 1-D array.
+        bonl.NumericalError
+            If the simulation leaves the finite numbers (an unstable model).
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
+        """
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        """
+    @property
+    def c(self) -> float:
+        """
+        float: backlash half-width.
+        """
+    @property
+    def na(self) -> int:
+        """
+        int: poles of the linear block.
+        """
+    @property
+    def nb(self) -> int:
+        """
+        int: B has nb + 1 coefficients b_0..b_nb.
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: pure delay in samples.
+        """
+    @property
+    def num_params(self) -> int:
+        """
+        int: number of identified parameters.
+        """
+    @property
+    def params(self) -> dict:
+        """
+        dict: {'f', 'p', 'b', 'a'} as numpy arrays and 'c' as a float.
+        """
+    @property
+    def r(self) -> int:
+        """
+        int: degree of the input polynomials.
+        """
+    @property
+    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: the parameter vector in the order of eq. (19).
+        """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
+class UpdateStatus:
+    """
+    What one online update did.
+    
+    Members:
+    
+      updated : theta and P were updated
+    
+      no_information : the sample says nothing about theta (inside the backlash gap)
+    
+      rejected_non_finite : u or y was NaN or infinite; the estimator's state is untouched
+    
+      numerical_failure : the update would have broken the covariance; theta and P kept, diverged is set
+    """
+    __members__: typing.ClassVar[dict[str, UpdateStatus]]
+    no_information: typing.ClassVar[UpdateStatus]
+    numerical_failure: typing.ClassVar[UpdateStatus]
+    rejected_non_finite: typing.ClassVar[UpdateStatus]
+    updated: typing.ClassVar[UpdateStatus]
+    @typing.overload
+    def __eq__(self, other: UpdateStatus) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: UpdateStatus) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class Estimator:
+    """
+    Online recursive estimator (the paper's MRLSA) for one model.
+    
+    Parameters
+    ----------
+    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+        Gives the structure; the estimate starts from the paper's initial values (zero, c = c0).
+    method : {'default', 'paper'}
+    forgetting : float or tuple, optional
+        As for identify; default the paper's schedule.
+    p0 : float, default 1e6
+    c0 : float, default 0.01
+    """
+    @typing.overload
+    def __init__(self, model: ARX, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: Hammerstein, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: HammersteinWiener, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01) -> None:
+        ...
+    def reset(self) -> None:
+        """
+        Back to the initial estimate, P = p0 I, internal variables at rest.
+        """
+    def reset_to(self, theta: typing.Any) -> None:
+        """
+        Restart from a given estimate (a warm start), P = p0 I.
+        """
+    def start_pass(self) -> None:
+        """
+        A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.
+        """
+    def update(self, u: typing.SupportsFloat | typing.SupportsIndex, y: typing.SupportsFloat | typing.SupportsIndex) -> UpdateStatus:
+        """
+        Process one sample.
+        
+        Parameters
+        ----------
+        u, y : float
+            Input and measured output at this sample.
+        
+        Returns
+        -------
+        UpdateStatus
+            A non-finite u or y is rejected (rejected_non_finite) and leaves the state untouched.
+        """
+    @property
+    def covariance(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        numpy.ndarray: current P (symmetric).
+        """
+    @property
+    def diverged(self) -> bool:
+        """
+        bool: an update was refused for numerical reasons.
+        """
+    @property
+    def model(self) -> typing.Any:
+        """
+        The current estimate as a model.
+        """
+    @property
+    def samples(self) -> int:
+        """
+        int: samples since the last pass started.
+        """
+    @property
+    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: current estimate (eq. 19 order).
+        """
+@typing.overload
+def identify(model: ARX, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> ARX:
+    """
+    Identify a model's parameters from an input/output record.
+    
+    Parameters
+    ----------
+    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+        Gives the structure (orders); its parameter values are not used.
+    u, y : array_like, shape (n,)
+        Input and measured output.
+    passes : int, default 1
+        Passes of the recursive estimator over the record (the paper's step 5).
+    method : {'default', 'paper'}
+        'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
+        measured-output internals, then refinement by minimising the free-run simulation error.
+    forgetting : float or tuple, optional
+        Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
+        paper's 0.98 for 200 samples, then 1.
+    p0 : float, default 1e6
+        P(0) = p0 I.
+    c0 : float, default 0.01
+        Initial backlash half-width (P-H-W).
+    refine_iterations : int, default 100
+        Levenberg-Marquardt iterations of the default method's refinement (0: none).
+    
+    Returns
+    -------
+    model
+        A new model of the same type with the identified parameters.
+    
+    Raises
+    ------
+    ValueError
+        Bad orders, settings, lengths or non-finite samples.
+    bonl.NumericalError
+        The estimator broke down numerically.
+    """
+@typing.overload
+def identify(model: Hammerstein, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Hammerstein:
+    """
+    Identify a model's parameters from an input/output record.
+    
+    Parameters
+    ----------
+    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+        Gives the structure (orders); its parameter values are not used.
+    u, y : array_like, shape (n,)
+        Input and measured output.
+    passes : int, default 1
+        Passes of the recursive estimator over the record (the paper's step 5).
+    method : {'default', 'paper'}
+        'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
+        measured-output internals, then refinement by minimising the free-run simulation error.
+    forgetting : float or tuple, optional
+        Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
+        paper's 0.98 for 200 samples, then 1.
+    p0 : float, default 1e6
+        P(0) = p0 I.
+    c0 : float, default 0.01
+        Initial backlash half-width (P-H-W).
+    refine_iterations : int, default 100
+        Levenberg-Marquardt iterations of the default method's refinement (0: none).
+    
+    Returns
+    -------
+    model
+        A new model of the same type with the identified parameters.
+    
+    Raises
+    ------
+    ValueError
+        Bad orders, settings, lengths or non-finite samples.
+    bonl.NumericalError
+        The estimator broke down numerically.
+    """
+@typing.overload
+def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> HammersteinWiener:
+    """
+    Identify a model's parameters from an input/output record.
+    
+    Parameters
+    ----------
+    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+        Gives the structure (orders); its parameter values are not used.
+    u, y : array_like, shape (n,)
+        Input and measured output.
+    passes : int, default 1
+        Passes of the recursive estimator over the record (the paper's step 5).
+    method : {'default', 'paper'}
+        'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
+        measured-output internals, then refinement by minimising the free-run simulation error.
+    forgetting : float or tuple, optional
+        Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
+        paper's 0.98 for 200 samples, then 1.
+    p0 : float, default 1e6
+        P(0) = p0 I.
+    c0 : float, default 0.01
+        Initial backlash half-width (P-H-W).
+    refine_iterations : int, default 100
+        Levenberg-Marquardt iterations of the default method's refinement (0: none).
+    
+    Returns
+    -------
+    model
+        A new model of the same type with the identified parameters.
+    
+    Raises
+    ------
+    ValueError
+        Bad orders, settings, lengths or non-finite samples.
+    bonl.NumericalError
+        The estimator broke down numerically.
+    """
+@typing.overload
+def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> PseudoHammersteinWiener:
+    """
+    Identify a model's parameters from an input/output record.
+    
+    Parameters
+    ----------
+    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+        Gives the structure (orders); its parameter values are not used.
+    u, y : array_like, shape (n,)
+        Input and measured output.
+    passes : int, default 1
+        Passes of the recursive estimator over the record (the paper's step 5).
+    method : {'default', 'paper'}
+        'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
+        measured-output internals, then refinement by minimising the free-run simulation error.
+    forgetting : float or tuple, optional
+        Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
+        paper's 0.98 for 200 samples, then 1.
+    p0 : float, default 1e6
+        P(0) = p0 I.
+    c0 : float, default 0.01
+        Initial backlash half-width (P-H-W).
+    refine_iterations : int, default 100
+        Levenberg-Marquardt iterations of the default method's refinement (0: none).
+    
+    Returns
+    -------
+    model
+        A new model of the same type with the identified parameters.
+    
+    Raises
+    ------
+    ValueError
+        Bad orders, settings, lengths or non-finite samples.
+    bonl.NumericalError
+        The estimator broke down numerically.
+    """
+def load_model(text: str) -> typing.Any:
+    """
+    Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
+    
+    Parameters
+    ----------
+    text : str
+        The JSON text.
+    
+    Returns
+    -------
+    ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    
+    Raises
+    ------
+    ValueError
+        The text is not valid JSON or not a valid bonl model (the message names the problem).
+    """
+__version__: str = '0.1.0'

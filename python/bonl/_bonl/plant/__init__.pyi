@@ -1,0 +1,751 @@
+"""
+The excavator dipper-joint plant (docs/plant.md) integrated by SUNDIALS CVODE: parameters,
+command signals (submodule ``excitation``), ``simulate``, the experiment's signal processing
+and the paper's whole experiment (``experiment``).
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import typing
+from . import excitation
+__all__: tuple = ('Parameters', 'default_parameters', 'small_parameters', 'Command', 'excitation', 'simulate', 'initial_state', 'derivative', 'low_pass', 'differentiate', 'experiment')
+class Parameters:
+    """
+    Parameters of the excavator dipper-joint plant (docs/plant.md).
+    
+    Valve, asymmetric cylinder, linkage and backlash of a 20 t excavator's stick cylinder by
+    default; ``small_parameters()`` gives the 5-6 t machine. Every value can be overridden, as a
+    keyword argument of the constructor or by assigning the attribute; ``validate()`` rejects
+    non-physical values with a ValueError that names the parameter (``simulate`` validates too).
+    
+    Parameters
+    ----------
+    **overrides : float
+        Any of the attributes below, e.g. ``Parameters(pilot_hysteresis=0.0)``.
+    
+    Attributes
+    ----------
+    bore_diameter : float
+        D, cylinder bore diameter [m].
+    rod_diameter : float
+        d, piston rod diameter [m].
+    stroke : float
+        L, cylinder stroke [m].
+    dead_volume_head : float
+        V01, head-side dead plus hose volume [m^3].
+    dead_volume_rod : float
+        V02, rod-side dead plus hose volume [m^3].
+    supply_pressure : float
+        ps, supply pressure [Pa].
+    return_pressure : float
+        pt, return (tank) pressure [Pa].
+    bulk_modulus : float
+        beta_e, effective bulk modulus of the oil [Pa].
+    oil_density : float
+        rho, oil density [kg/m^3].
+    discharge_coefficient : float
+        Cd, orifice discharge coefficient [-].
+    area_gradient : float
+        w, orifice area gradient of the spool [m].
+    spool_travel : float
+        xv_max, spool travel at full opening [m].
+    internal_leakage : float
+        Ci, internal (cross-piston) leakage coefficient [m^3/(s Pa)].
+    external_leakage : float
+        Ce, external leakage coefficient [m^3/(s Pa)].
+    orifice_smoothing : float
+        dp_reg, orifice square-root smoothing pressure [Pa].
+    valve_time_constant : float
+        tau_v, valve (spool) time constant [s].
+    dead_band : float
+        d, input dead-band half-width [V].
+    neutral_voltage : float
+        V0, neutral command voltage [V].
+    max_voltage : float
+        Upper end of the command range; V saturates to [0, max_voltage] [V].
+    pilot_hysteresis : float
+        hv, pilot-stage hysteresis half-width as a fraction of full opening [-] (the valve backlash).
+    mass : float
+        M, equivalent moving mass at the rod [kg].
+    gravity_moment : float
+        m_dcg, gravity first moment of stick plus bucket [kg m].
+    gravity_angle_offset : float
+        theta_g, gravity angle offset [rad].
+    gravity : float
+        g, gravitational acceleration [m/s^2].
+    coulomb_friction : float
+        Fc, Coulomb friction force [N].
+    static_friction : float
+        Fst, static (breakaway) friction force [N].
+    stribeck_velocity : float
+        vs, Stribeck velocity [m/s].
+    viscous_friction : float
+        sigma_v, viscous friction coefficient [N s/m].
+    friction_smoothing : float
+        eps_v, friction sign smoothing velocity [m/s].
+    end_stop_stiffness : float
+        k_end, end-stop stiffness [N/m].
+    end_stop_damping : float
+        c_end, end-stop damping [N s/m].
+    pivot_to_rod_pin : float
+        a, distance from the joint pivot to the rod pin [m].
+    pivot_to_base_pin : float
+        b, distance from the joint pivot to the cylinder base pin [m].
+    retracted_length : float
+        l_min, pin-to-pin cylinder length at h = 0 [m].
+    joint_backlash : float
+        delta, total backlash in the pins [rad].
+    sensor_noise : float
+        sigma_theta, inclinometer noise standard deviation [rad].
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __copy__(self) -> Parameters:
+        ...
+    def __deepcopy__(self, memo: dict) -> Parameters:
+        ...
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Default (20 t) parameters, with any attribute overridden by keyword.
+        
+        Raises
+        ------
+        TypeError
+            For a keyword that is not a parameter's name.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def angle_offset(self) -> float:
+        """
+        phi0, the linkage angle at mid-stroke [rad].
+        """
+    def annulus_area(self) -> float:
+        """
+        A2 = pi (D^2 - d^2) / 4, annulus area [m^2].
+        """
+    def copy(self) -> Parameters:
+        """
+        An independent copy.
+        """
+    def flow_gain(self) -> float:
+        """
+        Kq = Cd w xv_max sqrt(2 / rho) [m^3/(s sqrt(Pa))].
+        """
+    def gravity_force(self, position: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        Spring (gravity) force at the rod, Fs(h) = m_dcg g cos(theta + theta_g) / r(h).
+        
+        Parameters
+        ----------
+        position : float
+            h [m].
+        
+        Returns
+        -------
+        float
+            Fs [N].
+        """
+    def head_area(self) -> float:
+        """
+        A1 = pi D^2 / 4, piston area [m^2].
+        """
+    def joint_angle(self, position: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        Joint angle theta = phi(h) - phi0.
+        
+        Parameters
+        ----------
+        position : float
+            h [m].
+        
+        Returns
+        -------
+        float
+            theta [rad].
+        """
+    def linkage_angle(self, position: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        Linkage angle phi at piston position h (law of cosines).
+        
+        Parameters
+        ----------
+        position : float
+            h [m].
+        
+        Returns
+        -------
+        float
+            phi [rad].
+        """
+    def moment_arm(self, position: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        Moment arm r(h) = a b sin(phi) / l, so that dtheta/dt = v / r.
+        
+        Parameters
+        ----------
+        position : float
+            h [m].
+        
+        Returns
+        -------
+        float
+            r [m].
+        """
+    def to_dict(self) -> dict:
+        """
+        Every parameter by name.
+        
+        Returns
+        -------
+        dict[str, float]
+        """
+    def validate(self) -> None:
+        """
+        Check that every parameter is physical.
+        
+        Raises
+        ------
+        ValueError
+            Naming the first non-physical parameter, its requirement and its value.
+        """
+    def valve_gain(self) -> float:
+        """
+        kv = 1 / (V0 - d) [1/V]: a full command opens the spool fully.
+        """
+    @property
+    def area_gradient(self) -> float:
+        """
+        w, orifice area gradient of the spool [m].
+        """
+    @area_gradient.setter
+    def area_gradient(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def bore_diameter(self) -> float:
+        """
+        D, cylinder bore diameter [m].
+        """
+    @bore_diameter.setter
+    def bore_diameter(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def bulk_modulus(self) -> float:
+        """
+        beta_e, effective bulk modulus of the oil [Pa].
+        """
+    @bulk_modulus.setter
+    def bulk_modulus(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def coulomb_friction(self) -> float:
+        """
+        Fc, Coulomb friction force [N].
+        """
+    @coulomb_friction.setter
+    def coulomb_friction(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def dead_band(self) -> float:
+        """
+        d, input dead-band half-width [V].
+        """
+    @dead_band.setter
+    def dead_band(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def dead_volume_head(self) -> float:
+        """
+        V01, head-side dead plus hose volume [m^3].
+        """
+    @dead_volume_head.setter
+    def dead_volume_head(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def dead_volume_rod(self) -> float:
+        """
+        V02, rod-side dead plus hose volume [m^3].
+        """
+    @dead_volume_rod.setter
+    def dead_volume_rod(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def discharge_coefficient(self) -> float:
+        """
+        Cd, orifice discharge coefficient [-].
+        """
+    @discharge_coefficient.setter
+    def discharge_coefficient(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def end_stop_damping(self) -> float:
+        """
+        c_end, end-stop damping [N s/m].
+        """
+    @end_stop_damping.setter
+    def end_stop_damping(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def end_stop_stiffness(self) -> float:
+        """
+        k_end, end-stop stiffness [N/m].
+        """
+    @end_stop_stiffness.setter
+    def end_stop_stiffness(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def external_leakage(self) -> float:
+        """
+        Ce, external leakage coefficient [m^3/(s Pa)].
+        """
+    @external_leakage.setter
+    def external_leakage(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def friction_smoothing(self) -> float:
+        """
+        eps_v, friction sign smoothing velocity [m/s].
+        """
+    @friction_smoothing.setter
+    def friction_smoothing(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def gravity(self) -> float:
+        """
+        g, gravitational acceleration [m/s^2].
+        """
+    @gravity.setter
+    def gravity(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def gravity_angle_offset(self) -> float:
+        """
+        theta_g, gravity angle offset [rad].
+        """
+    @gravity_angle_offset.setter
+    def gravity_angle_offset(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def gravity_moment(self) -> float:
+        """
+        m_dcg, gravity first moment of stick plus bucket [kg m].
+        """
+    @gravity_moment.setter
+    def gravity_moment(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def internal_leakage(self) -> float:
+        """
+        Ci, internal (cross-piston) leakage coefficient [m^3/(s Pa)].
+        """
+    @internal_leakage.setter
+    def internal_leakage(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def joint_backlash(self) -> float:
+        """
+        delta, total backlash in the pins [rad].
+        """
+    @joint_backlash.setter
+    def joint_backlash(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def mass(self) -> float:
+        """
+        M, equivalent moving mass at the rod [kg].
+        """
+    @mass.setter
+    def mass(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_voltage(self) -> float:
+        """
+        Upper end of the command range; V saturates to [0, max_voltage] [V].
+        """
+    @max_voltage.setter
+    def max_voltage(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def neutral_voltage(self) -> float:
+        """
+        V0, neutral command voltage [V].
+        """
+    @neutral_voltage.setter
+    def neutral_voltage(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def oil_density(self) -> float:
+        """
+        rho, oil density [kg/m^3].
+        """
+    @oil_density.setter
+    def oil_density(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def orifice_smoothing(self) -> float:
+        """
+        dp_reg, orifice square-root smoothing pressure [Pa].
+        """
+    @orifice_smoothing.setter
+    def orifice_smoothing(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def pilot_hysteresis(self) -> float:
+        """
+        hv, pilot-stage hysteresis half-width as a fraction of full opening [-] (the valve backlash).
+        """
+    @pilot_hysteresis.setter
+    def pilot_hysteresis(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def pivot_to_base_pin(self) -> float:
+        """
+        b, distance from the joint pivot to the cylinder base pin [m].
+        """
+    @pivot_to_base_pin.setter
+    def pivot_to_base_pin(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def pivot_to_rod_pin(self) -> float:
+        """
+        a, distance from the joint pivot to the rod pin [m].
+        """
+    @pivot_to_rod_pin.setter
+    def pivot_to_rod_pin(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def retracted_length(self) -> float:
+        """
+        l_min, pin-to-pin cylinder length at h = 0 [m].
+        """
+    @retracted_length.setter
+    def retracted_length(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def return_pressure(self) -> float:
+        """
+        pt, return (tank) pressure [Pa].
+        """
+    @return_pressure.setter
+    def return_pressure(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def rod_diameter(self) -> float:
+        """
+        d, piston rod diameter [m].
+        """
+    @rod_diameter.setter
+    def rod_diameter(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def sensor_noise(self) -> float:
+        """
+        sigma_theta, inclinometer noise standard deviation [rad].
+        """
+    @sensor_noise.setter
+    def sensor_noise(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def spool_travel(self) -> float:
+        """
+        xv_max, spool travel at full opening [m].
+        """
+    @spool_travel.setter
+    def spool_travel(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def static_friction(self) -> float:
+        """
+        Fst, static (breakaway) friction force [N].
+        """
+    @static_friction.setter
+    def static_friction(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def stribeck_velocity(self) -> float:
+        """
+        vs, Stribeck velocity [m/s].
+        """
+    @stribeck_velocity.setter
+    def stribeck_velocity(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def stroke(self) -> float:
+        """
+        L, cylinder stroke [m].
+        """
+    @stroke.setter
+    def stroke(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def supply_pressure(self) -> float:
+        """
+        ps, supply pressure [Pa].
+        """
+    @supply_pressure.setter
+    def supply_pressure(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def valve_time_constant(self) -> float:
+        """
+        tau_v, valve (spool) time constant [s].
+        """
+    @valve_time_constant.setter
+    def valve_time_constant(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def viscous_friction(self) -> float:
+        """
+        sigma_v, viscous friction coefficient [N s/m].
+        """
+    @viscous_friction.setter
+    def viscous_friction(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class Command:
+    """
+    A command voltage V(t) [V] on the 0-5 V scale (neutral 2.5 V).
+    
+    Made by the functions of ``bonl.plant.excitation`` (evaluated in C++, so ``simulate``
+    releases the GIL), or from any Python callable ``f(t) -> float``.
+    
+    Parameters
+    ----------
+    function : callable
+        f(t) -> float, t in seconds, V in volts.
+    """
+    def __call__(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        V(t).
+        
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        float
+            Command [V].
+        """
+    def __init__(self, function: collections.abc.Callable) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def sample(self, t: typing.Any) -> numpy.ndarray:
+        """
+        V at every time of an array.
+        
+        Parameters
+        ----------
+        t : array_like, 1-D
+            Finite times [s].
+        
+        Returns
+        -------
+        numpy.ndarray
+            float64 commands [V], the same length as ``t``.
+        
+        Raises
+        ------
+        ValueError
+            When ``t`` is not 1-D or not finite.
+        """
+    @property
+    def calls_python(self) -> bool:
+        """
+        True when the command wraps a Python callable (``simulate`` then keeps the GIL).
+        """
+def default_parameters() -> Parameters:
+    """
+    The 20 t excavator's stick cylinder (plant.md's defaults).
+    
+    Returns
+    -------
+    Parameters
+    """
+def derivative(parameters: typing.Any, state: typing.Any, pilot: typing.SupportsFloat | typing.SupportsIndex, load: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> numpy.ndarray:
+    """
+    Right-hand side of the plant's ODE, d(state)/dt, for a held pilot output and load.
+    
+    Exposed so that tests can check the plant against an independent integrator.
+    
+    Parameters
+    ----------
+    parameters : Parameters or None
+        The plant.
+    state : array_like of 5
+        (h [m], v [m/s], p1 [Pa], p2 [Pa], xv [-]).
+    pilot : float
+        xc, the pilot stage's output after its hysteresis [-].
+    load : float, optional
+        F_L [N].
+    
+    Returns
+    -------
+    numpy.ndarray
+        d(state)/dt, 5 entries.
+    """
+def differentiate(x: typing.Any, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
+    """
+    Numerical derivative: central differences, one-sided at both ends.
+    
+    Parameters
+    ----------
+    x : array_like, 1-D
+        Finite samples, at least 2.
+    ts : float
+        Sample time [s].
+    
+    Returns
+    -------
+    numpy.ndarray
+    
+    Raises
+    ------
+    ValueError
+        When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.
+    """
+def experiment(parameters: typing.Any = None, *, method: str = 'default', robustness: bool = False) -> dict:
+    """
+    The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/plant.md).
+    
+    Identification record from the paper's multi-sine, validation record from a smooth random
+    signal (each 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated); ARX,
+    Hammerstein, H-W and P-H-W identified with the paper's orders (na = 3, nb = 2, nk = 8,
+    r = r1 = 3) by both estimator methods and validated by free-run simulation. The GIL is
+    released during the computation.
+    
+    Parameters
+    ----------
+    parameters : Parameters, optional
+        The plant; None: ``default_parameters()``.
+    method : {'default', 'paper'}, optional
+        Whose results go to the top-level ``mse``, ``models``, ``params``.
+    robustness : bool, optional
+        Also validate on the eight further trajectories of ``bonl_demo``'s robustness check.
+    
+    Returns
+    -------
+    dict
+        ``mse`` {'ARX', 'Hammerstein', 'HW', 'PHW'} validation MSE [(rad/s)^2] of ``method``;
+        ``models`` the same keys, the identified models (bonl.ARX, bonl.Hammerstein, ...);
+        ``params`` their parameters by name (lists); ``method``;
+        ``methods`` {'default', 'paper'} -> {``mse``, ``models``, ``params``, ``simulated``};
+        ``identification`` and ``validation`` records: ``time`` [s], ``input`` [V], ``velocity``
+        [rad/s] (what the models are fitted on), ``true_velocity`` [rad/s], ``angle`` [rad], ``run``
+        (min/max position, end stop, CVODE steps); the validation record also has ``simulated``
+        {'default', 'paper'} -> {'ARX': array, ...}, the models' free-run velocities;
+        ``parameters``; ``seconds`` (wall time of each stage); with ``robustness``, ``robustness``:
+        one {'default': mse, 'paper': mse} per trajectory.
+    
+    Raises
+    ------
+    ValueError
+        For non-physical parameters or an unknown method.
+    """
+def initial_state(parameters: typing.Any, position: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
+    """
+    Initial state of plant.md's experiment at piston position h0.
+    
+    At rest, spool closed, p2 = ps / 4, p1 from the force balance A1 p1 = A2 p2 + Fs(h0).
+    
+    Parameters
+    ----------
+    parameters : Parameters or None
+        The plant.
+    position : float
+        h0 [m].
+    
+    Returns
+    -------
+    numpy.ndarray
+        The state (h [m], v [m/s], p1 [Pa], p2 [Pa], xv [-]).
+    """
+def low_pass(x: typing.Any, cutoff_hz: typing.SupportsFloat | typing.SupportsIndex, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
+    """
+    First-order low-pass z[k] = z[k-1] + alpha (x[k] - z[k-1]), alpha = 1 - exp(-2 pi fc ts), z[0] = x[0].
+    
+    Parameters
+    ----------
+    x : array_like, 1-D
+        Finite samples.
+    cutoff_hz : float
+        fc [Hz].
+    ts : float
+        Sample time [s].
+    
+    Returns
+    -------
+    numpy.ndarray
+    
+    Raises
+    ------
+    ValueError
+        When ``x`` is not 1-D or not finite, or fc or ts is not > 0.
+    """
+def simulate(command: typing.Any, parameters: typing.Any = None, *, duration: typing.SupportsFloat | typing.SupportsIndex = 50.0, sample_time: typing.SupportsFloat | typing.SupportsIndex = 0.01, command_rate: typing.SupportsFloat | typing.SupportsIndex = 1000.0, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: typing.Any = None, max_steps_per_interval: typing.SupportsInt | typing.SupportsIndex = 5000, sensor_noise: bool = True, noise_seed: typing.SupportsInt | typing.SupportsIndex = 1, initial_position: typing.Any = None, load: typing.Any = None) -> dict:
+    """
+    Integrate the plant under a command with CVODE (BDF, Newton, dense solver).
+    
+    The command is sampled and held on the command grid (``command_rate``), where the pilot
+    hysteresis and the pin backlash (play operators) are evaluated; CVODE is stopped at every
+    grid point. The GIL is released unless the command or the load is a Python callable.
+    
+    Parameters
+    ----------
+    command : Command or callable or tuple
+        V(t) [V]: a ``Command`` (``bonl.plant.excitation``), a Python callable f(t) -> float, or a
+        ``(values, ts)`` pair held between samples (``excitation.sampled``).
+    parameters : Parameters, optional
+        The plant; None: ``default_parameters()``.
+    duration : float, optional
+        [s], an integer multiple of ``sample_time``.
+    sample_time : float, optional
+        Output grid [s], an integer multiple of 1 / command_rate.
+    command_rate : float, optional
+        Command grid [Hz].
+    rtol : float, optional
+        CVODE's relative tolerance.
+    atol : dict, optional
+        Absolute tolerances by state: any of ``position`` [m] (default 1e-8), ``velocity`` [m/s]
+        (1e-8), ``pressure`` [Pa] (1.0), ``spool`` [-] (1e-8).
+    max_steps_per_interval : int, optional
+        CVODE's step limit per command interval.
+    sensor_noise : bool, optional
+        Add the inclinometer noise to ``measured_angle``.
+    noise_seed : int, optional
+        Its seed.
+    initial_position : float, optional
+        h0 [m]; None: mid-stroke.
+    load : Command or callable, optional
+        External load F_L(t) [N] opposing extension; None: none.
+    
+    Returns
+    -------
+    dict
+        float64 arrays on the output grid, sample k at ``time[k] = k * sample_time``: ``time`` [s],
+        ``command`` [V], ``input`` u = V - V0 [V], ``position`` h [m], ``velocity`` v [m/s],
+        ``head_pressure`` p1 [Pa], ``rod_pressure`` p2 [Pa], ``spool`` xv [-], ``pilot`` xc [-],
+        ``head_flow`` Q1 [m^3/s], ``rod_flow`` Q2 [m^3/s], ``joint_angle`` theta [rad],
+        ``joint_rate`` [rad/s], ``pin_angle`` theta_m [rad], ``measured_angle`` [rad]; and the scalars
+        ``min_position``, ``max_position`` [m], ``reached_end_stop`` (bool), ``steps`` (CVODE's).
+    
+    Raises
+    ------
+    ValueError
+        For non-physical parameters or bad options, naming them.
+    bonl.NumericalError
+        When CVODE fails (its flag and the time reached are in the message).
+    """
+def small_parameters() -> Parameters:
+    """
+    The 5-6 t machine of plant.md.
+    
+    Returns
+    -------
+    Parameters
+    """

@@ -1,0 +1,56 @@
+"""bonl.Estimator: online updates, their status, and rejection of non-finite samples."""
+
+import numpy as np
+
+import bonl
+from conftest import known_models, random_levels
+
+
+def test_online_updates_track_whole_record_recursion():
+    truth = known_models()["Hammerstein"]
+    u = random_levels(3000, 5, 1.0, 1)
+    y = truth.simulate(u)
+    estimator = bonl.Estimator(truth)
+    statuses = [estimator.update(float(a), float(b)) for a, b in zip(u, y)]
+    assert all(s == bonl.UpdateStatus.updated for s in statuses)
+    assert estimator.samples == 3000
+    model = estimator.model
+    assert type(model) is bonl.Hammerstein
+    # After one pass the Hammerstein recursion is within 1% in simulation (README: 2.8e-3).
+    u_val = random_levels(3000, 5, 1.0, 2)
+    assert bonl.metrics.nrmse(truth.simulate(u_val), model.simulate(u_val)) < 0.01
+    p = estimator.covariance
+    np.testing.assert_array_equal(p, p.T)
+
+
+def test_non_finite_samples_are_rejected_without_trace():
+    truth = known_models()["PseudoHammersteinWiener"]
+    u = random_levels(1000, 5, 1.0, 3)
+    y = truth.simulate(u)
+    clean = bonl.Estimator(truth)
+    disturbed = bonl.Estimator(truth)
+    for k in range(u.size):
+        if k % 97 == 50:
+            theta = disturbed.theta
+            assert disturbed.update(float("nan"), float(y[k])) == bonl.UpdateStatus.rejected_non_finite
+            assert disturbed.update(float(u[k]), float("inf")) == bonl.UpdateStatus.rejected_non_finite
+            np.testing.assert_array_equal(disturbed.theta, theta)
+        clean.update(float(u[k]), float(y[k]))
+        disturbed.update(float(u[k]), float(y[k]))
+    np.testing.assert_array_equal(clean.theta, disturbed.theta)
+    np.testing.assert_array_equal(clean.covariance, disturbed.covariance)
+    assert not disturbed.diverged
+
+
+def test_gap_samples_carry_no_information_and_reset_restarts():
+    truth = known_models()["PseudoHammersteinWiener"]
+    u = random_levels(2000, 5, 1.0, 4)
+    y = truth.simulate(u)
+    estimator = bonl.Estimator(truth, method="default")
+    statuses = [estimator.update(float(a), float(b)) for a, b in zip(u, y)]
+    assert bonl.UpdateStatus.no_information in statuses
+    estimator.reset()
+    assert estimator.samples == 0
+    np.testing.assert_array_equal(estimator.theta, np.r_[np.zeros(13), 0.01])
+    estimator.reset_to(truth.theta)
+    np.testing.assert_array_equal(estimator.theta, truth.theta)

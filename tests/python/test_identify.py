@@ -1,0 +1,81 @@
+"""Identification of known systems from Python, judged by free-run simulation on a fresh input
+(the bounds are those of tests/cpp/identify.test.cpp, where they are justified)."""
+
+import threading
+
+import numpy as np
+import pytest
+
+import bonl
+from conftest import known_models, random_levels
+
+
+def _record(model, seed, noise=0.0):
+    u = random_levels(5000, 5, 1.0, seed)
+    y = model.simulate(u)
+    if noise:
+        y = y + np.random.default_rng(seed + 100).normal(0.0, noise * y.std(), y.size)
+    return u, y
+
+
+def test_default_method_recovers_noise_free_systems(known):
+    name, truth = known
+    u, y = _record(truth, 1)
+    fitted = bonl.identify(truth, u, y)
+    assert type(fitted) is type(truth)
+    u_val, _ = _record(truth, 2)
+    y_val = truth.simulate(u_val)
+    assert bonl.metrics.nrmse(y_val, fitted.simulate(u_val)) <= 0.01
+    np.testing.assert_allclose(fitted.theta, truth.theta, rtol=1e-6, atol=1e-6)
+    if name == "PseudoHammersteinWiener":
+        assert abs(fitted.params["c"] - 0.1) <= 0.002
+
+
+@pytest.mark.parametrize("noise", [0.01, 0.05])
+def test_noisy_default_beats_paper(noise):
+    truth = known_models()["PseudoHammersteinWiener"]
+    u, y = _record(truth, 1, noise)
+    u_val, _ = _record(truth, 2)
+    y_val = truth.simulate(u_val)
+    ours = bonl.identify(truth, u, y)
+    paper = bonl.identify(truth, u, y, method="paper")
+    ours_error = bonl.metrics.nrmse(y_val, ours.simulate(u_val))
+    assert ours_error <= 0.25 * noise
+    assert ours_error <= bonl.metrics.nrmse(y_val, paper.simulate(u_val))
+
+
+def test_settings_are_passed_through():
+    truth = known_models()["ARX"]
+    u, y = _record(truth, 5, 0.01)
+    a = bonl.identify(truth, u, y, forgetting=1.0, p0=10.0)
+    b = bonl.identify(truth, u, y, forgetting=(1.0, 0, 1.0), p0=10.0)
+    c = bonl.identify(truth, u, y)
+    np.testing.assert_array_equal(a.theta, b.theta)
+    assert not np.array_equal(a.theta, c.theta)
+    # ARX's least squares with lambda = 1 equals the regularised batch solution.
+    phi = np.zeros((u.size, 6))
+    for k in range(u.size):
+        phi[k, :3] = [u[k - 8 - i] if k - 8 - i >= 0 else 0.0 for i in range(3)]
+        phi[k, 3:] = [-y[k - j] if k - j >= 0 else 0.0 for j in range(1, 4)]
+    batch = np.linalg.solve(phi.T @ phi + np.eye(6) / 10.0, phi.T @ y)
+    np.testing.assert_allclose(a.theta, batch, rtol=1e-8)
+
+
+def test_whole_record_calls_release_the_gil():
+    """Four identifications in four threads give the results of the serial runs."""
+    truth = known_models()["PseudoHammersteinWiener"]
+    records = [_record(truth, seed, 0.01) for seed in range(4)]
+    serial = [bonl.identify(truth, u, y).theta for u, y in records]
+    results = [None] * 4
+
+    def work(i):
+        u, y = records[i]
+        results[i] = bonl.identify(truth, u, y).theta
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for got, expected in zip(results, serial):
+        np.testing.assert_array_equal(got, expected)

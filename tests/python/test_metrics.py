@@ -1,0 +1,16 @@
+"""bonl.metrics on hand-computed numbers."""
+
+import numpy as np
+import pytest
+
+import bonl
+
+
+def test_hand_computed():
+    y = np.array([1.0, 2.0, 3.0, 4.0])
+    yhat = np.array([1.0, 2.5, 2.0, 4.0])
+    assert bonl.metrics.mse(y, yhat) == pytest.approx(1.25 / 4)
+    assert bonl.metrics.rmse(y, yhat) == pytest.approx(np.sqrt(1.25 / 4))
+    assert bonl.metrics.nrmse(y, yhat) == pytest.approx(np.sqrt(1.25 / 5))
+    assert bonl.metrics.nrmse_fit(y, yhat) == pytest.approx(50.0)
+    assert bonl.metrics.nrmse_fit(y, y) == 100.0

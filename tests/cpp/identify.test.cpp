@@ -124,7 +124,11 @@ TEST_CASE("run-time sizes identify the same model as compile-time sizes", "[iden
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 9);
   const auto fixed = bonl::identify(truth, u, y);
   const auto dynamic = bonl::identify(dynamic_truth, u, y);
-  CHECK(near(dynamic.theta(), fixed.theta(), 1e-9));
+  // The two paths vectorise the same arithmetic in a different order; the recursion, started from
+  // P(0) = 1e6 I, amplifies that round-off in theta (measured 1.2e-9), while the models' outputs
+  // agree to 3e-11 of an output spread of about 0.5.
+  CHECK(near(dynamic.theta(), fixed.theta(), 1e-7));
+  CHECK(near(dynamic.simulate(u), fixed.simulate(u), 1e-9));
 }
 
 TEST_CASE("more passes of the recursive stage still recover the noise-free system", "[identify]") {

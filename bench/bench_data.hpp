@@ -1,0 +1,160 @@
+#pragma once
+// Data shared by the benchmarks, all from fixed seeds:
+// - the recorded noisy response of the known P-H-W system (the estimator and simulation benchmarks);
+// - the paper-order models with those known parameters, in any scalar type and size;
+// - random regressors for the RLS benchmarks, from splitmix64 so that bench/python_baselines.py
+//   generates exactly the same numbers for padasip and numpy (see regressors()).
+
+#include <Eigen/Core>
+#include <bonl/bonl.hpp>
+#include <cstdint>
+#include <type_traits>
+
+namespace bonl_bench {
+
+/// The paper's orders (section 5).
+constexpr Eigen::Index kNa = 3, kNb = 2, kNk = 8, kR = 3, kR1 = 3;
+
+/// Known parameters of the P-H-W system that generates the record (also used, in part, by the other
+/// models for the free-run benchmarks).
+inline Eigen::VectorXd true_f() { return (Eigen::VectorXd(4) << 0.002, 0.06, 0.02, -0.01).finished(); }
+inline Eigen::VectorXd true_p() { return (Eigen::VectorXd(4) << -0.003, -0.02, -0.03, 0.015).finished(); }
+inline Eigen::VectorXd true_b() { return (Eigen::VectorXd(3) << 1.0, 0.5, 0.2).finished(); }
+inline Eigen::VectorXd true_a() { return (Eigen::VectorXd(3) << -1.7, 1.04, -0.238).finished(); }
+inline Eigen::VectorXd true_q() { return (Eigen::VectorXd(3) << 1.0, 0.3, -0.1).finished(); }
+constexpr double kTrueC = 0.1;
+
+/// Input and measured output, 4096 samples, as Scalar.
+template <typename Scalar>
+struct Record {
+  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> u, y;
+};
+
+inline const Record<double>& record_double() {
+  static const Record<double> data = [] {
+    bonl::PaperPseudoHammersteinWiener truth(kNa, kNb, kNk, kR);
+    truth.set_f(true_f());
+    truth.set_p(true_p());
+    truth.set_b(true_b());
+    truth.set_a(true_a());
+    truth.set_c(kTrueC);
+    Record<double> r;
+    r.u = bonl::signals::random_levels(4096, 5, 1.0, 1);
+    r.y = truth.simulate(r.u) + bonl::signals::white_noise(r.u.size(), 0.01, 2);
+    return r;
+  }();
+  return data;
+}
+
+template <typename Scalar>
+const Record<Scalar>& record() {
+  if constexpr (std::is_same_v<Scalar, double>) {
+    return record_double();
+  } else {
+    static const Record<Scalar> data{record_double().u.template cast<Scalar>(),
+                                     record_double().y.template cast<Scalar>()};
+    return data;
+  }
+}
+
+/// The models by name, in scalar type S, fixed (paper-order) or run-time sizes.
+template <typename S, bool Fixed>
+struct Models {
+  static constexpr int D = Eigen::Dynamic;
+  using Arx = bonl::ARX<S, Fixed ? 3 : D, Fixed ? 2 : D>;
+  using Hammerstein = bonl::Hammerstein<S, Fixed ? 3 : D, Fixed ? 2 : D, Fixed ? 3 : D>;
+  using HammersteinWiener = bonl::HammersteinWiener<S, Fixed ? 3 : D, Fixed ? 2 : D, Fixed ? 3 : D, Fixed ? 3 : D>;
+  using Phw = bonl::PseudoHammersteinWiener<S, Fixed ? 3 : D, Fixed ? 2 : D, Fixed ? 3 : D>;
+};
+
+template <typename S, int Na, int Nb>
+bonl::ARX<S, Na, Nb> structure_of(bonl::ARX<S, Na, Nb>*) {
+  return bonl::ARX<S, Na, Nb>(kNa, kNb, kNk);
+}
+template <typename S, int Na, int Nb, int R>
+bonl::Hammerstein<S, Na, Nb, R> structure_of(bonl::Hammerstein<S, Na, Nb, R>*) {
+  return bonl::Hammerstein<S, Na, Nb, R>(kNa, kNb, kNk, kR);
+}
+template <typename S, int Na, int Nb, int R, int R1>
+bonl::HammersteinWiener<S, Na, Nb, R, R1> structure_of(bonl::HammersteinWiener<S, Na, Nb, R, R1>*) {
+  return bonl::HammersteinWiener<S, Na, Nb, R, R1>(kNa, kNb, kNk, kR, kR1);
+}
+template <typename S, int Na, int Nb, int R>
+bonl::PseudoHammersteinWiener<S, Na, Nb, R> structure_of(bonl::PseudoHammersteinWiener<S, Na, Nb, R>*) {
+  return bonl::PseudoHammersteinWiener<S, Na, Nb, R>(kNa, kNb, kNk, kR);
+}
+
+template <class M, class = void>
+struct has_r1 : std::false_type {};
+template <class M>
+struct has_r1<M, std::void_t<decltype(&M::r1)>> : std::true_type {};
+template <class M, class = void>
+struct has_c : std::false_type {};
+template <class M>
+struct has_c<M, std::void_t<decltype(&M::set_c)>> : std::true_type {};
+
+/// The structure of a model at the paper's orders (nk is always a run-time value).
+template <class Model>
+Model make_structure() {
+  return structure_of(static_cast<Model*>(nullptr));
+}
+
+/// A stable model with the known parameters (ARX: b = true_b, a = true_a).
+template <class Model>
+Model make_known_model() {
+  using S = typename Model::Scalar;
+  Model model = make_structure<Model>();
+  model.set_b(true_b().cast<S>());
+  model.set_a(true_a().cast<S>());
+  if constexpr (Model::kHasInternalVariables) {
+    model.set_f(true_f().cast<S>());
+    model.set_p(true_p().cast<S>());
+  }
+  if constexpr (has_r1<Model>::value) model.set_q(true_q().cast<S>());
+  if constexpr (has_c<Model>::value) model.set_c(S(kTrueC));
+  return model;
+}
+
+/// splitmix64 (Steele, Lea, Flood 2014), the generator shared with bench/python_baselines.py.
+class SplitMix64 {
+ public:
+  explicit SplitMix64(std::uint64_t seed) : m_state(seed) {}
+  std::uint64_t next() noexcept {
+    std::uint64_t z = (m_state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+  /// Uniform on [-1, 1): the top 53 bits.
+  double uniform() noexcept { return static_cast<double>(next() >> 11) * 0x1.0p-52 - 1.0; }
+
+ private:
+  std::uint64_t m_state;
+};
+
+/// `samples` random regressors of n parameters (columns, uniform on [-1, 1)) and targets
+/// y = phi' theta_true + 0.01 e: one generator, seeded with 12345 + n, draws theta_true (n values),
+/// then per sample the n regressor entries and e (uniform on [-1, 1)). The RLS benchmarks cycle
+/// through them.
+struct Regressors {
+  Eigen::MatrixXd phi;  // n x samples
+  Eigen::VectorXd y;
+};
+
+inline Regressors regressors(Eigen::Index n, Eigen::Index samples = 1024) {
+  SplitMix64 generator(12345u + static_cast<std::uint64_t>(n));
+  Eigen::VectorXd theta(n);
+  for (Eigen::Index i = 0; i < n; ++i) theta[i] = generator.uniform();
+  Regressors r{Eigen::MatrixXd(n, samples), Eigen::VectorXd(samples)};
+  for (Eigen::Index k = 0; k < samples; ++k) {
+    for (Eigen::Index i = 0; i < n; ++i) r.phi(i, k) = generator.uniform();
+    r.y[k] = r.phi.col(k).dot(theta) + 0.01 * generator.uniform();
+  }
+  return r;
+}
+
+/// Settings shared by every RLS benchmark and the Python baselines: forgetting factor and P(0).
+constexpr double kLambda = 0.99;
+constexpr double kP0 = 1e3;
+
+}  // namespace bonl_bench

@@ -1,0 +1,310 @@
+"""Merges the benchmark results (run by bench/run) into one table, checks the targets, writes JSON.
+
+Inputs: Google Benchmark JSON of bonl_bench and bonl_bench_plant, and the JSON printed by
+bench/python_baselines.py. Prints the tables (Markdown) to stdout; --json FILE writes the flat
+numbers; --results-md FILE writes them with the machine's description (bench/RESULTS.md).
+
+C++ times are Google Benchmark's CPU time per iteration (the median over repetitions when there are
+several), which leaves out the time the process was preempted; the plant's real-time factor is
+wall-clock. Python times are the best wall time of several repeats.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import math
+import platform
+import subprocess
+import sys
+
+PHW_PARAMS = 14
+MODELS = (("arx", "ARX", "arx_update_ns"), ("hammerstein", "Hammerstein", "hammerstein_update_ns"),
+          ("hw", "H-W", "hw_update_ns"), ("phw", "P-H-W", "phw_update_ns"))
+
+
+def load_gbench(path: str) -> tuple[dict, dict]:
+    """{name: entry} with the median aggregate when the run had repetitions, and the context."""
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    entries: dict = {}
+    medians: dict = {}
+    for b in data["benchmarks"]:
+        name = b["run_name"] if "run_name" in b else b["name"]
+        if b.get("run_type") == "aggregate":
+            if b.get("aggregate_name") == "median":
+                medians[name] = b
+        elif b.get("error_occurred"):
+            entries[name] = b
+        else:
+            entries.setdefault(name, b)
+    entries.update(medians)
+    return entries, data["context"]
+
+
+def ns(entry: dict, key: str = "cpu_time") -> float:
+    scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[entry.get("time_unit", "ns")]
+    return entry[key] * scale
+
+
+def fmt_ns(value: float | None) -> str:
+    if value is None or not math.isfinite(value):
+        return "-"
+    return f"{value:,.0f}" if value >= 1000 else f"{value:.1f}"
+
+
+def fmt_ratio(baseline: float | None, ours: float | None) -> str:
+    if not baseline or not ours:
+        return "-"
+    ratio = baseline / ours
+    return f"{ratio:,.0f}x" if ratio >= 100 else (f"{ratio:.1f}x" if ratio >= 1 else f"{ratio:.2f}x")
+
+
+def table(header: list[str], rows: list[list[str]], align: str | None = None) -> str:
+    align = align or "l" + "r" * (len(header) - 1)
+    widths = [max(len(str(r[i])) for r in [header] + rows) for i in range(len(header))]
+
+    def line(cells: list[str]) -> str:
+        out = []
+        for cell, width, a in zip(cells, widths, align):
+            out.append(str(cell).rjust(width) if a == "r" else str(cell).ljust(width))
+        return "| " + " | ".join(out) + " |"
+
+    sep = "|" + "|".join(("-" * (w + 1) + ":") if a == "r" else ("-" * (w + 2)) for w, a in zip(widths, align)) + "|"
+    return "\n".join([line(header), sep] + [line(r) for r in rows])
+
+
+def sh(*cmd: str) -> str:
+    try:
+        return subprocess.run(cmd, capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+
+
+def machine(compiler: str, context: dict) -> dict:
+    model = ""
+    for line in sh("lscpu").splitlines():
+        if line.startswith("Model name:"):
+            model = line.split(":", 1)[1].strip()
+    return {
+        "cpu": model or platform.processor(),
+        "cores": context.get("num_cpus"),
+        "mhz": context.get("mhz_per_cpu"),
+        "compiler": compiler,
+        "os": platform.platform(),
+        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        "git": sh("git", "rev-parse", "--short", "HEAD") + (" (with local changes)" if sh("git", "status", "--porcelain") else ""),
+        "load_avg_at_start": context.get("load_avg"),
+    }
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--cpp", required=True, help="Google Benchmark JSON of bonl_bench")
+    parser.add_argument("--plant", required=True, help="Google Benchmark JSON of bonl_bench_plant")
+    parser.add_argument("--python", required=True, help="JSON of bench/python_baselines.py")
+    parser.add_argument("--json", help="write the flat results here")
+    parser.add_argument("--results-md", help="write the tables and the machine here (bench/RESULTS.md)")
+    parser.add_argument("--command", default="bench/run", help="the command that produced the results")
+    parser.add_argument("--compiler", default="", help="compiler and version")
+    parser.add_argument("--flags", default="", help="build flags")
+    parser.add_argument("--elapsed", type=float, help="seconds bench/run took up to the report")
+    args = parser.parse_args()
+
+    cpp, context = load_gbench(args.cpp)
+    plant, _ = load_gbench(args.plant)
+    with open(args.python, encoding="utf-8") as f:
+        py = json.load(f)
+
+    def cpp_ns(name: str) -> float | None:
+        entry = cpp.get(name)
+        if entry is None or entry.get("error_occurred"):
+            return None
+        return ns(entry)
+
+    textbook = {int(name.rsplit("/", 1)[1]): cpp_ns(name) for name in cpp if name.startswith("textbook_rls/")}
+    padasip = {int(n): v for n, v in py["rls"]["padasip"].items()}
+    numpy_rls = {int(n): v for n, v in py["rls"]["numpy"].items()}
+
+    flat: dict = {}
+    notes: list[str] = []
+
+    # --- Estimator updates -------------------------------------------------------------------------
+    rows = []
+    for sizes in ("fixed", "dynamic"):
+        for scalar in ("double", "float"):
+            for key, label, json_key in MODELS:
+                for suffix, method in (("", "default"), ("/paper", "paper")):
+                    name = f"update/{key}/{sizes}/{scalar}{suffix}"
+                    if name not in cpp:
+                        continue
+                    entry = cpp[name]
+                    value = cpp_ns(name)
+                    n = int(entry.get("params", 0))
+                    updated = entry.get("updated", 1.0)
+                    rows.append([f"{label} update, {sizes}, {scalar}, {method} method", str(n), fmt_ns(value),
+                                 fmt_ratio(textbook.get(n), value), fmt_ratio(padasip.get(n), value),
+                                 f"{updated:.2f}"])
+                    flat[f"{key}_update_{sizes}_{scalar}{'_paper' if method == 'paper' else ''}_ns"] = value
+                    if sizes == "fixed" and scalar == "double" and method == "default":
+                        flat[json_key] = value
+                    if updated < 0.5:
+                        notes.append(f"{name}: only {updated:.0%} of the samples ran the RLS step; its time is "
+                                     "mostly that of a refused update.")
+    update_table = table(["per-sample estimator update (C++)", "params", "ns/sample", "vs textbook RLS",
+                          "vs padasip", "updated"], rows)
+
+    # --- Free-run simulation -----------------------------------------------------------------------
+    rows = []
+    for sizes in ("fixed", "dynamic"):
+        for key, label, _ in MODELS:
+            name = f"simulate/{key}/{sizes}/double"
+            if name in cpp:
+                value = cpp[name]["per_sample"] * 1e9
+                rows.append([f"{label} free-run simulation, {sizes}, double", fmt_ns(value)])
+                flat[f"{key}_simulate_{sizes}_ns"] = value
+    simulate_table = table(["free-run simulation (C++, 4096 samples)", "ns/sample"], rows)
+
+    # --- Baselines and Python ----------------------------------------------------------------------
+    bonl_py = py["bonl"]
+    flat["naive_rls_ns"] = textbook.get(PHW_PARAMS)
+    flat["naive_rls_literal_ns"] = cpp_ns(f"textbook_rls_literal/{PHW_PARAMS}")
+    flat["padasip_rls_ns"] = padasip.get(PHW_PARAMS)
+    flat["numpy_rls_ns"] = numpy_rls.get(PHW_PARAMS)
+    flat["rls_core_fixed_14_ns"] = cpp_ns(f"rls/fixed/{PHW_PARAMS}")
+    flat["rls_core_dynamic_14_ns"] = cpp_ns(f"rls/dynamic/{PHW_PARAMS}")
+    flat["python_identify_5000_ms"] = bonl_py["identify_paper_5000_ms"]
+    flat["python_identify_recursive_default_5000_ms"] = bonl_py["identify_default_refine0_5000_ms"]
+    flat["python_identify_default_5000_ms"] = bonl_py["identify_default_5000_ms"]
+    flat["python_estimator_update_call_ns"] = bonl_py["estimator_update_call_ns"]
+    flat["python_estimator_update_call_numpy_scalars_ns"] = bonl_py["estimator_update_call_numpy_scalars_ns"]
+    phw = flat.get("phw_update_ns")
+    tb, pa = flat["naive_rls_ns"], flat["padasip_rls_ns"]
+
+    def row(label: str, value: float | None, vs: bool = True) -> list[str]:
+        return [label, fmt_ns(value), fmt_ratio(tb, value) if vs else "-", fmt_ratio(pa, value) if vs else "-"]
+
+    rows = [
+        row("P-H-W update (bonl, fixed, double, default method)", phw),
+        row("bonl::Rls<double, 14> alone (fixed size)", flat["rls_core_fixed_14_ns"]),
+        row("bonl::Rls<double> alone (run-time size 14)", flat["rls_core_dynamic_14_ns"]),
+        row("textbook RLS in Eigen, dynamic, O(n^2) P update", tb),
+        row("textbook RLS in Eigen, literal `P - K*phi'*P` (O(n^3))", flat["naive_rls_literal_ns"]),
+        row("padasip FilterRLS.run (Python)", pa),
+        row("numpy RLS loop (Python)", flat["numpy_rls_ns"]),
+        row("bonl.Estimator.update from a Python loop, per call (Python floats)",
+            flat["python_estimator_update_call_ns"]),
+        row("bonl.Estimator.update from a Python loop, per call (numpy scalars)",
+            flat["python_estimator_update_call_numpy_scalars_ns"]),
+        row("bonl.identify, recursive (paper method / refine_iterations=0), per sample",
+            flat["python_identify_5000_ms"] * 1e6 / 5000),
+        row("bonl.identify, recursive (default method, refine_iterations=0), per sample",
+            flat["python_identify_recursive_default_5000_ms"] * 1e6 / 5000),
+        row("bonl.identify, default (recursive + Levenberg-Marquardt), per sample",
+            flat["python_identify_default_5000_ms"] * 1e6 / 5000),
+    ]
+    baseline_table = table([f"at {PHW_PARAMS} parameters (P-H-W)", "ns/sample", "vs textbook RLS", "vs padasip"], rows)
+
+    whole = [
+        ["bonl.identify, P-H-W, 5000 samples, recursive (paper method / refine_iterations=0)",
+         f"{flat['python_identify_5000_ms']:.3f} ms"],
+        ["bonl.identify, P-H-W, 5000 samples, recursive (default method, refine_iterations=0)",
+         f"{flat['python_identify_recursive_default_5000_ms']:.3f} ms"],
+        ["bonl.identify, P-H-W, 5000 samples, default (recursive + LM refinement)",
+         f"{flat['python_identify_default_5000_ms']:.1f} ms"],
+    ]
+    plant_entry = next(iter(plant.values()))
+    rtf = plant_entry.get("realtime_factor")
+    flat["plant_realtime_factor"] = rtf
+    flat["plant_simulate_50s_ms"] = ns(plant_entry, "real_time") / 1e6
+    flat["plant_cvode_steps"] = plant_entry.get("steps")
+    whole.append(["plant: bonl::plant::simulate, paper multi-sine, 50 s simulated",
+                  f"{flat['plant_simulate_50s_ms']:.1f} ms wall, real-time factor {rtf:,.0f}, "
+                  f"{flat['plant_cvode_steps']:,.0f} CVODE steps"])
+    whole_table = table(["whole record", "time"], whole, "ll")
+
+    # --- RLS sweep ---------------------------------------------------------------------------------
+    rows = []
+    sweep = {}
+    for n in sorted(textbook):
+        fixed, dynamic = cpp_ns(f"rls/fixed/{n}"), cpp_ns(f"rls/dynamic/{n}")
+        sweep[str(n)] = {"bonl_fixed": fixed, "bonl_dynamic": dynamic, "textbook": textbook[n],
+                         "padasip": padasip.get(n), "numpy": numpy_rls.get(n)}
+        rows.append([str(n), fmt_ns(fixed), fmt_ns(dynamic), fmt_ns(textbook[n]), fmt_ns(padasip.get(n)),
+                     fmt_ns(numpy_rls.get(n)), f"{fixed / n**2:.3f}" if fixed else "-",
+                     fmt_ratio(padasip.get(n), fixed)])
+    flat["rls_sweep_ns"] = sweep
+    sweep_table = table(["n", "Rls<double, n>", "Rls<double> (run-time n)", "textbook Eigen", "padasip", "numpy",
+                         "fixed ns/n^2", "fixed vs padasip"], rows)
+
+    # --- Targets -----------------------------------------------------------------------------------
+    speedup = pa / phw if (pa and phw) else None
+    flat["phw_vs_padasip"] = speedup
+    flat["phw_vs_textbook"] = tb / phw if (tb and phw) else None
+    targets = [
+        ("P-H-W update (fixed, double)", phw, "<= 60 ns", phw is not None and phw <= 60, f"{phw:.1f} ns"),
+        ("P-H-W update vs padasip at 14 parameters", speedup, ">= 200x", speedup is not None and speedup >= 200,
+         f"{speedup:,.0f}x" if speedup else "-"),
+        ("Python identify, 5000 samples (paper method)", flat["python_identify_5000_ms"], "<= 2 ms",
+         flat["python_identify_5000_ms"] <= 2.0, f"{flat['python_identify_5000_ms']:.3f} ms"),
+        ("plant real-time factor", rtf, ">= 1000", rtf is not None and rtf >= 1000, f"{rtf:,.0f}"),
+    ]
+    flat["targets"] = {name: {"value": value, "target": target, "met": bool(met)}
+                       for name, value, target, met, _ in targets}
+    target_table = table(["target", "measured", "required", "met"],
+                         [[name, shown, target, "yes" if met else "NO"] for name, _, target, met, shown in targets],
+                         "lrrl")
+
+    info = machine(args.compiler, context)
+    info["flags"] = args.flags
+    flat["machine"] = info
+    flat["command"] = args.command
+    if args.elapsed is not None:
+        flat["elapsed_s"] = args.elapsed
+
+    sections = [
+        ("Targets", target_table),
+        ("Per-sample estimator update", update_table),
+        ("Baselines at the P-H-W parameter count", baseline_table),
+        ("Whole record", whole_table),
+        ("Free-run simulation", simulate_table),
+        ("RLS core against the baselines, by parameter count (ns per sample)", sweep_table),
+    ]
+    legend = (
+        "`vs textbook RLS` and `vs padasip`: the baseline's time divided by this row's time, at the same "
+        "parameter count (how many times faster this row is). `updated`: fraction of the samples that ran the "
+        "RLS step (the P-H-W default method skips samples inside the backlash gap). C++: CPU time per sample "
+        "(median of repetitions); Python: best wall time of several repeats. Same random regressors, "
+        f"forgetting factor 0.99 and P(0) = 1e3 I for every RLS baseline; float estimators use P(0) = 1e4 I."
+    )
+    text = "\n\n".join(f"### {title}\n\n{body}" for title, body in sections) + "\n\n" + legend + "\n"
+    if notes:
+        text += "\n" + "\n".join(f"- {n}" for n in notes) + "\n"
+    print(text)
+
+    if args.json:
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(flat, f, indent=2)
+            f.write("\n")
+    if args.results_md:
+        header = [
+            "# Benchmark results",
+            "",
+            f"Written by `{args.command}` on {info['date']} (commit {info['git']}).",
+            "",
+            f"- CPU: {info['cpu']}, {info['cores']} cores ({info['mhz']} MHz as Google Benchmark reads it)",
+            f"- compiler: {info['compiler']}; flags: {info['flags']}",
+            f"- OS: {info['os']}; Python {py['python']}, numpy {py['numpy_version']}, "
+            f"padasip {py['rls']['padasip_version']}",
+            f"- load average at the start of the C++ run: {info['load_avg_at_start']}",
+        ]
+        if args.elapsed is not None:
+            header.append(f"- bench/run took {args.elapsed:.0f} s up to this report (build included)")
+        with open(args.results_md, "w", encoding="utf-8") as f:
+            f.write("\n".join(header) + "\n\n" + text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

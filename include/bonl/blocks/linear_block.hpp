@@ -41,15 +41,11 @@ class LinearBlock {
 
   template <typename A>
   void set_a(const Eigen::MatrixBase<A>& a) {
-    detail::require_size(a, m_a.size(), "a");
-    detail::require_finite(a, "a");
-    m_a = a;
+    detail::assign_checked(m_a, a, "a");
   }
   template <typename B>
   void set_b(const Eigen::MatrixBase<B>& b) {
-    detail::require_size(b, m_b.size(), "b");
-    detail::require_finite(b, "b");
-    m_b = b;
+    detail::assign_checked(m_b, b, "b");
   }
 
   /// Back to rest.

@@ -28,9 +28,7 @@ class OutputPolynomial {
   const Coeffs& q() const noexcept { return m_q; }
   template <typename Q>
   void set_q(const Eigen::MatrixBase<Q>& q) {
-    detail::require_size(q, m_q.size(), "q");
-    detail::require_finite(q, "q");
-    m_q = q;
+    detail::assign_checked(m_q, q, "q");
   }
 
   Scalar operator()(Scalar x) const noexcept { return evaluate(m_q, x); }

@@ -47,15 +47,11 @@ class TwoSegmentPolynomial {
 
   template <typename F>
   void set_f(const Eigen::MatrixBase<F>& f) {
-    detail::require_size(f, m_f.size(), "f");
-    detail::require_finite(f, "f");
-    m_f = f;
+    detail::assign_checked(m_f, f, "f");
   }
   template <typename P>
   void set_p(const Eigen::MatrixBase<P>& p) {
-    detail::require_size(p, m_p.size(), "p");
-    detail::require_finite(p, "p");
-    m_p = p;
+    detail::assign_checked(m_p, p, "p");
   }
 
   Scalar operator()(Scalar u) const noexcept { return evaluate(m_f, m_p, u); }

@@ -43,9 +43,7 @@ class HammersteinFront {
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
-    require_size(theta, m_theta.size(), "theta");
-    require_finite(theta, "theta");
-    m_theta = theta;
+    assign_checked(m_theta, theta, "theta");
   }
 
   VectorX f() const { return m_theta.segment(0, m_r + 1); }
@@ -61,15 +59,11 @@ class HammersteinFront {
 
   template <typename T>
   void set_f(const Eigen::MatrixBase<T>& f) {
-    require_size(f, m_r + 1, "f");
-    require_finite(f, "f");
-    m_theta.segment(0, m_r + 1) = f;
+    assign_checked(m_theta.segment(0, m_r + 1), f, "f");
   }
   template <typename T>
   void set_p(const Eigen::MatrixBase<T>& p) {
-    require_size(p, m_r + 1, "p");
-    require_finite(p, "p");
-    m_theta.segment(m_r + 1, m_r + 1) = p;
+    assign_checked(m_theta.segment(m_r + 1, m_r + 1), p, "p");
   }
   /// b_0..b_nb with b_0 = 1.
   template <typename T>
@@ -81,9 +75,7 @@ class HammersteinFront {
   }
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
-    require_size(a, m_na, "a");
-    require_finite(a, "a");
-    m_theta.segment(2 * (m_r + 1) + m_nb, m_na) = a;
+    assign_checked(m_theta.segment(2 * (m_r + 1) + m_nb, m_na), a, "a");
   }
 
   InputBlock input_block() const { return InputBlock(f(), p()); }

@@ -41,6 +41,15 @@ void require_size(const Eigen::DenseBase<Derived>& values, Eigen::Index size, co
                                      " entries, got " + std::to_string(values.size()));
 }
 
+/// target = value, after checking that value has target's size and only finite entries. target may
+/// be a block of a larger vector (a segment of theta).
+template <typename Target, typename Value>
+void assign_checked(Target&& target, const Eigen::MatrixBase<Value>& value, const char* name) {
+  require_size(value, target.size(), name);
+  require_finite(value, name);
+  target = value;
+}
+
 template <typename A, typename B>
 void require_same_length(const Eigen::DenseBase<A>& a, const char* a_name, const Eigen::DenseBase<B>& b,
                          const char* b_name) {

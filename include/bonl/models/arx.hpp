@@ -43,23 +43,17 @@ class ARX {
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
-    detail::require_size(theta, m_theta.size(), "theta");
-    detail::require_finite(theta, "theta");
-    m_theta = theta;
+    detail::assign_checked(m_theta, theta, "theta");
   }
   VectorX b() const { return m_theta.head(m_nb + 1); }
   VectorX a() const { return m_theta.tail(m_na); }
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
-    detail::require_size(b, m_nb + 1, "b");
-    detail::require_finite(b, "b");
-    m_theta.head(m_nb + 1) = b;
+    detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
   }
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
-    detail::require_size(a, m_na, "a");
-    detail::require_finite(a, "a");
-    m_theta.tail(m_na) = a;
+    detail::assign_checked(m_theta.tail(m_na), a, "a");
   }
 
   Linear linear_block() const {

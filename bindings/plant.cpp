@@ -542,19 +542,20 @@ py::dict models_dict(const plant::IdentifiedModels& m) {
   return d;
 }
 
-/// The parameters by name, as bonl_demo's --json writes them (plain lists, for Table 1).
-py::dict params_dict(const plant::IdentifiedModels& m) {
-  const auto list = [](const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
+/// The parameters by name as plain lists (Table 1, results.json), taken from each model's own
+/// `params` property, so that the names have one source (bindings/models.cpp).
+py::dict params_dict(const py::dict& models) {
+  const py::object as_array = py::module_::import("numpy").attr("asarray");
   py::dict d;
-  d["ARX"] = py::dict(py::arg("b") = list(m.arx.b()), py::arg("a") = list(m.arx.a()));
-  d["Hammerstein"] = py::dict(py::arg("f") = list(m.hammerstein.f()), py::arg("p") = list(m.hammerstein.p()),
-                              py::arg("b") = list(m.hammerstein.b()), py::arg("a") = list(m.hammerstein.a()));
-  const auto& hw = m.hammerstein_wiener;
-  d["HW"] = py::dict(py::arg("f") = list(hw.f()), py::arg("p") = list(hw.p()), py::arg("b") = list(hw.b()),
-                     py::arg("a") = list(hw.a()), py::arg("q") = list(hw.q()));
-  const auto& phw = m.phw;
-  d["PHW"] = py::dict(py::arg("f") = list(phw.f()), py::arg("p") = list(phw.p()), py::arg("b") = list(phw.b()),
-                      py::arg("a") = list(phw.a()), py::arg("c") = phw.c());
+  for (const auto& [name, model] : models) {
+    if (model.is_none()) {
+      d[name] = py::none();
+      continue;
+    }
+    py::dict params;
+    for (const auto& [key, value] : model.attr("params").cast<py::dict>()) params[key] = as_array(value).attr("tolist")();
+    d[name] = params;
+  }
   return d;
 }
 
@@ -571,7 +572,7 @@ py::dict method_dict(const plant::IdentifiedModels& m) {
   py::dict d;
   d["mse"] = mse_dict(m);
   d["models"] = models_dict(m);
-  d["params"] = params_dict(m);
+  d["params"] = params_dict(d["models"].cast<py::dict>());
   d["simulated"] = simulated_dict(m);
   return d;
 }

@@ -31,3 +31,24 @@ TEMPLATE_TEST_CASE("fixed-size updates allocate nothing", "[allocation]", bonl::
     CHECK(p == p.transpose());
   }
 }
+
+TEST_CASE("updates with recording on, the trace ceiling acting and automatic recovery allocate nothing",
+          "[allocation]") {
+  const auto structure = known_phw();
+  bonl::EstimatorOptions options;
+  options.forgetting = bonl::ForgettingSchedule::constant(0.98);
+  options.recover_after = 2;
+  bonl::Estimator<bonl::PaperPseudoHammersteinWiener> estimator(structure, options);
+  estimator.start_recording(64);
+  const Eigen::VectorXd u = bonl::signals::random_levels(1000, 5, 1.0, 5);
+  const Eigen::VectorXd y = structure.simulate(u);
+  const long before = bonl_test::allocations();
+  for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
+  for (int k = 0; k < 500; ++k) estimator.update(0.0, 0.0);  // wind-up: the ceiling acts
+  for (int k = 0; k < 20; ++k) estimator.update(1e150, 0.0);  // failures and automatic recoveries
+  const long after = bonl_test::allocations();
+  CHECK(after - before == 0);
+  CHECK(estimator.health().forgetting_limited > 0);
+  CHECK(estimator.health().failures > 0);
+  CHECK(estimator.health().recoveries > 0);
+}

@@ -8,9 +8,19 @@
 // generic kernels cost 4x more at the paper's sizes). The paper's (I - K phi') P / lambda is the same
 // matrix in exact arithmetic. An update that would make the denominator or a diagonal entry of P
 // non-positive, or a number non-finite, is refused and leaves the state untouched.
+//
+// Bounded covariance: with lambda < 1 and poor excitation, P grows by 1/lambda per sample in every
+// direction the data do not reach (covariance wind-up: 0.98^-k overflows after ~35,000 samples).
+// Forgetting is therefore reduced whenever it would lift trace(P) above `max_trace`: the divide by
+// lambda becomes a divide by the largest factor that keeps the trace at the ceiling (never below 1,
+// so P still never grows from the data). Directions that are excited keep being forgotten; the
+// unexcited ones stop growing at the ceiling.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include "../detail/validate.hpp"
 
@@ -38,22 +48,35 @@ class Rls {
   void reset(const Eigen::MatrixBase<T>& theta0, Scalar p0) {
     detail::require_size(theta0, m_theta.size(), "theta0");
     detail::require_finite(theta0, "theta0");
-    detail::require(std::isfinite(p0) && p0 > Scalar(0), "p0 (initial covariance scale) must be finite and > 0");
+    check_p0(p0);
     m_theta = theta0;
-    m_P = Matrix::Identity(m_theta.size(), m_theta.size()) * p0;
+    reset_covariance(p0);
   }
 
-  /// One update with regressor phi, target y and forgetting factor lambda in (0, 1].
+  /// P = p0 I (p0 > 0 and finite), theta kept: a covariance reset.
+  /// Allocation-free when P already has its size (the message is built only when it throws).
+  void reset_covariance(Scalar p0) {
+    check_p0(p0);
+    m_P.setIdentity(m_theta.size(), m_theta.size());
+    m_P *= p0;
+  }
+
+  /// One update with regressor phi, target y and forgetting factor lambda in (0, 1]; forgetting is
+  /// reduced where it would lift trace(P) above max_trace (see the top of this file).
   /// Returns false, with theta and P untouched, when the update is numerically unsafe.
   template <typename Phi>
-  bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda) noexcept {
+  bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda,
+              Scalar max_trace = std::numeric_limits<Scalar>::infinity()) noexcept {
     if constexpr (N_ == Eigen::Dynamic) {
-      return update(phi, target, lambda, m_p_phi, m_next);  // preallocated: no allocation per update
+      return update(phi, target, lambda, max_trace, m_p_phi, m_next);  // preallocated: no allocation
     } else {
       Vector p_phi, next;  // on the stack; as locals they cannot alias phi, which keeps them in registers
-      return update(phi, target, lambda, p_phi, next);
+      return update(phi, target, lambda, max_trace, p_phi, next);
     }
   }
+
+  /// True when the last accepted update had its forgetting reduced by the trace ceiling.
+  bool forgetting_limited() const noexcept { return m_forgetting_limited; }
 
   const Vector& theta() const noexcept { return m_theta; }
   /// For projections after an update (e.g. a constraint on one parameter).
@@ -63,8 +86,15 @@ class Rls {
   Eigen::Index size() const noexcept { return m_theta.size(); }
 
  private:
+  static void check_p0(Scalar p0) {
+    if (!(std::isfinite(p0) && p0 > Scalar(0))) {
+      throw std::invalid_argument("bonl: p0 (initial covariance scale) must be finite and > 0");
+    }
+  }
+
   template <typename Phi>
-  bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda, Vector& p_phi, Vector& next) noexcept {
+  bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda, Scalar max_trace, Vector& p_phi,
+              Vector& next) noexcept {
     // P phi as a sum of columns: vectorised axpys, no horizontal reductions (faster than Eigen's
     // small fixed-size matrix-vector product at these sizes).
     p_phi = m_P.col(0) * phi[0];
@@ -77,10 +107,23 @@ class Rls {
     if (!next.allFinite()) return false;
     // The new diagonal, P_ii - (P phi)_i^2 / denominator, must stay positive.
     if (!((m_P.diagonal().array() - p_phi.array().square() * inverse) > Scalar(0)).all()) return false;
-    m_theta = next;
+    // Forgetting, decided before anything changes: trace(P - h h') = trace(P) - |h|^2.
     p_phi *= std::sqrt(inverse);
+    Scalar growth = Scalar(1);
+    bool limited = false;
+    if (lambda != Scalar(1)) {
+      growth = Scalar(1) / lambda;
+      const Scalar trace = m_P.trace() - p_phi.squaredNorm();
+      if (trace * growth > max_trace) {
+        growth = std::max(Scalar(1), max_trace / trace);
+        limited = true;
+      }
+      if (!std::isfinite(trace * growth)) return false;  // P would overflow (no ceiling)
+    }
+    m_theta = next;
     m_P.noalias() -= p_phi * p_phi.transpose();
-    if (lambda != Scalar(1)) m_P *= Scalar(1) / lambda;
+    if (growth != Scalar(1)) m_P *= growth;
+    m_forgetting_limited = limited;
     return true;
   }
 
@@ -88,6 +131,7 @@ class Rls {
   Matrix m_P;
   Vector m_next;   // scratch for run-time sizes
   Vector m_p_phi;  // scratch for run-time sizes
+  bool m_forgetting_limited = false;
 };
 
 }  // namespace bonl

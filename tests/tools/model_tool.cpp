@@ -7,6 +7,8 @@
 #include <bonl/bonl.hpp>
 #include <bonl/io/model_json.hpp>
 
+#include "known_systems.hpp"
+
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -37,12 +39,7 @@ int simulate(const std::string& model_path, const std::string& input_path) {
 }
 
 int identify(const std::string& out_path) {
-  bonl::PaperPseudoHammersteinWiener truth(3, 2, 8, 3);
-  truth.set_f((Eigen::VectorXd(4) << 0.002, 0.06, 0.02, -0.01).finished());
-  truth.set_p((Eigen::VectorXd(4) << -0.003, -0.02, -0.03, 0.015).finished());
-  truth.set_b((Eigen::VectorXd(3) << 1.0, 0.5, 0.2).finished());
-  truth.set_a((Eigen::VectorXd(3) << -1.7, 1.04, -0.238).finished());
-  truth.set_c(0.1);
+  const auto truth = bonl_test::known_phw();
   const Eigen::VectorXd u = bonl::signals::random_levels(2000, 5, 1.0, 3);
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 4);
   std::ofstream(out_path) << bonl::io::to_json(bonl::identify(truth, u, y));

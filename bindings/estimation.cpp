@@ -6,6 +6,7 @@
 #include <bonl/estimator.hpp>
 #include <bonl/models.hpp>
 
+#include <cstdint>
 #include <variant>
 
 #include "bindings.hpp"
@@ -39,12 +40,14 @@ bonl::ForgettingSchedule parse_forgetting(const py::object& forgetting) {
 }
 
 bonl::EstimatorOptions estimator_options(const std::string& method, const py::object& forgetting, double p0,
-                                         double c0) {
+                                         double c0, double trace_ceiling = 1.0, Eigen::Index recover_after = 0) {
   bonl::EstimatorOptions options;
   options.method = parse_method(method);
   options.forgetting = parse_forgetting(forgetting);
   options.p0 = p0;
   options.c0 = c0;
+  options.trace_ceiling = trace_ceiling;
+  options.recover_after = recover_after;
   options.validate();
   return options;
 }
@@ -141,6 +144,36 @@ class AnyEstimator {
   void start_pass() {
     std::visit([](auto& estimator) { estimator.start_pass(); }, m_estimator);
   }
+  double last_prediction() const {
+    return std::visit([](const auto& estimator) { return estimator.last_prediction(); }, m_estimator);
+  }
+  bonl::EstimatorHealth health() const {
+    return std::visit([](const auto& estimator) { return estimator.health(); }, m_estimator);
+  }
+  void recover() {
+    std::visit([](auto& estimator) { estimator.recover(); }, m_estimator);
+  }
+  void start_recording(Eigen::Index capacity) {
+    std::visit([&](auto& estimator) { estimator.start_recording(capacity); }, m_estimator);
+  }
+  void stop_recording() {
+    std::visit([](auto& estimator) { estimator.stop_recording(); }, m_estimator);
+  }
+  bool recording() const {
+    return std::visit([](const auto& estimator) { return estimator.recording(); }, m_estimator);
+  }
+  /// {"sample": int64 (k,), "theta": (k, n), "internal": (k,), "status": list of UpdateStatus}
+  py::dict trajectory() const {
+    const auto recorded = std::visit([](const auto& estimator) { return estimator.trajectory(); }, m_estimator);
+    static_assert(sizeof(Eigen::Index) == sizeof(std::int64_t));
+    py::dict out;
+    out["sample"] = py::array_t<std::int64_t>(static_cast<py::ssize_t>(recorded.sample.size()),
+                                               reinterpret_cast<const std::int64_t*>(recorded.sample.data()));
+    out["theta"] = Eigen::MatrixXd(recorded.theta.transpose());
+    out["internal"] = py::array_t<double>(static_cast<py::ssize_t>(recorded.internal.size()), recorded.internal.data());
+    out["status"] = recorded.status;
+    return out;
+  }
 
  private:
   Variant m_estimator;
@@ -149,9 +182,11 @@ class AnyEstimator {
 template <class Model>
 void def_estimator_init(py::class_<AnyEstimator>& cls) {
   cls.def(py::init([](const Model& model, const std::string& method, const py::object& forgetting, double p0,
-                      double c0) { return AnyEstimator(model, estimator_options(method, forgetting, p0, c0)); }),
+                      double c0, double trace_ceiling, Eigen::Index recover_after) {
+            return AnyEstimator(model, estimator_options(method, forgetting, p0, c0, trace_ceiling, recover_after));
+          }),
           py::arg("model"), py::kw_only(), py::arg("method") = "default", py::arg("forgetting") = py::none(),
-          py::arg("p0") = 1e6, py::arg("c0") = 0.01);
+          py::arg("p0") = 1e6, py::arg("c0") = 0.01, py::arg("trace_ceiling") = 1.0, py::arg("recover_after") = 0);
 }
 
 }  // namespace
@@ -164,7 +199,29 @@ void bind_estimation(py::module_& m) {
       .value("rejected_non_finite", bonl::UpdateStatus::RejectedNonFinite,
              "u or y was NaN or infinite; the estimator's state is untouched")
       .value("numerical_failure", bonl::UpdateStatus::NumericalFailure,
-             "the update would have broken the covariance; theta and P kept, diverged is set");
+             "the update would have broken the covariance, or the internal variables left the finite numbers; "
+             "theta and P kept, diverged is set");
+
+  py::class_<bonl::EstimatorHealth>(m, "EstimatorHealth", "What an Estimator's numerical safeguards did since reset().")
+      .def_readonly("diverged", &bonl::EstimatorHealth::diverged,
+                    "bool: a numerical failure happened (cleared by recover() and reset())")
+      .def_readonly("failures", &bonl::EstimatorHealth::failures, "int: updates refused for numerical reasons")
+      .def_readonly("consecutive_failures", &bonl::EstimatorHealth::consecutive_failures,
+                    "int: refused in a row, up to the last update")
+      .def_readonly("forgetting_limited", &bonl::EstimatorHealth::forgetting_limited,
+                    "int: updates whose forgetting the trace ceiling reduced")
+      .def_readonly("recoveries", &bonl::EstimatorHealth::recoveries,
+                    "int: automatic covariance resets (recover_after)")
+      .def_readonly("internal_restarts", &bonl::EstimatorHealth::internal_restarts,
+                    "int: internal variables restarted because they became non-finite")
+      .def("__repr__", [](const bonl::EstimatorHealth& h) {
+        return "EstimatorHealth(diverged=" + std::string(h.diverged ? "True" : "False") +
+               ", failures=" + std::to_string(h.failures) +
+               ", consecutive_failures=" + std::to_string(h.consecutive_failures) +
+               ", forgetting_limited=" + std::to_string(h.forgetting_limited) +
+               ", recoveries=" + std::to_string(h.recoveries) +
+               ", internal_restarts=" + std::to_string(h.internal_restarts) + ")";
+      });
 
   def_identify<bonl::ARXd>(m);
   def_identify<bonl::Hammersteind>(m);
@@ -182,6 +239,12 @@ forgetting : float or tuple, optional
     As for identify; default the paper's schedule.
 p0 : float, default 1e6
 c0 : float, default 0.01
+trace_ceiling : float, default 1.0
+    trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
+    would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off.
+recover_after : int, default 0
+    After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
+    0: never (check ``diverged`` and call ``recover()``).
 )doc");
   def_estimator_init<bonl::ARXd>(estimator);
   def_estimator_init<bonl::Hammersteind>(estimator);
@@ -210,7 +273,26 @@ UpdateStatus
           [](AnyEstimator& self, const py::object& theta) { self.reset_to(to_vector(theta, "theta")); },
           py::arg("theta"), "Restart from a given estimate (a warm start), P = p0 I.")
       .def("start_pass", &AnyEstimator::start_pass,
-           "A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.");
+           "A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.")
+      .def_property_readonly("last_prediction", &AnyEstimator::last_prediction,
+                             "float: the one-step prediction of the last sample's y, made before the update "
+                             "(y - last_prediction is the innovation).")
+      .def_property_readonly("health", &AnyEstimator::health,
+                             "EstimatorHealth: what the numerical safeguards did since reset().")
+      .def("recover", &AnyEstimator::recover,
+           "Leave the diverged state: P = p0 I, theta kept (a covariance reset); the counters in health stay.")
+      .def("start_recording", &AnyEstimator::start_recording, py::arg("capacity"),
+           "Record theta, the internal variable and the status of the next updates, keeping the newest `capacity`.")
+      .def("stop_recording", &AnyEstimator::stop_recording, "Stop recording and free the buffer.")
+      .def_property_readonly("recording", &AnyEstimator::recording, "bool: updates are being recorded.")
+      .def("trajectory", &AnyEstimator::trajectory, R"doc(What was recorded, oldest first.
+
+Returns
+-------
+dict
+    ``sample``: int64 array (k,), sample number since reset(); ``theta``: array (k, n), the estimate
+    after each update; ``internal``: array (k,), the internal variable x(k) the update used (NaN for
+    ARX); ``status``: list of UpdateStatus.)doc");
 }
 
 }  // namespace bonl_python

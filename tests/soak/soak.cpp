@@ -12,7 +12,7 @@
 // over the second half of the same phase. Exit status 1 if any check fails or a rich phase does not
 // recover within its first half. Figures are in docs/reliability.md.
 //
-//   bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling] [--seed S]
+//   bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X] [--seed S]
 //             [--method default|paper] [--json FILE]
 
 #include <bonl/bonl.hpp>
@@ -40,7 +40,7 @@ struct Settings {
   long long samples = 100'000'000;
   long long phase_length = 50'000;
   long long check_every = 10'000;
-  bool ceiling = true;
+  double trace_ceiling = bonl::EstimatorOptions{}.trace_ceiling;
   bonl::Method method = bonl::Method::Default;
   unsigned seed = 2026;
   std::string json;
@@ -48,8 +48,8 @@ struct Settings {
 
 [[noreturn]] void usage(const std::string& problem) {
   std::cerr << "bonl_soak: " << problem
-            << "\nusage: bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling] [--seed S]"
-               " [--method default|paper] [--json FILE]\n";
+            << "\nusage: bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X]"
+               " [--seed S] [--method default|paper] [--json FILE]\n";
   std::exit(2);
 }
 
@@ -77,7 +77,15 @@ Settings parse(int argc, char** argv) {
     else if (arg == "--check-every") s.check_every = parse_count(value(), "--check-every");
     else if (arg == "--seed") s.seed = static_cast<unsigned>(parse_count(value(), "--seed"));
     else if (arg == "--json") s.json = value();
-    else if (arg == "--no-ceiling") s.ceiling = false;
+    else if (arg == "--no-ceiling") s.trace_ceiling = std::numeric_limits<double>::infinity();
+    else if (arg == "--trace-ceiling") {
+      const std::string text = value();
+      try {
+        s.trace_ceiling = std::stod(text);
+      } catch (const std::exception&) {
+        usage("--trace-ceiling must be a number, got '" + text + "'");
+      }
+    }
     else if (arg == "--method") {
       const std::string method = value();
       if (method == "default") s.method = bonl::Method::Default;
@@ -175,7 +183,13 @@ int main(int argc, char** argv) {
   bonl::EstimatorOptions options;
   options.forgetting = bonl::ForgettingSchedule::constant(0.98);
   options.method = settings.method;
-  if (!settings.ceiling) options.trace_ceiling = std::numeric_limits<double>::infinity();
+  options.trace_ceiling = settings.trace_ceiling;
+  try {
+    options.validate();
+  } catch (const std::invalid_argument& error) {
+    usage(error.what());
+  }
+  const bool ceiling = std::isfinite(options.trace_ceiling);
   bonl::Estimator<Model> estimator(truth, options);
   const double trace_limit = options.trace_ceiling * options.p0 * double(truth.num_params());
 
@@ -264,7 +278,7 @@ int main(int argc, char** argv) {
                                         .eigenvalues()
                                         .minCoeff();
       if (!(min_eigenvalue > 0.0)) report_problem(k, "P is not positive definite: " + std::to_string(min_eigenvalue));
-      if (settings.ceiling && p.trace() > trace_limit * (1.0 + 1e-12)) report_problem(k, "trace(P) above the ceiling");
+      if (ceiling && p.trace() > trace_limit * (1.0 + 1e-12)) report_problem(k, "trace(P) above the ceiling");
       largest_p = std::max(largest_p, p.cwiseAbs().maxCoeff());
       largest_trace = std::max(largest_trace, p.trace());
       smallest_eigenvalue = std::min(smallest_eigenvalue, min_eigenvalue);
@@ -296,8 +310,8 @@ int main(int argc, char** argv) {
   };
   const bonl::EstimatorHealth& health = estimator.health();
 
-  std::printf("bonl_soak: %lld samples of P-H-W online identification, %s method, lambda = 0.98, trace ceiling %s\n",
-              settings.samples, bonl::to_string(settings.method), settings.ceiling ? "on" : "OFF");
+  std::printf("bonl_soak: %lld samples of P-H-W online identification, %s method, lambda = 0.98, trace ceiling %g\n",
+              settings.samples, bonl::to_string(settings.method), options.trace_ceiling);
   std::printf("  phases of %lld samples: rich, constant, rich, zero; %lld outliers of +-%.2f\n",
               settings.phase_length, outliers, outlier_size);
   std::printf("  wall time %.1f s (%.0f ns per sample, data generation and checks included)\n", seconds,
@@ -320,7 +334,7 @@ int main(int argc, char** argv) {
     out.precision(6);
     out << "{\"samples\": " << settings.samples << ", \"method\": \"" << bonl::to_string(settings.method)
         << "\", \"phase_length\": " << settings.phase_length
-        << ", \"ceiling\": " << (settings.ceiling ? "true" : "false") << ", \"seconds\": " << seconds
+        << ", \"trace_ceiling\": " << (ceiling ? std::to_string(options.trace_ceiling) : std::string("null")) << ", \"seconds\": " << seconds
         << ", \"outliers\": " << outliers << ", \"largest_abs_p\": " << largest_p
         << ", \"largest_trace\": " << largest_trace << ", \"smallest_eigenvalue\": " << smallest_eigenvalue
         << ", \"largest_abs_theta\": " << largest_theta << ", \"failures\": " << failures

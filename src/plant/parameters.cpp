@@ -120,6 +120,22 @@ void Parameters::validate() const {
          "must satisfy retracted_length + stroke < pivot_to_rod_pin + pivot_to_base_pin (" +
              std::to_string(a + b - retracted_length) + " here) so that the linkage closes",
          stroke);
+  // The same in floating point: the gravity force and the joint rate divide by the moment arm, which
+  // rounding can make 0 at an end of the stroke (a triangle closing flat) although the strict
+  // inequalities above hold, e.g. |a - b| = 0 < retracted_length = 1e-300.
+  const double arm_retracted = moment_arm(0.0);
+  const double arm_extended = moment_arm(stroke);
+  if (!(arm_retracted > 0.0 && std::isfinite(arm_retracted) && arm_extended > 0.0 && std::isfinite(arm_extended)))
+    fail("retracted_length",
+         "must leave the linkage a moment arm > 0 over the whole stroke in floating point (at h = 0 it is " +
+             std::to_string(arm_retracted) + " m, at h = stroke " + std::to_string(arm_extended) + " m)",
+         retracted_length);
+  // Piston areas that underflow to 0 or overflow (the pressures are forces divided by them).
+  if (!(head_area() > 0.0 && std::isfinite(head_area())))
+    fail("bore_diameter", "must give a head area > 0 and finite in floating point", bore_diameter);
+  if (!(annulus_area() > 0.0 && std::isfinite(annulus_area())))
+    fail("rod_diameter", "must give an annulus area > 0 and finite in floating point (bore_diameter " +
+                             std::to_string(bore_diameter) + ")", rod_diameter);
 }
 
 double Parameters::head_area() const { return 0.25 * kPi * bore_diameter * bore_diameter; }
@@ -144,8 +160,12 @@ double Parameters::linkage_angle(double h) const {
 }
 
 double Parameters::moment_arm(double h) const {
-  const double l = retracted_length + h;
-  return pivot_to_rod_pin * pivot_to_base_pin * std::sin(linkage_angle(h)) / l;
+  // At h clamped to [0, stroke], as the force model evaluates the geometry (src/plant/model.hpp):
+  // deep in an end stop the piston can pass the range where the linkage closes, where the arm is 0
+  // and the joint rate v / r would be infinite.
+  const double hc = h < 0.0 ? 0.0 : (h > stroke ? stroke : h);
+  const double l = retracted_length + hc;
+  return pivot_to_rod_pin * pivot_to_base_pin * std::sin(linkage_angle(hc)) / l;
 }
 
 }  // namespace bonl::plant

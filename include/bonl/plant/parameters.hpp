@@ -68,7 +68,8 @@ struct Parameters {
   double angle_offset() const { return linkage_angle(0.5 * stroke); }
   /// Joint angle theta = phi(h) - phi0 [rad].
   double joint_angle(double h) const { return linkage_angle(h) - angle_offset(); }
-  /// Moment arm r(h) = a b sin(phi) / l [m], so that dtheta/dt = v / r.
+  /// Moment arm r(h) = a b sin(phi) / l [m], so that dtheta/dt = v / r; the geometry is taken at h
+  /// clamped to [0, stroke], as in the force model (outside only inside an end stop).
   double moment_arm(double h) const;
 };
 

@@ -1,5 +1,7 @@
 # Sourced by scripts/test.sh, scripts/demo.sh and .ci/run: the Debian 12 packages bonl needs.
 BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev nlohmann-json3-dev python3 python3-pip python3-venv)
+# scripts/fuzz.sh only: clang and its runtimes (libclang_rt.fuzzer, asan, ubsan).
+BONL_FUZZ_APT_PACKAGES=(clang-14 libclang-rt-14-dev)
 
 step() { printf '\n==> %s\n' "$*"; }
 
@@ -29,5 +31,23 @@ bonl_ensure_deps() {
   else
     echo "missing packages: ${missing[*]}"
     bonl_apt_install
+  fi
+}
+
+# scripts/fuzz.sh: apt-get update + install of BONL_FUZZ_APT_PACKAGES when dpkg says one is missing.
+bonl_ensure_fuzz_deps() {
+  local missing=() p sudo=()
+  [[ $(id -u) -eq 0 ]] || sudo=(sudo)
+  if ! command -v dpkg-query >/dev/null 2>&1; then
+    step "no dpkg-query (not Debian?): assuming clang-14 and its runtimes are installed"
+    return
+  fi
+  for p in "${BONL_FUZZ_APT_PACKAGES[@]}"; do
+    [[ $(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null) == installed ]] || missing+=("$p")
+  done
+  if ((${#missing[@]} > 0)); then
+    step "apt-get install ${missing[*]}"
+    "${sudo[@]}" apt-get update
+    "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
   fi
 }

@@ -40,7 +40,7 @@ bonl::ForgettingSchedule parse_forgetting(const py::object& forgetting) {
 }
 
 bonl::EstimatorOptions estimator_options(const std::string& method, const py::object& forgetting, double p0,
-                                         double c0, double trace_ceiling = 100.0, Eigen::Index recover_after = 0) {
+                                         double c0, double trace_ceiling = 1.0, Eigen::Index recover_after = 0) {
   bonl::EstimatorOptions options;
   options.method = parse_method(method);
   options.forgetting = parse_forgetting(forgetting);
@@ -186,7 +186,7 @@ void def_estimator_init(py::class_<AnyEstimator>& cls) {
             return AnyEstimator(model, estimator_options(method, forgetting, p0, c0, trace_ceiling, recover_after));
           }),
           py::arg("model"), py::kw_only(), py::arg("method") = "default", py::arg("forgetting") = py::none(),
-          py::arg("p0") = 1e6, py::arg("c0") = 0.01, py::arg("trace_ceiling") = 100.0, py::arg("recover_after") = 0);
+          py::arg("p0") = 1e6, py::arg("c0") = 0.01, py::arg("trace_ceiling") = 1.0, py::arg("recover_after") = 0);
 }
 
 }  // namespace
@@ -239,10 +239,10 @@ forgetting : float or tuple, optional
     As for identify; default the paper's schedule.
 p0 : float, default 1e6
 c0 : float, default 0.01
-trace_ceiling : float, default 100.0
+trace_ceiling : float, default 1.0
     trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
-    would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off.
-    The default never acts with the paper's forgetting schedule.
+    would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
+    (the paper's algorithm exactly as written).
 recover_after : int, default 0
     After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
     0: never (check ``diverged`` and call ``recover()``).

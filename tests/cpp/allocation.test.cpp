@@ -38,7 +38,6 @@ TEST_CASE("updates with recording on, the trace ceiling acting and automatic rec
   bonl::EstimatorOptions options;
   options.forgetting = bonl::ForgettingSchedule::constant(0.98);
   options.recover_after = 2;
-  options.trace_ceiling = 1.0;  // reached within the 500 quiet samples below
   bonl::Estimator<bonl::PaperPseudoHammersteinWiener> estimator(structure, options);
   estimator.start_recording(64);
   const Eigen::VectorXd u = bonl::signals::random_levels(1000, 5, 1.0, 5);

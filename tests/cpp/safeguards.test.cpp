@@ -46,9 +46,9 @@ TEST_CASE("without input the trace ceiling stops covariance wind-up; without the
   const auto p = guarded.covariance();
   CHECK(p.allFinite());
   CHECK(p == p.transpose());
-  CHECK(p.trace() <= 100 * 1e6 * double(n) * (1 + 1e-12));
-  // Limited on every sample once P reached the ceiling (0.98^-k = 100 after ~230 samples).
-  CHECK(guarded.health().forgetting_limited >= quiet - 300);
+  CHECK(p.trace() <= 1e6 * double(n) * (1 + 1e-12));
+  // Limited on every sample except a few where the constant term's direction shrank P first.
+  CHECK(guarded.health().forgetting_limited >= quiet - 20);
   CHECK_FALSE(guarded.diverged());
 
   // Unguarded, forgetting would have overflowed P: the estimator refuses those updates instead.

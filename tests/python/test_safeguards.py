@@ -26,9 +26,9 @@ def test_trace_ceiling_bounds_the_covariance_without_excitation():
     n = p.shape[0]
     assert np.all(np.isfinite(p))
     assert np.array_equal(p, p.T)
-    assert np.trace(p) <= 100 * 1e6 * n * (1 + 1e-12)
+    assert np.trace(p) <= 1e6 * n * (1 + 1e-12)
     assert np.linalg.eigvalsh(p).min() > 0
-    assert guarded.health.forgetting_limited > 39000 - 300  # the first ~230 samples grow P to the ceiling
+    assert guarded.health.forgetting_limited > 39000
     assert not guarded.diverged
     # Without the ceiling forgetting would overflow P; those updates are refused and reported.
     assert unguarded.diverged

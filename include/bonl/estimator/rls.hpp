@@ -26,8 +26,20 @@
 
 namespace bonl {
 
+namespace detail {
+/// Storage size of a fixed-size covariance: rounded up to a multiple of 8 (4 below 5), so that
+/// every column is a whole number of SIMD registers (SSE2 to AVX-512, double and float). At the
+/// paper's 14 parameters Eigen otherwise falls back to 2-wide packets with scalar remainders; the
+/// padding rows and columns stay exactly zero (see Rls::update).
+constexpr int padded_size(int n) { return n == Eigen::Dynamic ? n : (n <= 4 ? 4 : (n + 7) / 8 * 8); }
+}  // namespace detail
+
 template <typename Scalar_ = double, int N_ = Eigen::Dynamic>
 class Rls {
+  static constexpr int kStorage = detail::padded_size(N_);
+  using StorageVector = Eigen::Matrix<Scalar_, kStorage, 1>;
+  using StorageMatrix = Eigen::Matrix<Scalar_, kStorage, kStorage>;
+
  public:
   using Scalar = Scalar_;
   using Vector = Eigen::Matrix<Scalar, N_, 1>;
@@ -39,7 +51,8 @@ class Rls {
     detail::require_matches_template(n, N_, "number of parameters");
     m_theta = Vector::Zero(n);
     m_next = Vector::Zero(n);
-    m_p_phi = Vector::Zero(n);
+    m_p_phi = StorageVector::Zero(storage_size(n));
+    m_P = StorageMatrix::Zero(storage_size(n), storage_size(n));
     reset(m_theta, p0);
   }
 
@@ -57,8 +70,8 @@ class Rls {
   /// Allocation-free when P already has its size (the message is built only when it throws).
   void reset_covariance(Scalar p0) {
     check_p0(p0);
-    m_P.setIdentity(m_theta.size(), m_theta.size());
-    m_P *= p0;
+    m_P.setZero();  // keeps its size: no allocation
+    m_P.diagonal().template head<N_>(size()).setConstant(p0);
   }
 
   /// One update with regressor phi, target y and forgetting factor lambda in (0, 1]; forgetting is
@@ -70,7 +83,8 @@ class Rls {
     if constexpr (N_ == Eigen::Dynamic) {
       return update(phi, target, lambda, max_trace, m_p_phi, m_next);  // preallocated: no allocation
     } else {
-      Vector p_phi, next;  // on the stack; as locals they cannot alias phi, which keeps them in registers
+      StorageVector p_phi;  // on the stack; as locals they cannot alias phi, which keeps them in registers
+      Vector next;
       return update(phi, target, lambda, max_trace, p_phi, next);
     }
   }
@@ -82,7 +96,7 @@ class Rls {
   /// For projections after an update (e.g. a constraint on one parameter).
   Vector& mutable_theta() noexcept { return m_theta; }
   /// The covariance (exactly symmetric).
-  const Matrix& covariance() const noexcept { return m_P; }
+  Matrix covariance() const { return m_P.template topLeftCorner<N_, N_>(size(), size()); }
   Eigen::Index size() const noexcept { return m_theta.size(); }
 
  private:
@@ -92,21 +106,28 @@ class Rls {
     }
   }
 
+  static Eigen::Index storage_size(Eigen::Index n) { return N_ == Eigen::Dynamic ? n : kStorage; }
+
   template <typename Phi>
-  bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda, Scalar max_trace, Vector& p_phi,
-              Vector& next) noexcept {
-    // P phi as a sum of columns: vectorised axpys, no horizontal reductions (faster than Eigen's
-    // small fixed-size matrix-vector product at these sizes).
+  bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda, Scalar max_trace,
+              StorageVector& p_phi, Vector& next) noexcept {
+    const Eigen::Index n = size();
+    // P phi as a sum of columns: vectorised axpys over whole (padded) columns, no horizontal
+    // reductions. The padding rows of P are zero, so p_phi's padding is zero too.
     p_phi = m_P.col(0) * phi[0];
-    for (Eigen::Index j = 1; j < phi.size(); ++j) p_phi += m_P.col(j) * phi[j];
-    const Scalar denominator = lambda + phi.dot(p_phi);
+    for (Eigen::Index j = 1; j < n; ++j) p_phi += m_P.col(j) * phi[j];
+    const auto h = p_phi.template head<N_>(n);
+    const Scalar denominator = lambda + phi.dot(h);
     if (!(denominator > Scalar(0)) || !std::isfinite(denominator)) return false;
     const Scalar inverse = Scalar(1) / denominator;
     const Scalar error = target - phi.dot(m_theta);
-    next = m_theta + (error * inverse) * p_phi;
+    next = m_theta + (error * inverse) * h;
     if (!next.allFinite()) return false;
-    // The new diagonal, P_ii - (P phi)_i^2 / denominator, must stay positive.
-    if (!((m_P.diagonal().array() - p_phi.array().square() * inverse) > Scalar(0)).all()) return false;
+    // The new diagonal, P_ii - (P phi)_i^2 / denominator, must stay positive (a vectorised minimum:
+    // every term is finite here, since next is).
+    if (!((m_P.diagonal().template head<N_>(n).array() - h.array().square() * inverse).minCoeff() > Scalar(0))) {
+      return false;
+    }
     // Forgetting, decided before anything changes: trace(P - h h') = trace(P) - |h|^2.
     p_phi *= std::sqrt(inverse);
     Scalar growth = Scalar(1);
@@ -128,9 +149,9 @@ class Rls {
   }
 
   Vector m_theta;
-  Matrix m_P;
-  Vector m_next;   // scratch for run-time sizes
-  Vector m_p_phi;  // scratch for run-time sizes
+  StorageMatrix m_P;      // P in the top-left n x n corner, zero padding (fixed sizes only)
+  Vector m_next;          // scratch for run-time sizes
+  StorageVector m_p_phi;  // scratch for run-time sizes
   bool m_forgetting_limited = false;
 };
 

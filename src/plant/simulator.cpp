@@ -1,6 +1,7 @@
-// The dipper-joint plant integrated with SUNDIALS CVODE (BDF, Newton, dense direct solver), with
-// the command, the pilot hysteresis, the load and the pin backlash on the command grid
-// (docs/plant.md).
+// The dipper-joint plant integrated with SUNDIALS CVODE (BDF, Newton, dense direct solver, exact
+// Jacobian), with the command, the pilot hysteresis, the load and the pin backlash on the command
+// grid (docs/plant.md). The spool's linear lag is solved exactly on the grid; CVODE integrates the
+// other four states across the grid points and interpolates them there.
 
 #include "bonl/plant/simulator.hpp"
 
@@ -18,6 +19,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bonl/blocks/backlash.hpp"
 #include "model.hpp"
@@ -27,6 +29,7 @@ namespace bonl::plant {
 namespace {
 
 using detail::kHeadPressure;
+using detail::kMechanicalSize;
 using detail::kPosition;
 using detail::kRodPressure;
 using detail::kSpool;
@@ -49,22 +52,62 @@ void require_positive(const char* name, double value) {
   if (!(std::isfinite(value) && value > 0.0)) bad_option(name, "must be > 0 and finite", value);
 }
 
-/// What CVODE's right-hand side sees: the model and the inputs held over the current interval.
+/// What CVODE's right-hand side sees: the model, the load held over the current segment of the
+/// command grid, and the segment's pilot outputs with the spool opening they give. The spool's lag
+/// tau_v dxv/dt = xc - xv is linear and driven only by the held pilot output, so it is solved
+/// exactly, interval by interval, and CVODE integrates the other four states with xv(t) known:
+/// xv(t) = xc_i + (xv_i - xc_i) exp(-(t - t_i) / tau_v) on [t_i, t_{i+1}). xv is continuous, so
+/// CVODE may step across the grid points; it stops only where the load changes.
 struct UserData {
-  explicit UserData(const Parameters& parameters) : model(parameters) {}
+  explicit UserData(const Parameters& parameters, double command_rate)
+      : model(parameters), rate(command_rate), inv_tau(model.inverse_time_constant()) {}
   detail::Model model;
-  double pilot = 0.0;
+  double rate;
+  double inv_tau;
   double load = 0.0;
-  std::string last_error;  ///< CVODE's last error message, for the exception
+  long first = 0;               ///< command-grid index of the segment's start
+  std::vector<double> pilot;    ///< pilot[i]: xc held on [t_{first+i}, t_{first+i+1})
+  std::vector<double> spool;    ///< spool[i]: xv(t_{first+i}), exact (one more entry than pilot)
+  std::vector<double> voltage;  ///< voltage[i]: V(t_{first+i})
+  std::string last_error;       ///< CVODE's last error message, for the exception
+
+  double grid_time(long j) const noexcept { return static_cast<double>(j) / rate; }
+
+  /// xv(t) within the current segment (clamped to it: CVODE never integrates beyond the stop).
+  double spool_at(double t) const noexcept {
+    const auto last = static_cast<long>(pilot.size()) - 1;
+    const double position = std::floor(t * rate) - static_cast<double>(first);
+    const long i = position <= 0.0 ? 0 : (position >= static_cast<double>(last) ? last : static_cast<long>(position));
+    const double xc = pilot[static_cast<std::size_t>(i)];
+    const double x0 = spool[static_cast<std::size_t>(i)];
+    return xc + (x0 - xc) * std::exp(-(t - grid_time(first + i)) * inv_tau);
+  }
 };
 
-int rhs_callback(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
+int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) {
   const auto* data = static_cast<const UserData*>(user_data);
   const double* x = N_VGetArrayPointer_Serial(y);
   double* dx = N_VGetArrayPointer_Serial(ydot);
-  data->model.rhs(x, data->pilot, data->load, dx);
-  for (int i = 0; i < kStateSize; ++i) {
+  data->model.mechanical_rhs(x, data->spool_at(t), data->load, dx);
+  for (int i = 0; i < kMechanicalSize; ++i) {
     if (!std::isfinite(dx[i])) return 1;  // recoverable: CVODE retries with a smaller step
+  }
+  return 0;
+}
+
+/// The exact Jacobian (detail::Model::mechanical_jacobian) in CVODE's dense column-major matrix.
+int jacobian_callback(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix jacobian, void* user_data,
+                      N_Vector /*tmp1*/, N_Vector /*tmp2*/, N_Vector /*tmp3*/) {
+  const auto* data = static_cast<const UserData*>(user_data);
+  const double* x = N_VGetArrayPointer_Serial(y);
+  double jac[kMechanicalSize][kMechanicalSize];
+  data->model.mechanical_jacobian(x, data->spool_at(t), jac);
+  for (int k = 0; k < kMechanicalSize; ++k) {
+    double* column = SUNDenseMatrix_Column(jacobian, k);
+    for (int i = 0; i < kMechanicalSize; ++i) {
+      if (!std::isfinite(jac[i][k])) return 1;
+      column[i] = jac[i][k];
+    }
   }
   return 0;
 }
@@ -193,7 +236,7 @@ Trajectory simulate(const Parameters& parameters, const Command& command, const 
   const long n_grid = n_intervals * per_sample;  // command-grid intervals
   const Eigen::Index n_out = n_intervals + 1;
 
-  UserData data(parameters);
+  UserData data(parameters, rate);
   const detail::Model& model = data.model;
   const double h0 = options.initial_position >= 0.0 ? options.initial_position : 0.5 * parameters.stroke;
   const State s0 = initial_state(parameters, h0);
@@ -203,33 +246,36 @@ Trajectory simulate(const Parameters& parameters, const Command& command, const 
   if (SUNContext_Create(nullptr, &raw_ctx) != 0 || raw_ctx == nullptr)
     throw CvodeError("bonl::plant::simulate: SUNContext_Create failed", 0, 0.0);
   ContextPtr ctx(raw_ctx);
-  VectorPtr y(N_VNew_Serial(kStateSize, ctx.get()));
-  VectorPtr abstol(N_VNew_Serial(kStateSize, ctx.get()));
+  VectorPtr y(N_VNew_Serial(kMechanicalSize, ctx.get()));
+  VectorPtr abstol(N_VNew_Serial(kMechanicalSize, ctx.get()));
   if (!y || !abstol) throw CvodeError("bonl::plant::simulate: N_VNew_Serial failed", 0, 0.0);
+  // Fused vector operations (one loop for CVODE's linear combinations of the Nordsieck history
+  // instead of a chain of pairwise sums); CVODE's own vectors are clones of y and inherit them.
+  if (N_VEnableFusedOps_Serial(y.get(), SUNTRUE) != 0)
+    throw CvodeError("bonl::plant::simulate: N_VEnableFusedOps_Serial failed", 0, 0.0);
   double* x = N_VGetArrayPointer_Serial(y.get());
   x[kPosition] = s0.position;
   x[kVelocity] = s0.velocity;
   x[kHeadPressure] = s0.head_pressure;
   x[kRodPressure] = s0.rod_pressure;
-  x[kSpool] = s0.spool;
   double* atol = N_VGetArrayPointer_Serial(abstol.get());
   const Tolerances& tol = options.tolerances;
   atol[kPosition] = tol.absolute_position;
   atol[kVelocity] = tol.absolute_velocity;
   atol[kHeadPressure] = tol.absolute_pressure;
   atol[kRodPressure] = tol.absolute_pressure;
-  atol[kSpool] = tol.absolute_spool;
 
   CvodePtr mem(CVodeCreate(CV_BDF, ctx.get()));
   if (!mem) throw CvodeError("bonl::plant::simulate: CVodeCreate failed", 0, 0.0);
   check(CVodeSetErrHandlerFn(mem.get(), error_handler, &data), "CVodeSetErrHandlerFn", 0.0, data);
   check(CVodeInit(mem.get(), rhs_callback, 0.0, y.get()), "CVodeInit", 0.0, data);
   check(CVodeSVtolerances(mem.get(), tol.relative, abstol.get()), "CVodeSVtolerances", 0.0, data);
-  MatrixPtr jac(SUNDenseMatrix(kStateSize, kStateSize, ctx.get()));
+  MatrixPtr jac(SUNDenseMatrix(kMechanicalSize, kMechanicalSize, ctx.get()));
   if (!jac) throw CvodeError("bonl::plant::simulate: SUNDenseMatrix failed", 0, 0.0);
   SolverPtr solver(SUNLinSol_Dense(y.get(), jac.get(), ctx.get()));
   if (!solver) throw CvodeError("bonl::plant::simulate: SUNLinSol_Dense failed", 0, 0.0);
   check(CVodeSetLinearSolver(mem.get(), solver.get(), jac.get()), "CVodeSetLinearSolver", 0.0, data);
+  check(CVodeSetJacFn(mem.get(), jacobian_callback), "CVodeSetJacFn", 0.0, data);
   check(CVodeSetUserData(mem.get(), &data), "CVodeSetUserData", 0.0, data);
   check(CVodeSetMaxNumSteps(mem.get(), tol.max_steps_per_interval), "CVodeSetMaxNumSteps", 0.0, data);
 
@@ -243,69 +289,100 @@ Trajectory simulate(const Parameters& parameters, const Command& command, const 
 
   const double hv = parameters.pilot_hysteresis;
   const double half_backlash = 0.5 * parameters.joint_backlash;
-  double pilot = 0.0;
-  double pin = 0.0;
+  // The spool's decay over one command interval, exp(-dt / tau_v).
+  const double decay = std::exp(-1.0 / (rate * parameters.valve_time_constant));
   out.min_position = h0;
   out.max_position = h0;
-
   const double phi0 = parameters.angle_offset();
-  double t = 0.0;
-  for (long j = 0; j <= n_grid; ++j) {
-    const double tj = static_cast<double>(j) / rate;
-    const double h = x[kPosition];
-    const double v = x[kVelocity];
-    if (!std::isfinite(h) || !std::isfinite(v) || !std::isfinite(x[kHeadPressure]) ||
-        !std::isfinite(x[kRodPressure]) || !std::isfinite(x[kSpool]))
-      throw CvodeError("bonl::plant::simulate: the state became non-finite at t = " + number(tj) + " s", 0, tj);
 
-    // Command, pilot hysteresis and load, held over [t_j, t_{j+1}).
-    const double voltage = command(tj);
+  // Command, pilot hysteresis and load at grid point j, held over [t_j, t_{j+1}).
+  double load = 0.0;
+  const auto read_inputs = [&](long j, double previous_pilot, double& voltage, double& pilot) {
+    const double tj = data.grid_time(j);
+    voltage = command(tj);
     if (!std::isfinite(voltage))
       throw std::invalid_argument("bonl::plant::simulate: the command is not finite at t = " + number(tj) +
                                   " s, got " + number(voltage));
     const double opening = commanded_opening(parameters, voltage);
-    pilot = j == 0 ? opening : bonl::Backlash<double>::map(opening, pilot, hv);
-    double load = 0.0;
+    pilot = j == 0 ? opening : bonl::Backlash<double>::map(opening, previous_pilot, hv);
+    load = 0.0;
     if (options.load) {
       load = options.load(tj);
       if (!std::isfinite(load))
         throw std::invalid_argument("bonl::plant::simulate: the load is not finite at t = " + number(tj) +
                                     " s, got " + number(load));
     }
+  };
 
-    // Pin backlash on the joint angle.
+  // The state at grid point j (x as CVODE returned it): pin backlash, stroke range, outputs.
+  double pin = 0.0;
+  const auto record = [&](long j, double voltage, double pilot, double spool) {
+    const double tj = data.grid_time(j);
+    const double h = x[kPosition];
+    const double v = x[kVelocity];
+    if (!std::isfinite(h) || !std::isfinite(v) || !std::isfinite(x[kHeadPressure]) ||
+        !std::isfinite(x[kRodPressure]))
+      throw CvodeError("bonl::plant::simulate: the state became non-finite at t = " + number(tj) + " s", 0, tj);
     const double theta = parameters.linkage_angle(h) - phi0;
     pin = j == 0 ? theta : bonl::Backlash<double>::map(theta, pin, half_backlash);
     out.min_position = std::min(out.min_position, h);
     out.max_position = std::max(out.max_position, h);
     if (h < 0.0 || h > parameters.stroke) out.reached_end_stop = true;
+    if (j % per_sample != 0) return;
+    const Eigen::Index k = j / per_sample;
+    const detail::Flows q = model.flows(x[kHeadPressure], x[kRodPressure], spool);
+    out.time[k] = static_cast<double>(k) * options.sample_time;
+    out.command[k] = voltage;
+    out.input[k] = voltage - parameters.neutral_voltage;
+    out.position[k] = h;
+    out.velocity[k] = v;
+    out.head_pressure[k] = x[kHeadPressure];
+    out.rod_pressure[k] = x[kRodPressure];
+    out.spool[k] = spool;
+    out.pilot[k] = pilot;
+    out.head_flow[k] = q.head;
+    out.rod_flow[k] = q.rod;
+    out.joint_angle[k] = theta;
+    out.joint_rate[k] = v / parameters.moment_arm(h);
+    out.pin_angle[k] = pin;
+  };
 
-    if (j % per_sample == 0) {
-      const Eigen::Index k = j / per_sample;
-      const detail::Flows q = model.flows(x[kHeadPressure], x[kRodPressure], x[kSpool]);
-      out.time[k] = static_cast<double>(k) * options.sample_time;
-      out.command[k] = voltage;
-      out.input[k] = voltage - parameters.neutral_voltage;
-      out.position[k] = h;
-      out.velocity[k] = v;
-      out.head_pressure[k] = x[kHeadPressure];
-      out.rod_pressure[k] = x[kRodPressure];
-      out.spool[k] = x[kSpool];
-      out.pilot[k] = pilot;
-      out.head_flow[k] = q.head;
-      out.rod_flow[k] = q.rod;
-      out.joint_angle[k] = theta;
-      out.joint_rate[k] = v / parameters.moment_arm(h);
-      out.pin_angle[k] = pin;
-    }
-    if (j == n_grid) break;
-
-    data.pilot = pilot;
+  // Segments of the command grid: the inputs of a segment's grid points are read before CVODE
+  // integrates across it, and CVODE stops at its end (a load change, or kMaxSegment intervals to
+  // bound the buffers). Within a segment the pilot output enters only through the exact, continuous
+  // spool opening, so CVODE needs no stop at its jumps.
+  constexpr long kMaxSegment = 4096;
+  double voltage = 0.0;
+  double pilot = 0.0;
+  read_inputs(0, 0.0, voltage, pilot);
+  double spool = s0.spool;
+  record(0, voltage, pilot, spool);
+  double t = 0.0;
+  long j = 0;
+  while (j < n_grid) {
+    data.first = j;
     data.load = load;
-    const double t_next = static_cast<double>(j + 1) / rate;
-    check(CVodeSetStopTime(mem.get(), t_next), "CVodeSetStopTime", t, data);
-    const int flag = CVode(mem.get(), t_next, y.get(), &t, CV_NORMAL);
-    check(flag, "CVode", t, data);
+    data.pilot.assign(1, pilot);
+    data.spool.assign(1, spool);
+    data.voltage.assign(1, voltage);
+    long end = j;
+    while (true) {
+      ++end;
+      spool = pilot + (spool - pilot) * decay;  // xv(t_end), exact
+      read_inputs(end, pilot, voltage, pilot);
+      data.spool.push_back(spool);
+      data.voltage.push_back(voltage);
+      if (end == n_grid || end - j == kMaxSegment || load != data.load) break;
+      data.pilot.push_back(pilot);
+    }
+    check(CVodeSetStopTime(mem.get(), data.grid_time(end)), "CVodeSetStopTime", t, data);
+    for (long i = j + 1; i <= end; ++i) {
+      const double ti = data.grid_time(i);
+      check(CVode(mem.get(), ti, y.get(), &t, CV_NORMAL), "CVode", t, data);
+      const auto local = static_cast<std::size_t>(i - j);
+      record(i, data.voltage[local], i == end ? pilot : data.pilot[local], data.spool[local]);
+    }
+    j = end;
   }
 
   long steps = 0;

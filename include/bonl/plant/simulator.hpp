@@ -1,8 +1,10 @@
 #pragma once
 // The dipper-joint plant integrated by SUNDIALS CVODE (BDF, Newton iteration, dense linear solver).
 // The command voltage is sampled and held on a 1 kHz grid (the controller's rate), where the pilot
-// stage's hysteresis and the pin backlash, both play operators, are evaluated; the integrator is
-// stopped at every grid point so that it never steps across a change of the held command.
+// stage's hysteresis and the pin backlash, both play operators, are evaluated. The held pilot output
+// drives only the spool's linear lag, which is solved exactly interval by interval; the spool
+// opening is therefore continuous and CVODE integrates the other four states (h, v, p1, p2) across
+// the grid points, which it reports by interpolation. It stops where a held load changes.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -21,8 +23,8 @@ struct Tolerances {
   double absolute_position = 1e-8;   ///< h [m]
   double absolute_velocity = 1e-8;   ///< v [m/s]
   double absolute_pressure = 1.0;    ///< p1, p2 [Pa]
-  double absolute_spool = 1e-8;      ///< xv [-]
-  long max_steps_per_interval = 5000;
+  double absolute_spool = 1e-8;      ///< xv [-] (validated; unused: the spool's lag is solved exactly)
+  long max_steps_per_interval = 5000;  ///< CVODE steps per command-grid interval
 };
 
 struct SimulationOptions {

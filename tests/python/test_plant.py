@@ -236,7 +236,9 @@ def test_simulate_releases_the_gil_for_a_cpp_command():
     thread.start()
     try:
         start = time.perf_counter()
-        plant.simulate(excitation.paper_multisine(), duration=50.0)
+        # 500 s of simulated time: long enough (~0.3 s at a real-time factor of ~1500) for the
+        # counting thread to run while the simulation holds no GIL.
+        plant.simulate(excitation.paper_multisine(), duration=500.0)
         end = time.perf_counter()
     finally:
         stop.set()

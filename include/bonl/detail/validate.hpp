@@ -13,9 +13,16 @@ inline void require(bool condition, const std::string& message) {
   if (!condition) throw std::invalid_argument("bonl: " + message);
 }
 
+/// Largest order (na, nb, nk, r, r1, a number of parameters) bonl accepts. Far beyond any
+/// identification problem; it keeps sizes such as nk + nb + 1 or 2 (r + 1) + nb + na from
+/// overflowing, and turns an absurd order into a clear error instead of std::bad_alloc.
+inline constexpr Eigen::Index kMaxOrder = 1000000;
+
 inline void require_order(Eigen::Index value, Eigen::Index minimum, const char* name) {
   require(value >= minimum, std::string(name) + " must be >= " + std::to_string(minimum) + ", got " +
                                 std::to_string(value));
+  require(value <= kMaxOrder, std::string(name) + " must be <= " + std::to_string(kMaxOrder) + ", got " +
+                                  std::to_string(value));
 }
 
 /// A compile-time order, when fixed, must equal the run-time one given to the constructor.

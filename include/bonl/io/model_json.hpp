@@ -26,6 +26,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../detail/validate.hpp"
 #include "../models.hpp"
 #include "../version.hpp"
 
@@ -33,8 +34,9 @@ namespace bonl::io {
 
 /// The model file format version this bonl reads and writes.
 inline constexpr int kModelFormatVersion = 1;
-/// Largest order (na, nb, nk, r) a model file may give; r1 is further limited to 32 by the model.
-inline constexpr std::int64_t kMaxModelOrder = 1000000;
+/// Largest order (na, nb, nk, r) a model file may give, the models' own limit (bonl::detail::kMaxOrder);
+/// r1 is further limited to 32 by the model.
+inline constexpr std::int64_t kMaxModelOrder = bonl::detail::kMaxOrder;
 
 /// Any model a file can hold, at run-time orders (what load_model returns).
 using AnyModel = std::variant<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd>;
@@ -131,6 +133,25 @@ inline std::string show_number(double value) {
   return Json(value).dump();
 }
 
+/// The text with every byte outside printable ASCII written as \xNN: a parser's message quotes the
+/// bytes it stopped at, which need not be valid UTF-8 (and Python could not even decode the message).
+inline std::string printable(const std::string& text) {
+  static const char* const digits = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      out += "\\x";
+      out += digits[byte >> 4];
+      out += digits[byte & 0xf];
+    }
+  }
+  return out;
+}
+
 /// Parses text strictly: no comments, no trailing content, no key given twice in an object.
 inline Json parse(const std::string& text) {
   std::vector<std::vector<std::string>> keys;  // the keys seen so far in each open object
@@ -162,9 +183,9 @@ inline Json parse(const std::string& text) {
   try {
     document = Json::parse(text, check_keys);
   } catch (const nlohmann::json::parse_error& e) {
-    fail(std::string("not valid JSON: ") + e.what());
+    fail("not valid JSON: " + printable(e.what()));
   } catch (const nlohmann::json::out_of_range& e) {  // a number beyond double's range, e.g. 1e400
-    fail(std::string("a number is out of double's range: ") + e.what());
+    fail("a number is out of double's range: " + printable(e.what()));
   }
   if (!duplicate.empty()) fail("key \"" + duplicate + "\" appears more than once in an object");
   return document;
@@ -227,11 +248,13 @@ inline Eigen::Index read_order(const Json& orders, const char* name, std::int64_
                                int fixed) {
   const Json& value = orders[name];
   const std::string key = std::string("orders.") + name;
+  const std::string range = key + " must be between " + std::to_string(minimum) + " and " + std::to_string(maximum);
+  // An integer beyond 64 bits (e.g. 18446744073709551616) reaches here as a floating-point number.
+  if (value.is_number_float() && std::abs(value.get<double>()) >= 9.2e18) fail(range + ", got " + show(value));
   if (!value.is_number_integer()) fail(key + " must be an integer, got " + show(value));
   const bool too_big = value.is_number_unsigned() && value.get<std::uint64_t>() > std::uint64_t(maximum);
   if (too_big || value.get<std::int64_t>() < minimum || value.get<std::int64_t>() > maximum) {
-    fail(key + " must be between " + std::to_string(minimum) + " and " + std::to_string(maximum) + ", got " +
-         show(value));
+    fail(range + ", got " + show(value));
   }
   const auto order = static_cast<Eigen::Index>(value.get<std::int64_t>());
   if (fixed != Eigen::Dynamic && order != fixed) {
@@ -372,7 +395,7 @@ auto guard(F&& f) -> decltype(f()) {
   try {
     return f();
   } catch (const nlohmann::json::exception& e) {
-    fail(e.what());
+    fail(printable(e.what()));
   }
 }
 

@@ -4,6 +4,7 @@
 // switching function h(u) = 1 for u < 0, else 0, and p_l = g_l - f_l.
 
 #include <Eigen/Core>
+#include <string>
 
 #include "../detail/validate.hpp"
 
@@ -34,7 +35,7 @@ class TwoSegmentPolynomial {
   /// f holds f_0..f_r (u >= 0), p holds p_0..p_r = g_l - f_l (added for u < 0).
   template <typename F, typename P>
   TwoSegmentPolynomial(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p)
-      : TwoSegmentPolynomial(f.size() - 1) {
+      : TwoSegmentPolynomial(degree_of(f)) {
     set_f(f);
     set_p(p);
   }
@@ -82,6 +83,14 @@ class TwoSegmentPolynomial {
   }
 
  private:
+  /// The degree that f's length implies, r = f.size() - 1, which must be >= 1.
+  template <typename F>
+  static Eigen::Index degree_of(const Eigen::MatrixBase<F>& f) {
+    detail::require(f.size() >= 2, "f must have at least 2 entries (f_0..f_r, degree r >= 1), got " +
+                                       std::to_string(f.size()));
+    return f.size() - 1;
+  }
+
   Coeffs m_f;
   Coeffs m_p;
 };

@@ -75,7 +75,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     Scalar begin(const Params& theta, Scalar u, Method method, Phi& phi) noexcept {
       m_front.begin(theta, u, method, phi);
       phi[m_last] = Scalar(0);
-      return m_front.internal(theta, phi);
+      return phi.dot(theta);  // = the front's x: the last entry is zero (a fixed-size, vectorised dot)
     }
     Scalar predicted_output(const Params& theta, Scalar x) const noexcept {
       return Backlash<Scalar>::map(x, m_y_prev, std::max(theta[m_last], Scalar(0)));
@@ -108,7 +108,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     }
     template <typename Phi>
     void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
-      const Scalar x_model = m_front.internal(theta, phi);
+      const Scalar x_model = phi.dot(theta) - phi[m_last] * theta[m_last];  // the front's x
       Scalar x_lag = x_model;
       if (method == Method::Default) {
         const Scalar c = std::max(theta[m_last], Scalar(0));

@@ -5,6 +5,7 @@
 // prediction_scores scores the one-step-ahead prediction, reported separately.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 
 #include "detail/validate.hpp"
@@ -26,6 +27,24 @@ void check_pair(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat)
   bonl::detail::require_finite(y, "y");
   bonl::detail::require_finite(yhat, "yhat");
 }
+
+/// v scaled by 2^-exponent, in double. Scaling by a power of two is exact (unless a value becomes
+/// subnormal, which only happens to values negligible next to the largest one).
+template <typename V>
+auto scaled(const Eigen::MatrixBase<V>& v, int exponent) {
+  return v.template cast<double>().unaryExpr([exponent](double x) { return std::ldexp(x, -exponent); });
+}
+
+/// The binary exponent of the largest magnitude in y and yhat (0 if all are zero): dividing by
+/// 2^exponent brings every value into (-1, 1), where sums of squares neither overflow nor underflow.
+template <typename A, typename B>
+int common_exponent(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
+  const double largest = std::max(static_cast<double>(y.cwiseAbs().maxCoeff()),
+                                  static_cast<double>(yhat.cwiseAbs().maxCoeff()));
+  int exponent = 0;
+  if (largest > 0.0) std::frexp(largest, &exponent);
+  return exponent;
+}
 }  // namespace detail
 
 template <typename A, typename B>
@@ -34,18 +53,33 @@ double mse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   return static_cast<double>((y - yhat).squaredNorm()) / static_cast<double>(y.size());
 }
 
+/// sqrt(mse). Where the mean square overflows (errors beyond 1e154) the root is computed from
+/// scaled values, so that a representable RMSE is returned as a number, not infinity.
 template <typename A, typename B>
 double rmse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
-  return std::sqrt(mse(y, yhat));
+  const double mean_square = mse(y, yhat);
+  if (std::isfinite(mean_square)) return std::sqrt(mean_square);
+  const int exponent = detail::common_exponent(y, yhat);
+  const double norm = (detail::scaled(y, exponent) - detail::scaled(yhat, exponent)).norm();
+  return std::ldexp(norm / std::sqrt(static_cast<double>(y.size())), exponent);
 }
 
-/// ||y - yhat|| / ||y - mean(y)||. Throws if y is constant (the ratio is undefined).
+/// ||y - yhat|| / ||y - mean(y)||. Throws if y is constant (the ratio is undefined). Computed from
+/// y and yhat scaled by a common power of two, so that data near the ends of double's range
+/// (1e200, 1e-200) neither overflow nor underflow; elsewhere the scaling is exact and the result is
+/// the plain formula's.
 template <typename A, typename B>
 double nrmse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   detail::check_pair(y, yhat);
-  const double spread = static_cast<double>((y.array() - y.mean()).matrix().norm());
+  bonl::detail::require(!(y.array() == y[0]).all(), "y is constant: the normalised error is undefined");
+  const int exponent = detail::common_exponent(y, yhat);
+  // Materialised, so that the norms and the mean are the same vectorised reductions as the plain
+  // formula's on a VectorXd.
+  const Eigen::VectorXd ys = detail::scaled(y, exponent);
+  const Eigen::VectorXd yhats = detail::scaled(yhat, exponent);
+  const double spread = (ys.array() - ys.mean()).matrix().norm();
   bonl::detail::require(spread > 0.0, "y is constant: the normalised error is undefined");
-  return static_cast<double>((y - yhat).norm()) / spread;
+  return (ys - yhats).norm() / spread;
 }
 
 template <typename A, typename B>
@@ -57,7 +91,7 @@ template <typename A, typename B>
 Scores scores(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   Scores s;
   s.mse = mse(y, yhat);
-  s.rmse = std::sqrt(s.mse);
+  s.rmse = rmse(y, yhat);
   s.nrmse = nrmse(y, yhat);
   s.fit_percent = 100.0 * (1.0 - s.nrmse);
   return s;
@@ -66,6 +100,7 @@ Scores scores(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
 /// Free-run simulation of `model` on u, scored against y.
 template <class Model, typename U, typename Y>
 Scores simulation_scores(const Model& model, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) {
+  bonl::detail::require_same_length(u, "u", y, "y");
   return scores(y, model.simulate(u));
 }
 

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 
 #include "detail/validate.hpp"
@@ -15,6 +16,9 @@ inline Eigen::VectorXd random_levels(Eigen::Index n, Eigen::Index hold, double a
   detail::require(n >= 0, "n must be >= 0");
   detail::require(hold >= 1, "hold must be >= 1");
   detail::require(std::isfinite(amplitude) && amplitude >= 0.0, "amplitude must be finite and >= 0");
+  // The distribution draws from a range of width 2 amplitude, which must itself be finite.
+  detail::require(amplitude <= 0.5 * std::numeric_limits<double>::max(),
+                  "amplitude must be <= 8.9e307 (half the largest double)");
   std::mt19937_64 generator(seed);
   std::uniform_real_distribution<double> level(-amplitude, amplitude);
   Eigen::VectorXd u(n);
@@ -52,7 +56,10 @@ inline Eigen::VectorXd multisine(Eigen::Index n, double ts, const Eigen::VectorX
     const double t = static_cast<double>(k) * ts;
     for (Eigen::Index i = 0; i < frequencies_hz.size(); ++i) u[k] += std::sin(two_pi * frequencies_hz[i] * t + phases[i]);
   }
-  return amplitude * u;
+  u *= amplitude;
+  detail::require(u.allFinite(),
+                  "the multi-sine is not finite: amplitude, frequencies_hz or n ts too large for double");
+  return u;
 }
 
 /// The tones of the paper's identification experiment: 0.1, 0.2, 0.4, 0.5 and 1 Hz.
@@ -71,6 +78,7 @@ inline Eigen::VectorXd white_noise(Eigen::Index n, double sigma, std::uint64_t s
   std::normal_distribution<double> normal(0.0, 1.0);
   Eigen::VectorXd e(n);
   for (Eigen::Index k = 0; k < n; ++k) e[k] = sigma * normal(generator);
+  detail::require(e.allFinite(), "sigma is too large: sigma times a standard normal sample overflows");
   return e;
 }
 

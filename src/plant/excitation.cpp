@@ -18,6 +18,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kMaxSmoothRandomTones = 1e6;
 
 /// Throws std::invalid_argument("bonl::plant::excitation::<function>: <message>") unless `condition`.
 void require(bool condition, const char* function, const std::string& message) {
@@ -111,6 +112,13 @@ Command smooth_random(double bandwidth_hz, double rms, double duration, std::uin
           "bandwidth_hz * duration must be >= 1 so that at least one tone k / duration fits under the "
           "bandwidth, got bandwidth_hz = " + std::to_string(bandwidth_hz) + " and duration = " +
               std::to_string(duration));
+  // Each call of the command costs one sine per tone: a limit far above any use (10 Hz over 10^5 s
+  // is 10^6 tones) that turns an absurd product into an error rather than std::bad_alloc or a
+  // simulation that never ends.
+  require(tones <= kMaxSmoothRandomTones, function,
+          "bandwidth_hz * duration must be <= " + std::to_string(static_cast<long>(kMaxSmoothRandomTones)) +
+              " (one sine per tone and call), got bandwidth_hz = " + std::to_string(bandwidth_hz) +
+              " and duration = " + std::to_string(duration));
   const auto n = static_cast<std::size_t>(tones);
   std::mt19937_64 generator(seed);
   std::uniform_real_distribution<double> uniform_phase(0.0, kTwoPi);

@@ -27,6 +27,7 @@ Eigen::VectorXd low_pass(const Eigen::VectorXd& x, double cutoff_hz, double ts) 
 Eigen::VectorXd differentiate(const Eigen::VectorXd& x, double ts) {
   detail::require(std::isfinite(ts) && ts > 0.0, "differentiate: ts must be finite and > 0");
   detail::require(x.size() >= 2, "differentiate: x needs at least 2 samples");
+  detail::require_finite(x, "x");
   const Eigen::Index n = x.size();
   Eigen::VectorXd d(n);
   d[0] = (x[1] - x[0]) / ts;

@@ -22,7 +22,8 @@ Command paper_multisine(double amplitude = 0.4, double offset = 2.5);
 
 /// Smooth random signal band-limited to `bandwidth_hz`: equal sines at k / duration Hz for
 /// k = 1..floor(bandwidth_hz duration) with random phases, scaled so that its RMS over [0, duration]
-/// (one period) is exactly `rms` [V], around `offset`. Throws when bandwidth_hz duration < 1.
+/// (one period) is exactly `rms` [V], around `offset`. Throws when bandwidth_hz duration < 1 or
+/// > 10^6.
 /// Reproducible from the seed with the same standard library (std::uniform_real_distribution is
 /// implementation-defined). One call costs floor(bandwidth_hz duration) sines.
 Command smooth_random(double bandwidth_hz, double rms, double duration, std::uint64_t seed, double offset = 2.5);

@@ -1,7 +1,9 @@
 #pragma once
-// numpy in, numpy out: what every binding file shares. Arrays of any dtype convertible to float64,
-// any stride, and plain sequences are accepted and converted once; anything that is not a 1-D
-// array of numbers is a ValueError that names the argument.
+// numpy in, numpy out: what every binding file shares. Arrays of real numbers (bool, integer or
+// floating dtype), of any stride and byte order, and plain sequences of real numbers are accepted and
+// converted once to float64 (the caller's array is never written to); anything else is a ValueError
+// that names the argument: None, strings, bytes, complex, datetime, structured dtypes, object arrays
+// holding anything but real numbers, masked arrays with masked entries, and arrays that are not 1-D.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -12,23 +14,103 @@
 namespace bonl_python {
 namespace py = pybind11;
 
-inline Eigen::VectorXd to_vector(const py::handle& object, const char* name) {
-  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-  Array array;
+/// The name of an object's type, for messages.
+inline std::string type_name(const py::handle& object) {
+  return py::str(py::type::handle_of(object).attr("__name__"));
+}
+
+/// True for the numpy dtype kinds whose values are real numbers: bool, signed and unsigned integers,
+/// floating point.
+inline bool is_real_kind(char kind) { return kind == 'b' || kind == 'i' || kind == 'u' || kind == 'f'; }
+
+/// numbers.Real: int, float, bool, numpy's real scalars, fractions.Fraction, ... (looked up on each
+/// call: a cached Python object in a C++ static would outlive the interpreter).
+inline py::object real_number_type() { return py::module_::import("numbers").attr("Real"); }
+
+/// `object` as a 1-D, C-contiguous float64 array; a new array unless it is one already.
+/// ValueError, naming `name`, for anything that is not a 1-D array of real numbers.
+inline py::array_t<double, py::array::c_style> to_float64_array(const py::handle& object, const char* name) {
+  const std::string prefix(name);
+  const std::string expected = prefix + " must be a 1-D array of real numbers";
+  if (object.is_none()) throw py::value_error(expected + ", got None");
+  if (py::isinstance<py::str>(object) || py::isinstance<py::bytes>(object)) {
+    throw py::value_error(expected + ", got " + type_name(object));
+  }
+  const py::module_ numpy = py::module_::import("numpy");
+  if (py::isinstance(object, numpy.attr("ma").attr("MaskedArray")) &&
+      numpy.attr("ma").attr("is_masked")(object).cast<bool>()) {
+    throw py::value_error(prefix + " is a masked array with masked entries: fill them first (numpy.ma.filled)");
+  }
+  py::array array;
   try {
-    array = Array::ensure(object);
+    array = py::array::ensure(object);  // numpy.asarray: no copy for an ndarray
   } catch (const py::error_already_set&) {
-    array = Array();
+    array = py::array();
   }
   if (!array) {
     PyErr_Clear();
-    throw py::value_error(std::string(name) + " must be a 1-D array of numbers");
+    throw py::value_error(expected + ", got " + type_name(object));
+  }
+  if (array.ndim() == 0) {  // a number, or an object numpy cannot see as a sequence (dict, set, generator)
+    throw py::value_error(expected + ", got a single " + type_name(object));
   }
   if (array.ndim() != 1) {
-    throw py::value_error(std::string(name) + " must be 1-D, got an array with " + std::to_string(array.ndim()) +
-                          " dimensions");
+    throw py::value_error(prefix + " must be 1-D, got an array with " + std::to_string(array.ndim()) + " dimensions");
   }
+  const char kind = array.dtype().kind();
+  if (kind == 'c') {
+    throw py::value_error(prefix + " must be real, got a complex array (dtype " +
+                          std::string(py::str(array.dtype())) + "): pass its .real or abs() explicitly");
+  }
+  if (kind == 'O') {
+    // numpy would convert str elements by parsing them, None to NaN and complex numbers by dropping
+    // their imaginary part: every element must be a real number instead.
+    const py::object real = real_number_type();
+    for (py::ssize_t i = 0; i < array.shape(0); ++i) {
+      const py::object item = array.attr("__getitem__")(i);
+      if (!py::isinstance(item, real)) {
+        throw py::value_error(prefix + "[" + std::to_string(i) + "] must be a real number, got " + type_name(item));
+      }
+    }
+  } else if (!is_real_kind(kind)) {
+    throw py::value_error(expected + ", got an array of dtype " + std::string(py::str(array.dtype())));
+  }
+  using Float64 = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  Float64 converted;
+  try {
+    converted = Float64::ensure(array);
+  } catch (const py::error_already_set&) {
+    converted = Float64();
+  }
+  if (!converted) {  // e.g. an object array holding an int too large for a double
+    PyErr_Clear();
+    throw py::value_error(expected + " that a float64 can hold");
+  }
+  return converted;
+}
+
+inline Eigen::VectorXd to_vector(const py::handle& object, const char* name) {
+  const auto array = to_float64_array(object, name);
   return Eigen::Map<const Eigen::VectorXd>(array.data(), array.shape(0));
+}
+
+/// A real number (numbers.Real, or a 0-d array of a real dtype) as a double; ValueError naming
+/// `name` for None, strings, complex numbers, sequences and anything else. Finiteness and range are
+/// the C++ side's to check.
+inline double to_scalar(const py::handle& object, const std::string& name) {
+  bool real = py::isinstance(object, real_number_type());
+  if (!real && py::isinstance<py::array>(object)) {
+    const auto array = py::reinterpret_borrow<py::array>(object);
+    real = array.ndim() == 0 && is_real_kind(array.dtype().kind());
+  }
+  if (!real) {
+    throw py::value_error(name + " must be a real number, got " + (object.is_none() ? "None" : type_name(object)));
+  }
+  try {
+    return py::float_(py::reinterpret_borrow<py::object>(object)).cast<double>();
+  } catch (const py::error_already_set& e) {  // an int beyond double's range
+    throw py::value_error(name + " must be a real number that a float64 can hold: " + e.what());
+  }
 }
 
 }  // namespace bonl_python

@@ -240,7 +240,7 @@ c : float, optional
             if (!p.is_none()) model.set_p(to_vector(p, "p"));
             if (!b.is_none()) model.set_b(to_vector(b, "b"));
             if (!a.is_none()) model.set_a(to_vector(a, "a"));
-            if (!c.is_none()) model.set_c(c.cast<double>());
+            if (!c.is_none()) model.set_c(to_scalar(c, "c"));
             return model;
           }),
           py::arg("na"), py::arg("nb"), py::arg("nk"), py::arg("r"), py::kw_only(), py::arg("f") = py::none(),

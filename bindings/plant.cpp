@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "conversions.hpp"
 
 namespace bonl_python {
 
@@ -41,24 +42,10 @@ std::string format_number(double value) {
   return out.str();
 }
 
-/// A 1-D array of finite float64 values from any array-like, or ValueError naming `name`.
+/// A 1-D array of finite float64 values from any array-like of real numbers (conversions.hpp), or
+/// ValueError naming `name`.
 Eigen::VectorXd vector_argument(const py::handle& object, const char* name) {
-  if (object.is_none()) throw py::value_error(std::string(name) + " must be a 1-D array of finite numbers, got None");
-  py::array_t<double, py::array::c_style | py::array::forcecast> array;
-  try {
-    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
-  } catch (const py::error_already_set&) {
-    array = {};
-  }
-  if (!array) {
-    PyErr_Clear();
-    throw py::value_error(std::string(name) + " must be a 1-D array of finite numbers, got an object of type " +
-                          std::string(py::str(py::type::handle_of(object).attr("__name__"))));
-  }
-  if (array.ndim() != 1) {
-    throw py::value_error(std::string(name) + " must be 1-D, got an array with " + std::to_string(array.ndim()) +
-                          " dimensions");
-  }
+  const auto array = to_float64_array(object, name);
   Eigen::VectorXd out(array.shape(0));
   const double* data = array.data();
   for (Eigen::Index i = 0; i < out.size(); ++i) {
@@ -95,10 +82,17 @@ PyCommand cpp_command(plant::Command function, std::string description) {
   return PyCommand{std::move(function), std::move(description), false};
 }
 
-/// Wraps a Python callable f(t) -> float. pybind11's function wrapper acquires the GIL for each
-/// call and for its destruction, so the Command may outlive the call that made it.
-PyCommand python_command(const py::function& callable) {
-  auto function = callable.cast<std::function<double(double)>>();
+/// Wraps a Python callable f(t) -> float; `name` names it in the ValueError for a value that is not a
+/// real number. pybind11's function wrapper acquires the GIL for each call and for its destruction,
+/// so the Command may outlive the call that made it; the GIL is held here too while the returned
+/// object is converted.
+PyCommand python_command(const py::function& callable, const std::string& name) {
+  auto call = callable.cast<std::function<py::object(double)>>();
+  plant::Command function = [call = std::move(call), name](double t) {
+    py::gil_scoped_acquire gil;
+    const py::object value = call(t);
+    return to_scalar(value, "the value of " + name + "(t) at t = " + format_number(t));
+  };
   std::string description = "python callable";
   try {
     description = std::string(py::repr(callable));
@@ -114,12 +108,12 @@ PyCommand command_argument(const py::object& object, const char* name) {
   if (py::isinstance<py::tuple>(object) && py::len(object) == 2) {
     const py::tuple pair = object.cast<py::tuple>();
     const Eigen::VectorXd values = vector_argument(pair[0], (std::string(name) + "[0] (values)").c_str());
-    const double ts = pair[1].cast<double>();
+    const double ts = to_scalar(pair[1], std::string(name) + "[1] (ts)");
     std::ostringstream description;
     description << "sampled(" << values.size() << " values, ts=" << ts << ")";
     return cpp_command(plant::excitation::sampled(values, ts), description.str());
   }
-  if (PyCallable_Check(object.ptr())) return python_command(object.cast<py::function>());
+  if (PyCallable_Check(object.ptr())) return python_command(object.cast<py::function>(), name);
   throw py::type_error(std::string(name) +
                        " must be a bonl.plant.Command, a callable f(t) -> float or a (values, ts) pair, got " +
                        std::string(py::str(py::type::handle_of(object).attr("__name__"))));
@@ -214,7 +208,7 @@ std::string parameters_repr(const plant::Parameters& p) {
 void set_parameter(plant::Parameters& p, const std::string& name, const py::handle& value) {
   for (const ParameterField& field : parameter_fields()) {
     if (name == field.name) {
-      p.*field.member = value.cast<double>();
+      p.*field.member = to_scalar(value, name);
       return;
     }
   }
@@ -314,7 +308,7 @@ void bind_command(py::module_& sub) {
                         "Made by the functions of ``bonl.plant.excitation`` (evaluated in C++, so ``simulate``\n"
                         "releases the GIL), or from any Python callable ``f(t) -> float``.\n\n"
                         "Parameters\n----------\nfunction : callable\n    f(t) -> float, t in seconds, V in volts.")
-      .def(py::init([](const py::function& function) { return python_command(function); }),
+      .def(py::init([](const py::function& function) { return python_command(function, "command"); }),
            py::arg("function"))
       .def(
           "__call__", [](const PyCommand& c, double t) { return c(t); }, py::arg("t"),
@@ -474,10 +468,13 @@ py::dict simulate(const py::object& command, const py::object& parameters, doubl
   options.tolerances.relative = rtol;
   options.tolerances.max_steps_per_interval = max_steps_per_interval;
   if (!atol.is_none()) {
-    const auto tolerances = atol.cast<py::dict>();
-    for (const auto& item : tolerances) {
-      const auto key = item.first.cast<std::string>();
-      const auto value = item.second.cast<double>();
+    if (!py::isinstance<py::dict>(atol)) {
+      throw py::value_error("atol must be a dict {state: tolerance} (position, velocity, pressure, spool), got " +
+                            type_name(atol));
+    }
+    for (const auto& item : atol.cast<py::dict>()) {
+      const auto key = std::string(py::str(item.first));
+      const double value = to_scalar(item.second, "atol['" + key + "']");
       if (key == "position") options.tolerances.absolute_position = value;
       else if (key == "velocity") options.tolerances.absolute_velocity = value;
       else if (key == "pressure") options.tolerances.absolute_pressure = value;
@@ -488,7 +485,7 @@ py::dict simulate(const py::object& command, const py::object& parameters, doubl
   options.sensor_noise = sensor_noise;
   options.noise_seed = noise_seed;
   if (!initial_position.is_none()) {
-    const double h0 = initial_position.cast<double>();
+    const double h0 = to_scalar(initial_position, "initial_position");
     if (!(std::isfinite(h0) && h0 >= 0.0)) {
       throw py::value_error("initial_position must be finite and >= 0 (None means mid-stroke), got " + format_number(h0));
     }

@@ -174,8 +174,16 @@ void validate_options(const SimulationOptions& options, const Parameters& parame
   if (!(whole_samples >= 1.0 && std::abs(samples - whole_samples) <= 1e-9 * whole_samples))
     bad_option("duration", "must be an integer multiple of sample_time (" + number(options.sample_time) + " s)",
                options.duration);
+  // Counted in doubles before anything is sized by them: a duration of 1e19 s would overflow the
+  // integer counts, and 1e8 command intervals (a day at 1 kHz) already take about a minute.
+  constexpr double kMaxIntervals = 1e8;
+  if (whole_samples * whole > kMaxIntervals)
+    bad_option("duration", "gives " + number(whole_samples * whole) + " command intervals (duration * command_rate); at most " +
+                               number(kMaxIntervals) + " per run (simulate a long record in pieces)",
+               options.duration);
   const Tolerances& tol = options.tolerances;
   require_positive("tolerances.relative", tol.relative);
+  if (!(tol.relative < 1.0)) bad_option("tolerances.relative", "must be < 1", tol.relative);
   require_positive("tolerances.absolute_position", tol.absolute_position);
   require_positive("tolerances.absolute_velocity", tol.absolute_velocity);
   require_positive("tolerances.absolute_pressure", tol.absolute_pressure);

@@ -148,6 +148,21 @@ TEST_CASE("P5-P11 simulate rejects bad options and commands, naming them", "[bad
        "tolerances.absolute_position must be > 0 and finite"},
       {"P8 pressure tolerance -1", [] { simulate_with_options([](auto& o) { o.tolerances.absolute_pressure = -1.0; }); },
        "tolerances.absolute_pressure must be > 0 and finite"},
+      {"P8 relative tolerance 1", [] { simulate_with_options([](auto& o) { o.tolerances.relative = 1.0; }); },
+       "tolerances.relative must be < 1, got 1"},
+      // Before: a segmentation fault (the integer grid counts overflowed), garbage arrays, or a hang.
+      {"P21 duration 1e19", [] { simulate_with_options([](auto& o) { o.duration = 1e19; }); },
+       "duration gives 1e+22 command intervals (duration * command_rate); at most 100000000"},
+      {"P21 duration 1e6 s at 1 kHz", [] { simulate_with_options([](auto& o) { o.duration = 1e6; }); },
+       "duration gives 1000000000 command intervals"},
+      {"P21 command_rate 1e300",
+       [] {
+         simulate_with_options([](auto& o) {
+           o.command_rate = 1e300;
+           o.sample_time = 1e-300;
+         });
+       },
+       "command intervals (duration * command_rate); at most"},
       {"P8 max_steps_per_interval 0", [] { simulate_with_options([](auto& o) { o.tolerances.max_steps_per_interval = 0; }); },
        "tolerances.max_steps_per_interval must be >= 1"},
       {"P9 initial_position NaN", [] { simulate_with_options([](auto& o) { o.initial_position = kNaN; }); },

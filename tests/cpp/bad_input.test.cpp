@@ -234,6 +234,21 @@ TEST_CASE("M9 a negative or non-finite backlash half-width c is rejected", "[bad
   CHECK(p.c() == 0.05);
   p.set_c(0.0);  // no backlash at all is a valid model
   CHECK(p.c() == 0.0);
+
+  // The whole parameter vector: the same rule for its last entry (before: accepted, and the model
+  // then wrote JSON that the reader rejects).
+  Eigen::VectorXd theta = phw().theta();
+  theta[theta.size() - 1] = -0.1;
+  check_cases<std::invalid_argument>(
+      {{"set_theta with c = -0.1", [&p, &theta] { p.set_theta(theta); },
+        "theta: c (the last entry, the backlash half-width) must be >= 0, got -0.1"}});
+  CHECK(p.c() == 0.0);  // untouched
+  // An estimate with c < 0 (the paper method's can have one) becomes a model with c = 0, which is
+  // how it simulates.
+  bonl::Estimator<bonl::PseudoHammersteinWienerd> estimator(phw());
+  estimator.reset(theta);
+  CHECK(estimator.theta()[theta.size() - 1] == -0.1);
+  CHECK(estimator.model().c() == 0.0);
 }
 
 TEST_CASE("M11 blocks reject bad orders and parameters", "[bad_input][blocks]") {
@@ -404,6 +419,53 @@ TEST_CASE("E4-E11 identify and Estimator reject settings out of range", "[bad_in
           o.c0 = 0.0;
           o.refine_iterations = 0;
         })).theta().allFinite());
+}
+
+TEST_CASE("E17 estimate_recursively and refine_output_error check their record and settings", "[bad_input][estimator]") {
+  const bonl::Hammersteind model = hammerstein();
+  const Eigen::VectorXd u = bonl::signals::random_levels(200, 5, 1.0, 7);
+  const Eigen::VectorXd y = model.simulate(u);
+  Eigen::VectorXd with_nan = y;
+  with_nan[17] = kNaN;
+  bonl::IdentifyOptions options;
+  bonl::IdentifyOptions no_passes;
+  no_passes.passes = 0;
+  // Before: y shorter than u was read past its end, a NaN was skipped silently (or made the
+  // refinement return its start unchanged), and passes = 0 returned the all-zero start.
+  check_cases<std::invalid_argument>({
+      {"estimate_recursively, y shorter", [&] { bonl::estimate_recursively(model, u, y.head(150), options); },
+       "u and y must have the same length, got 200 and 150"},
+      {"estimate_recursively, NaN", [&] { bonl::estimate_recursively(model, u, with_nan, options); },
+       "y has a non-finite value at index 17"},
+      {"estimate_recursively, too short", [&] { bonl::estimate_recursively(model, u.head(5), y.head(5), options); },
+       "the record must be longer than the number of parameters"},
+      {"estimate_recursively, passes = 0", [&] { bonl::estimate_recursively(model, u, y, no_passes); },
+       "passes must be >= 1, got 0"},
+      {"refine_output_error, y shorter", [&] { bonl::refine_output_error(model, u, y.head(150)); },
+       "u and y must have the same length, got 200 and 150"},
+      {"refine_output_error, NaN", [&] { bonl::refine_output_error(model, u, with_nan); },
+       "y has a non-finite value at index 17"},
+      {"refine_output_error, max_iterations < 0", [&] { bonl::refine_output_error(model, u, y, -1); },
+       "max_iterations must be >= 0, got -1"},
+  });
+}
+
+TEST_CASE("E18 the safeguard options and the recording capacity are checked", "[bad_input][estimator]") {
+  bonl::EstimatorOptions low_ceiling;
+  low_ceiling.trace_ceiling = 0.5;
+  bonl::EstimatorOptions nan_ceiling;
+  nan_ceiling.trace_ceiling = kNaN;
+  bonl::EstimatorOptions negative_recover;
+  negative_recover.recover_after = -1;
+  bonl::Estimator<bonl::ARXd> estimator(arx());
+  check_cases<std::invalid_argument>({
+      {"trace_ceiling 0.5", [&] { bonl::Estimator<bonl::ARXd>(arx(), low_ceiling); },
+       "trace_ceiling must be >= 1 (a multiple of trace(P(0))) or infinity, got 0.5"},
+      {"trace_ceiling NaN", [&] { bonl::Estimator<bonl::ARXd>(arx(), nan_ceiling); }, "trace_ceiling must be >= 1"},
+      {"recover_after -1", [&] { bonl::Estimator<bonl::ARXd>(arx(), negative_recover); },
+       "recover_after must be >= 0"},
+      {"start_recording(0)", [&] { estimator.start_recording(0); }, "recording capacity must be >= 1"},
+  });
 }
 
 TEST_CASE("E12 a model with more than 10^6 parameters cannot get an estimator", "[bad_input][estimator]") {

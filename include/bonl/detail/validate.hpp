@@ -4,10 +4,19 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 namespace bonl::detail {
+
+/// A number for a message: shortest of fixed and scientific, up to 6 significant digits ("0.5", "-0.1",
+/// "1e+22"), unlike std::to_string's "0.500000".
+inline std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 inline void require(bool condition, const std::string& message) {
   if (!condition) throw std::invalid_argument("bonl: " + message);
@@ -63,6 +72,16 @@ void require_same_length(const Eigen::DenseBase<A>& a, const char* a_name, const
   require(a.size() == b.size(), std::string(a_name) + " and " + b_name +
                                     " must have the same length, got " + std::to_string(a.size()) +
                                     " and " + std::to_string(b.size()));
+}
+
+/// An identification record: u and y of equal length, longer than the number of parameters, finite.
+template <typename U, typename Y>
+void require_record(const Eigen::DenseBase<U>& u, const Eigen::DenseBase<Y>& y, Eigen::Index num_params) {
+  require_same_length(u, "u", y, "y");
+  require(u.size() > num_params, "the record must be longer than the number of parameters (" +
+                                     std::to_string(num_params) + "), got " + std::to_string(u.size()) + " samples");
+  require_finite(u, "u");
+  require_finite(y, "y");
 }
 
 /// Adds two compile-time sizes; Eigen::Dynamic is absorbing.

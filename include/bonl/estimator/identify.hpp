@@ -24,6 +24,8 @@ struct IdentifyOptions : EstimatorOptions {
 template <class Model, typename U, typename Y>
 Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
                            const IdentifyOptions& options) {
+  detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
+  detail::require_record(u, y, structure.num_params());
   Estimator<Model> estimator(structure, options);
   for (int pass = 0; pass < options.passes; ++pass) {
     if (pass > 0) estimator.start_pass();
@@ -51,12 +53,7 @@ Model identify(const Model& structure, const Eigen::MatrixBase<U>& u, const Eige
   options.validate();
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   detail::require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
-  detail::require_same_length(u, "u", y, "y");
-  detail::require(u.size() > structure.num_params(),
-                  "the record must be longer than the number of parameters (" +
-                      std::to_string(structure.num_params()) + "), got " + std::to_string(u.size()) + " samples");
-  detail::require_finite(u, "u");
-  detail::require_finite(y, "y");
+  detail::require_record(u, y, structure.num_params());
 
   if (options.method == Method::Paper || !Model::kHasInternalVariables || options.refine_iterations == 0) {
     return estimate_recursively(structure, u, y, options);

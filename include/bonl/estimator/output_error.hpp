@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "../detail/validate.hpp"
 #include "method.hpp"
 
 namespace bonl {
@@ -44,6 +46,8 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
   const Eigen::Index n = start.num_params();
   const Eigen::Index samples = u.size();
+  detail::require_record(u, y, n);
+  detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
 
   Model best = start;
   Model trial = start;
@@ -67,10 +71,14 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
     for (Eigen::Index i = 0; i < n; ++i) {
       const Scalar step = Scalar(1e-6) * std::max(Scalar(1), std::abs(theta[i]));
       typename Model::Params shifted = theta;
+      // Projected like every candidate: at a bound (c = 0) the difference becomes one-sided, with
+      // the same simulations as before (a model with c < 0 simulates as c = 0).
       shifted[i] = theta[i] + step;
+      constraint.constrain(shifted, Method::Default);
       trial.set_theta(shifted);
       const bool ok_plus = trial.try_simulate(u, plus);
       shifted[i] = theta[i] - step;
+      constraint.constrain(shifted, Method::Default);
       trial.set_theta(shifted);
       const bool ok_minus = trial.try_simulate(u, minus);
       if (ok_plus && ok_minus) {

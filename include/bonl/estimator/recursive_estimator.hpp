@@ -44,7 +44,7 @@ struct EstimatorOptions {
     detail::require(std::isfinite(c0) && c0 >= 0.0, "c0 (initial backlash half-width) must be finite and >= 0");
     detail::require(internal_refresh >= 1, "internal_refresh must be >= 1");
     detail::require(trace_ceiling >= 1.0, "trace_ceiling must be >= 1 (a multiple of trace(P(0))) or infinity, got " +
-                                              std::to_string(trace_ceiling));
+                                              detail::format_number(trace_ceiling));
     detail::require(recover_after >= 0, "recover_after must be >= 0 (0: never recover automatically)");
   }
 };
@@ -220,9 +220,13 @@ class Estimator {
   const Params& theta() const noexcept { return m_rls.theta(); }
   Covariance covariance() const { return m_rls.covariance(); }
   /// The current estimate as a model.
+  /// The current estimate as a model, projected onto the model's valid set (the paper method's
+  /// P-H-W estimate can have c < 0, which simulates as c = 0).
   Model model() const {
+    Params theta = m_rls.theta();
+    m_terms.constrain(theta, Method::Default);
     Model model = m_model;
-    model.set_theta(m_rls.theta());
+    model.set_theta(theta);
     return model;
   }
   /// The one-step prediction of the last sample's y, made before the update with the parameters

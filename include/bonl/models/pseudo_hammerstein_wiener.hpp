@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "../blocks/backlash.hpp"
 #include "../detail/hammerstein_front.hpp"
@@ -31,6 +32,17 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     this->m_theta[this->num_params() - 1] = c;
   }
   Backlash<Scalar> backlash() const { return Backlash<Scalar>(std::max(c(), Scalar(0))); }
+
+  /// All parameters in the order of eq. (19); c, the last, must be >= 0 as for set_c (an estimate
+  /// with c < 0 is projected first: Estimator::model() does that).
+  template <typename T>
+  void set_theta(const Eigen::MatrixBase<T>& theta) {
+    detail::require_size(theta, this->num_params(), "theta");
+    const auto c = theta[this->num_params() - 1];
+    detail::require(!(c < Scalar(0)), "theta: c (the last entry, the backlash half-width) must be >= 0, got " +
+                                          detail::format_number(static_cast<double>(c)));
+    Front::set_theta(theta);
+  }
 
   template <typename U>
   VectorX simulate(const Eigen::MatrixBase<U>& u) const {

@@ -23,20 +23,41 @@ bonl::Method parse_method(const std::string& method) {
 
 /// None: the paper's schedule (0.98 for 200 samples, then 1); a number: constant; a tuple
 /// (initial, initial_samples, final).
+constexpr const char* kForgettingForms = "forgetting must be a number or a tuple (initial, initial_samples, final)";
+
+/// A real number (not a bool, a string or a complex), or a ValueError naming `what`.
+double forgetting_factor(const py::handle& value, const char* what) {
+  if (!py::isinstance<py::bool_>(value) && !py::isinstance<py::str>(value)) {
+    try {
+      return value.cast<double>();
+    } catch (const py::cast_error&) {
+    }
+  }
+  throw py::value_error(std::string(kForgettingForms) + "; " + what + " must be a real number, got " +
+                        std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+}
+
 bonl::ForgettingSchedule parse_forgetting(const py::object& forgetting) {
   if (forgetting.is_none()) return bonl::ForgettingSchedule::paper();
   if (py::isinstance<py::tuple>(forgetting) || py::isinstance<py::list>(forgetting)) {
     const auto items = forgetting.cast<py::sequence>();
-    if (items.size() != 3) {
-      throw py::value_error("forgetting must be a number or a tuple (initial, initial_samples, final)");
+    if (items.size() != 3) throw py::value_error(kForgettingForms);
+    const py::object samples = items[1];
+    // An integer (Python or numpy), not a bool or a float that happens to be whole.
+    if (py::isinstance<py::bool_>(samples) || !PyIndex_Check(samples.ptr())) {
+      throw py::value_error(std::string(kForgettingForms) + "; initial_samples must be an integer, got " +
+                            std::string(py::str(py::type::handle_of(samples).attr("__name__"))));
     }
-    return {items[0].cast<double>(), items[1].cast<Eigen::Index>(), items[2].cast<double>()};
+    Eigen::Index initial_samples = 0;
+    try {
+      initial_samples = samples.cast<Eigen::Index>();
+    } catch (const py::cast_error&) {
+      throw py::value_error(std::string(kForgettingForms) + "; initial_samples is out of range, got " +
+                            std::string(py::str(samples)));
+    }
+    return {forgetting_factor(items[0], "initial"), initial_samples, forgetting_factor(items[2], "final")};
   }
-  try {
-    return bonl::ForgettingSchedule::constant(forgetting.cast<double>());
-  } catch (const py::cast_error&) {
-    throw py::value_error("forgetting must be a number or a tuple (initial, initial_samples, final)");
-  }
+  return bonl::ForgettingSchedule::constant(forgetting_factor(forgetting, "forgetting"));
 }
 
 bonl::EstimatorOptions estimator_options(const std::string& method, const py::object& forgetting, double p0,

@@ -219,6 +219,13 @@ BAD_SETTINGS = [
     (dict(forgetting=(0.9, 1)), "forgetting must be a number or a tuple (initial, initial_samples, final)"),
     (dict(forgetting=[0.9, 1, 1.0, 1.0]), "forgetting must be a number or a tuple"),
     (dict(forgetting="0.9"), "forgetting must be a number or a tuple"),
+    # Before: RuntimeError "Unable to cast ...", and True silently taken as 1.0.
+    (dict(forgetting=("a", 1, 1.0)), "initial must be a real number, got str"),
+    (dict(forgetting=(0.9, 1.5, 1.0)), "initial_samples must be an integer, got float"),
+    (dict(forgetting=(0.9, True, 1.0)), "initial_samples must be an integer, got bool"),
+    (dict(forgetting=(0.9, 2**70, 1.0)), "initial_samples is out of range"),
+    (dict(forgetting=(0.9, 10, 1 + 2j)), "final must be a real number, got complex"),
+    (dict(forgetting=True), "forgetting must be a real number, got bool"),
     (dict(method="magic"), "method must be 'default' or 'paper', got 'magic'"),
     (dict(method="Paper"), "method must be 'default' or 'paper', got 'Paper'"),
 ]
@@ -470,6 +477,11 @@ BAD_OPTIONS = [
     (dict(command_rate=0.0), ValueError, "command_rate must be > 0 and finite"),
     (dict(rtol=0.0), ValueError, "tolerances.relative must be > 0 and finite"),
     (dict(rtol=INF), ValueError, "tolerances.relative must be > 0 and finite"),
+    (dict(rtol=1.0), ValueError, "tolerances.relative must be < 1, got 1"),
+    # Before: a segmentation fault (the integer grid counts overflowed), garbage arrays, or a hang.
+    (dict(duration=1e19), ValueError, "duration gives 1e+22 command intervals (duration * command_rate); at most 100000000"),
+    (dict(duration=1e6), ValueError, "duration gives 1000000000 command intervals"),
+    (dict(sample_time=1e-300, command_rate=1e300), ValueError, "command intervals (duration * command_rate); at most"),
     (dict(atol={"position": -1.0}), ValueError, "tolerances.absolute_position must be > 0 and finite"),
     (dict(atol={"pressure": NAN}), ValueError, "tolerances.absolute_pressure must be > 0 and finite"),
     (dict(atol={"angle": 1e-9}), ValueError, "atol: unknown key 'angle' (position, velocity, pressure, spool)"),
@@ -838,3 +850,18 @@ def test_a4_the_plant_never_modifies_the_callers_arrays():
     values_copy[:2] = 0.0
     np.testing.assert_array_equal(held.sample([0.0, 0.015]), before)
     assert re.match(r"Command\(sampled\(40 values", repr(held))
+
+
+def test_m9_theta_with_negative_c():
+    """The theta setter applies set_c's rule to c (before: accepted, and the JSON could not be read back);
+    an Estimator whose estimate has c < 0 gives a model with c = 0, which is how it simulates."""
+    model = models()["PseudoHammersteinWiener"]
+    c = model.c
+    theta = model.theta.copy()
+    theta[-1] = -0.1
+    raises(ValueError, "theta: c (the last entry, the backlash half-width) must be >= 0, got -0.1", setattr, model, "theta", theta)
+    assert model.c == c
+    estimator = bonl.Estimator(model)
+    estimator.reset_to(theta)
+    assert estimator.theta[-1] == -0.1
+    assert estimator.model.c == 0.0

@@ -7,7 +7,7 @@ import numpy.typing
 import typing
 from . import metrics
 from . import plant
-__all__: list[str] = ['ARX', 'Estimator', 'Hammerstein', 'HammersteinWiener', 'NumericalError', 'PseudoHammersteinWiener', 'UpdateStatus', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list[str] = ['ARX', 'Estimator', 'EstimatorHealth', 'Hammerstein', 'HammersteinWiener', 'NumericalError', 'PseudoHammersteinWiener', 'UpdateStatus', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     pass
 class ARX:
@@ -457,7 +457,7 @@ class UpdateStatus:
     
       rejected_non_finite : u or y was NaN or infinite; the estimator's state is untouched
     
-      numerical_failure : the update would have broken the covariance; theta and P kept, diverged is set
+      numerical_failure : the update would have broken the covariance, or the internal variables left the finite numbers; theta and P kept, diverged is set
     """
     __members__: typing.ClassVar[dict[str, UpdateStatus]]
     no_information: typing.ClassVar[UpdateStatus]
@@ -498,6 +498,42 @@ class UpdateStatus:
     @property
     def value(self) -> int:
         ...
+class EstimatorHealth:
+    """
+    What an Estimator's numerical safeguards did since reset().
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def consecutive_failures(self) -> int:
+        """
+        int: refused in a row, up to the last update
+        """
+    @property
+    def diverged(self) -> bool:
+        """
+        bool: a numerical failure happened (cleared by recover() and reset())
+        """
+    @property
+    def failures(self) -> int:
+        """
+        int: updates refused for numerical reasons
+        """
+    @property
+    def forgetting_limited(self) -> int:
+        """
+        int: updates whose forgetting the trace ceiling reduced
+        """
+    @property
+    def internal_restarts(self) -> int:
+        """
+        int: internal variables restarted because they became non-finite
+        """
+    @property
+    def recoveries(self) -> int:
+        """
+        int: automatic covariance resets (recover_after)
+        """
 class Estimator:
     """
     Online recursive estimator (the paper's MRLSA) for one model.
@@ -511,19 +547,30 @@ class Estimator:
         As for identify; default the paper's schedule.
     p0 : float, default 1e6
     c0 : float, default 0.01
+    trace_ceiling : float, default 1.0
+        trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
+        would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
+        (the paper's algorithm exactly as written).
+    recover_after : int, default 0
+        After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
+        0: never (check ``diverged`` and call ``recover()``).
     """
     @typing.overload
-    def __init__(self, model: ARX, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01) -> None:
+    def __init__(self, model: ARX, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex = 1.0, recover_after: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Hammerstein, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01) -> None:
+    def __init__(self, model: Hammerstein, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex = 1.0, recover_after: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
         ...
     @typing.overload
-    def __init__(self, model: HammersteinWiener, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01) -> None:
+    def __init__(self, model: HammersteinWiener, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex = 1.0, recover_after: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01) -> None:
+    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex = 1.0, recover_after: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
         ...
+    def recover(self) -> None:
+        """
+        Leave the diverged state: P = p0 I, theta kept (a covariance reset); the counters in health stay.
+        """
     def reset(self) -> None:
         """
         Back to the initial estimate, P = p0 I, internal variables at rest.
@@ -535,6 +582,25 @@ class Estimator:
     def start_pass(self) -> None:
         """
         A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.
+        """
+    def start_recording(self, capacity: typing.SupportsInt | typing.SupportsIndex) -> None:
+        """
+        Record theta, the internal variable and the status of the next updates, keeping the newest `capacity`.
+        """
+    def stop_recording(self) -> None:
+        """
+        Stop recording and free the buffer.
+        """
+    def trajectory(self) -> dict:
+        """
+        What was recorded, oldest first.
+        
+        Returns
+        -------
+        dict
+            ``sample``: int64 array (k,), sample number since reset(); ``theta``: array (k, n), the estimate
+            after each update; ``internal``: array (k,), the internal variable x(k) the update used (NaN for
+            ARX); ``status``: list of UpdateStatus.
         """
     def update(self, u: typing.SupportsFloat | typing.SupportsIndex, y: typing.SupportsFloat | typing.SupportsIndex) -> UpdateStatus:
         """
@@ -561,9 +627,24 @@ class Estimator:
         bool: an update was refused for numerical reasons.
         """
     @property
+    def health(self) -> EstimatorHealth:
+        """
+        EstimatorHealth: what the numerical safeguards did since reset().
+        """
+    @property
+    def last_prediction(self) -> float:
+        """
+        float: the one-step prediction of the last sample's y, made before the update (y - last_prediction is the innovation).
+        """
+    @property
     def model(self) -> typing.Any:
         """
         The current estimate as a model.
+        """
+    @property
+    def recording(self) -> bool:
+        """
+        bool: updates are being recorded.
         """
     @property
     def samples(self) -> int:

@@ -1,0 +1,44 @@
+// Reproducers of what the libFuzzer targets (fuzz/, docs/fuzzing.md) found in the estimator,
+// reduced to plain inputs. A test tagged [!shouldfail] reproduces a bug that is not fixed yet: it
+// passes while the bug is there, and fails once the bug is fixed, as a reminder to drop the tag.
+// (The plant's reproducers are in plant_fuzz_regressions.test.cpp, which links bonl::plant.)
+
+#include <catch2/catch.hpp>
+
+#include "bonl/estimator.hpp"
+#include "bonl/models.hpp"
+
+// fuzz_estimator_update: Rls::update checks the new diagonal as P_ii - (P phi)_i^2 / denominator
+// but the downdate computes P_ii - h_i h_i with h = P phi / sqrt(denominator), which rounds
+// differently. When a sample pins a direction down to below P's resolution (here one large input,
+// P phi phi' P / denominator = P_00 (1 - 0.98 / (0.98 + 1e6 u^2)), the check passes on a rounding
+// residue and the update returns Updated with P(0, 0) = 0 exactly: a singular covariance reported
+// as a good update. The default settings and an input of 1e5 (a pressure in Pa, say) suffice.
+TEST_CASE("an accepted update keeps every diagonal entry of P positive", "[!shouldfail]") {
+  bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1));
+  REQUIRE(estimator.update(100006.0, 0.0) == bonl::UpdateStatus::Updated);  // phi = 0: nothing to learn yet
+  const bonl::UpdateStatus status = estimator.update(0.0, 0.0);             // phi = (100006, 0, ...)
+  INFO("status " << static_cast<int>(status) << ", P(0, 0) = " << estimator.covariance()(0, 0));
+  CHECK(estimator.covariance()(0, 0) > 0.0);
+}
+
+// fuzz_estimator_update: with a very small forgetting factor the trace ceiling is enforced on
+// trace(P) - |h|^2, which cancels: trace(P) is ~6e6 and the remainder a rounding residue, so the
+// scaling that should bring the trace to the ceiling overshoots it (here by 0.4 %), and P, scaled
+// up from round-off, is no longer positive definite. lambda = 1e-20 is absurd but valid ((0, 1]);
+// the overshoot appears from about lambda = 1e-2 (4.6e-11 relative).
+TEST_CASE("the trace ceiling holds with a tiny forgetting factor", "[!shouldfail]") {
+  bonl::EstimatorOptions options;  // trace_ceiling 1: trace(P) <= 6 * p0
+  options.forgetting = bonl::ForgettingSchedule::constant(1e-20);
+  bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1), options);
+  const double samples[][2] = {{0.75, 2},      {-1.25, 0.25}, {0.25, 0.75},   {-0.75, -2},
+                               {1, -1.75},     {-1, -1.75},   {-1.75, 1.25},  {0.25, -0.75},
+                               {-1.25, -1.5},  {0.75, -1.5},  {1.25, -1.75},  {0.75, 0}};
+  const double ceiling = options.trace_ceiling * 6.0 * options.p0;
+  for (const auto& sample : samples) {
+    const bonl::UpdateStatus status = estimator.update(sample[0], sample[1]);
+    INFO("u = " << sample[0] << ", y = " << sample[1] << ": status " << static_cast<int>(status) << ", trace "
+                << estimator.covariance().trace());
+    CHECK(estimator.covariance().trace() <= ceiling * (1.0 + 1e-14));
+  }
+}

@@ -1,0 +1,368 @@
+#pragma once
+// The estimator fuzz target's harness (see fuzz_estimator_update.cpp for what it checks), in a header
+// so that the twelve model types compile in two translation units, one per core.
+
+#include <bonl/estimator.hpp>
+#include <bonl/models.hpp>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <type_traits>
+
+#include "fuzz_common.hpp"
+
+namespace bonl_fuzz {
+
+
+struct Orders {
+  Eigen::Index na, nb, nk, r, r1;
+};
+
+/// Per model: how to build it from orders, and whether its constructor must accept them (the
+/// documented minimums, r1 <= 32, and the compile-time orders when fixed).
+template <class Model>
+struct ModelInfo;
+template <typename S, int Na, int Nb>
+struct ModelInfo<bonl::ARX<S, Na, Nb>> {
+  static constexpr bool kUsesC0 = false;
+  static bonl::ARX<S, Na, Nb> make(const Orders& o) { return {o.na, o.nb, o.nk}; }
+  static bool valid(const Orders& o) {
+    return o.na >= 1 && o.nb >= 0 && o.nk >= 0 && (Na < 0 || o.na == Na) && (Nb < 0 || o.nb == Nb);
+  }
+};
+template <typename S, int Na, int Nb, int R>
+struct ModelInfo<bonl::Hammerstein<S, Na, Nb, R>> {
+  static constexpr bool kUsesC0 = false;
+  static bonl::Hammerstein<S, Na, Nb, R> make(const Orders& o) { return {o.na, o.nb, o.nk, o.r}; }
+  static bool valid(const Orders& o) {
+    return ModelInfo<bonl::ARX<S, Na, Nb>>::valid(o) && o.r >= 1 && (R < 0 || o.r == R);
+  }
+};
+template <typename S, int Na, int Nb, int R, int R1>
+struct ModelInfo<bonl::HammersteinWiener<S, Na, Nb, R, R1>> {
+  static constexpr bool kUsesC0 = false;
+  static bonl::HammersteinWiener<S, Na, Nb, R, R1> make(const Orders& o) { return {o.na, o.nb, o.nk, o.r, o.r1}; }
+  static bool valid(const Orders& o) {
+    return ModelInfo<bonl::Hammerstein<S, Na, Nb, R>>::valid(o) && o.r1 >= 2 && o.r1 <= 32 && (R1 < 0 || o.r1 == R1);
+  }
+};
+template <typename S, int Na, int Nb, int R>
+struct ModelInfo<bonl::PseudoHammersteinWiener<S, Na, Nb, R>> {
+  static constexpr bool kUsesC0 = true;
+  static bonl::PseudoHammersteinWiener<S, Na, Nb, R> make(const Orders& o) { return {o.na, o.nb, o.nk, o.r}; }
+  static bool valid(const Orders& o) { return ModelInfo<bonl::Hammerstein<S, Na, Nb, R>>::valid(o); }
+};
+
+/// double -> Scalar, out-of-range magnitudes to +-inf explicitly (IEEE rounding, without relying on
+/// the conversion of an out-of-range double to float).
+template <typename Scalar>
+Scalar to_scalar(double x) {
+  if (std::isfinite(x) && std::abs(x) > static_cast<double>(std::numeric_limits<Scalar>::max())) {
+    const auto rounded = static_cast<double>(std::nextafter(std::numeric_limits<Scalar>::max(), Scalar(0)));
+    const double halfway = static_cast<double>(std::numeric_limits<Scalar>::max()) +
+                           0.5 * (static_cast<double>(std::numeric_limits<Scalar>::max()) - rounded);
+    if (std::abs(x) < halfway) return std::copysign(std::numeric_limits<Scalar>::max(), static_cast<Scalar>(x > 0 ? 1 : -1));
+    return x > 0 ? std::numeric_limits<Scalar>::infinity() : -std::numeric_limits<Scalar>::infinity();
+  }
+  return static_cast<Scalar>(x);
+}
+
+/// One double for a setting: usually near a typical value, sometimes anything.
+inline double setting(FuzzedDataProvider& in, double typical) {
+  switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+    case 0: return typical;
+    case 1: return typical * (1.0 + static_cast<double>(in.ConsumeIntegral<std::int8_t>()) / 256.0);
+    case 2: return std::ldexp(typical, in.ConsumeIntegralInRange<int>(-1100, 1100));
+    default: return any_double(in);
+  }
+}
+
+inline bonl::EstimatorOptions decode_options(FuzzedDataProvider& in) {
+  bonl::EstimatorOptions options;
+  options.method = in.ConsumeBool() ? bonl::Method::Paper : bonl::Method::Default;
+  switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+    case 0: break;  // the paper's schedule
+    case 1: options.forgetting = bonl::ForgettingSchedule::constant(std::min(setting(in, 0.99), 1.0)); break;
+    case 2: options.forgetting = bonl::ForgettingSchedule::constant(setting(in, 1.0)); break;
+    default:
+      options.forgetting.initial = setting(in, 0.98);
+      options.forgetting.initial_samples = in.ConsumeIntegralInRange<Eigen::Index>(-2, 300);
+      options.forgetting.final = setting(in, 1.0);
+      break;
+  }
+  if (in.ConsumeBool()) options.p0 = setting(in, 1e6);
+  if (in.ConsumeBool()) options.c0 = setting(in, 0.01);
+  if (in.ConsumeBool()) options.internal_refresh = in.ConsumeIntegralInRange<Eigen::Index>(-1, 300);
+  switch (in.ConsumeIntegralInRange<int>(0, 4)) {
+    case 0: break;  // the default ceiling
+    case 1: options.trace_ceiling = 1.0; break;
+    case 2: options.trace_ceiling = std::numeric_limits<double>::infinity(); break;  // off
+    case 3: options.trace_ceiling = setting(in, 100.0); break;
+    default: options.trace_ceiling = std::nextafter(1.0, 0.0); break;  // just below the minimum
+  }
+  if (in.ConsumeBool()) options.recover_after = in.ConsumeIntegralInRange<Eigen::Index>(-1, 4);
+  return options;
+}
+
+/// BONL_FUZZ_VERBOSE set (when reproducing a finding): the decoded settings and every operation.
+inline bool verbose() {
+  static const bool on = std::getenv("BONL_FUZZ_VERBOSE") != nullptr;
+  return on;
+}
+
+inline void print(const bonl::EstimatorOptions& o) {
+  if (!verbose()) return;
+  std::fprintf(stderr,
+               "options: method %s, forgetting %.17g for %ld then %.17g, p0 %.17g, c0 %.17g, internal_refresh %ld, "
+               "trace_ceiling %.17g, recover_after %ld\n",
+               bonl::to_string(o.method), o.forgetting.initial, long(o.forgetting.initial_samples), o.forgetting.final,
+               o.p0, o.c0, long(o.internal_refresh), o.trace_ceiling, long(o.recover_after));
+}
+
+inline bool lambda_ok(double lambda) { return std::isfinite(lambda) && lambda > 0.0 && lambda <= 1.0; }
+
+/// What EstimatorOptions::validate and the estimator's constructor accept, per their documentation.
+template <class Model>
+bool options_valid(const bonl::EstimatorOptions& o) {
+  using Scalar = typename Model::Scalar;
+  const bool schedule = lambda_ok(o.forgetting.initial) && lambda_ok(o.forgetting.final) &&
+                        o.forgetting.initial_samples >= 0;
+  const bool p0 = std::isfinite(o.p0) && o.p0 > 0.0;
+  const bool c0 = std::isfinite(o.c0) && o.c0 >= 0.0;
+  // In Scalar: P(0) = p0 I must be finite and positive, and (P-H-W) c(0) = c0 finite.
+  const bool p0_scalar = p0 && std::isfinite(to_scalar<Scalar>(o.p0)) && to_scalar<Scalar>(o.p0) > Scalar(0);
+  const bool c0_scalar = !ModelInfo<Model>::kUsesC0 || (c0 && std::isfinite(to_scalar<Scalar>(o.c0)));
+  const bool safeguards = o.trace_ceiling >= 1.0 && o.recover_after >= 0;  // trace_ceiling may be +inf
+  return schedule && p0 && c0 && o.internal_refresh >= 1 && p0_scalar && c0_scalar && safeguards;
+}
+
+template <class Model>
+class Harness {
+ public:
+  using Scalar = typename Model::Scalar;
+  using Est = bonl::Estimator<Model>;
+  using Params = typename Model::Params;
+  using Covariance = typename Est::Covariance;
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+
+  Harness(const Model& structure, const bonl::EstimatorOptions& options)
+      : m_structure(structure), m_est(structure, options), m_n(structure.num_params()) {
+    // The documented ceiling: trace(P) <= trace_ceiling * trace(P(0)) = trace_ceiling * n * p0.
+    m_max_trace = options.trace_ceiling * static_cast<double>(to_scalar<Scalar>(options.p0)) * static_cast<double>(m_n);
+    check_fresh();
+  }
+
+  void run(FuzzedDataProvider& in) {
+    int operations = 0;
+    while (in.remaining_bytes() > 0 && operations++ < 4000) {
+      const auto op = in.ConsumeIntegral<std::uint8_t>();
+      if (verbose() && op >= 236) std::fprintf(stderr, "operation %d\n", int(op));
+      if (op < 236) {
+        update(in, op);
+      } else if (op < 240) {
+        m_est.reset();
+        check_fresh();
+      } else if (op < 243) {
+        reset_to(in);
+      } else if (op < 246) {
+        const Params theta = m_est.theta();
+        const Covariance p = m_est.covariance();
+        const bool diverged = m_est.diverged();
+        m_est.start_pass();
+        FUZZ_CHECK(m_est.samples() == 0 && m_est.diverged() == diverged);
+        FUZZ_CHECK(same(theta, m_est.theta()) && same(p, m_est.covariance()));
+      } else if (op < 249) {
+        const Params theta = m_est.theta();
+        m_est.recover();  // P = p0 I, theta kept, diverged() cleared
+        FUZZ_CHECK(!m_est.diverged() && same(theta, m_est.theta()) && is_initial_covariance());
+      } else if (op < 252) {
+        m_capacity = in.ConsumeIntegralInRange<Eigen::Index>(1, 4);
+        m_est.start_recording(m_capacity);
+        m_recorded = 0;
+        FUZZ_CHECK(m_est.recording() && m_est.trajectory().status.empty());
+      } else {
+        const Model model = m_est.model();  // theta is finite, so it is a valid model
+        FUZZ_CHECK(same(model.theta(), m_est.theta()));
+      }
+      check_invariants();
+    }
+  }
+
+ private:
+  template <class A, class B>
+  static bool same(const A& a, const B& b) {
+    return a.size() == b.size() && same_bits(a.data(), b.data(), static_cast<long>(a.size()));
+  }
+
+  /// u and y: ordinary values in [-2, 2] (steps of 1/64), or any_double with its special values.
+  Scalar sample(FuzzedDataProvider& in, std::uint8_t op) {
+    if (op < 160) return static_cast<Scalar>(static_cast<double>(in.ConsumeIntegral<std::int8_t>()) / 64.0);
+    return to_scalar<Scalar>(any_double(in));
+  }
+
+  bool is_initial_covariance() const {
+    const Covariance expected = Covariance::Identity(m_n, m_n) * to_scalar<Scalar>(m_est.options().p0);
+    return same(expected, m_est.covariance());
+  }
+
+  void update(FuzzedDataProvider& in, std::uint8_t op) {
+    const Scalar u = sample(in, op);
+    const Scalar y = sample(in, op);
+    const Params theta = m_est.theta();
+    const Covariance p = m_est.covariance();
+    const Eigen::Index samples = m_est.samples();
+    const bonl::EstimatorHealth health = m_est.health();
+    const bonl::UpdateStatus status = m_est.update(u, y);
+    if (verbose()) {
+      std::fprintf(stderr, "update(%.17g, %.17g) -> %d, trace %.17g\n", double(u), double(y), int(status),
+                   double(m_est.covariance().trace()));
+    }
+    const bonl::EstimatorHealth& now = m_est.health();
+    const bool finite = std::isfinite(u) && std::isfinite(y);
+    const bool same_theta = same(theta, m_est.theta());
+    // P is kept, or (recover_after) reset to p0 I by an automatic recovery in this update.
+    const bool recovered = now.recoveries == health.recoveries + 1;
+    FUZZ_CHECK(now.recoveries == health.recoveries || recovered);
+    const bool kept_p = recovered ? is_initial_covariance() : same(p, m_est.covariance());
+    switch (status) {
+      case bonl::UpdateStatus::RejectedNonFinite:
+        FUZZ_CHECK(!finite);
+        FUZZ_CHECK(same_theta && same(p, m_est.covariance()) && m_est.samples() == samples);
+        FUZZ_CHECK(now.diverged == health.diverged && now.failures == health.failures && !recovered);
+        return;  // not recorded either
+      case bonl::UpdateStatus::NumericalFailure:
+        FUZZ_CHECK(finite && same_theta && kept_p && m_est.diverged() && now.failures == health.failures + 1);
+        break;
+      case bonl::UpdateStatus::NoInformation:
+        FUZZ_CHECK(finite && same_theta && kept_p && now.failures == health.failures);
+        FUZZ_CHECK(m_est.diverged() == health.diverged);
+        break;
+      case bonl::UpdateStatus::Updated:
+        FUZZ_CHECK(finite && !recovered && now.failures == health.failures && now.consecutive_failures == 0);
+        FUZZ_CHECK(m_est.diverged() == health.diverged);
+        break;
+      default:
+        FUZZ_CHECK(false);
+    }
+    FUZZ_CHECK(m_est.samples() == samples + 1);
+    FUZZ_CHECK(m_est.diverged() == now.diverged);
+    if (m_est.recording()) {  // the newest entry is this update
+      ++m_recorded;
+      const auto trajectory = m_est.trajectory();
+      const auto count = static_cast<std::size_t>(std::min(m_recorded, m_capacity));
+      FUZZ_CHECK(trajectory.status.size() == count && trajectory.sample.size() == count);
+      FUZZ_CHECK(trajectory.theta.cols() == static_cast<Eigen::Index>(count) && trajectory.theta.rows() == m_n);
+      FUZZ_CHECK(trajectory.status.back() == status);
+      const Params newest = trajectory.theta.col(trajectory.theta.cols() - 1);
+      FUZZ_CHECK(same(newest, m_est.theta()));
+    }
+  }
+
+  void reset_to(FuzzedDataProvider& in) {
+    const bool wrong_size = in.ConsumeIntegral<std::uint8_t>() < 32;
+    const Eigen::Index size = wrong_size ? m_n + (in.ConsumeBool() ? 1 : -1) : m_n;
+    VectorX theta0(size);
+    bool finite = true;
+    for (Eigen::Index i = 0; i < size; ++i) {
+      theta0[i] = in.ConsumeBool() ? Scalar(0) : to_scalar<Scalar>(any_double(in));
+      finite = finite && std::isfinite(theta0[i]);
+    }
+    try {
+      m_est.reset(theta0);
+      FUZZ_CHECK(size == m_n && finite);
+      FUZZ_CHECK(same(theta0, m_est.theta()));
+      check_fresh_covariance();
+      m_recorded = 0;
+    } catch (const std::invalid_argument&) {
+      FUZZ_CHECK(size != m_n || !finite);
+    }
+  }
+
+  void check_fresh() {
+    FUZZ_CHECK(same(m_structure.initial_estimate(to_scalar<Scalar>(m_est.options().c0)), m_est.theta()));
+    check_fresh_covariance();
+    m_recorded = 0;
+  }
+
+  void check_fresh_covariance() {
+    FUZZ_CHECK(m_est.samples() == 0 && !m_est.diverged());
+    FUZZ_CHECK(m_est.health().failures == 0 && m_est.health().recoveries == 0);
+    FUZZ_CHECK(is_initial_covariance());
+  }
+
+  void check_invariants() {
+    const Params& theta = m_est.theta();
+    const Covariance p = m_est.covariance();
+    FUZZ_CHECK(theta.size() == m_n && p.rows() == m_n && p.cols() == m_n);
+    if (!theta.allFinite()) {
+      std::fprintf(stderr, "theta is not finite\n");
+      FUZZ_CHECK(false);
+    }
+    double trace = 0.0;
+    for (Eigen::Index i = 0; i < m_n; ++i) {
+      if (!(p(i, i) > Scalar(0))) std::fprintf(stderr, "P(%ld,%ld) = %g\n", long(i), long(i), double(p(i, i)));
+      FUZZ_CHECK(p(i, i) > Scalar(0));
+      trace += static_cast<double>(p(i, i));
+      for (Eigen::Index j = 0; j < m_n; ++j) {
+        if (!std::isfinite(p(i, j))) std::fprintf(stderr, "P(%ld,%ld) = %g\n", long(i), long(j), double(p(i, j)));
+        FUZZ_CHECK(std::isfinite(p(i, j)));
+        if (!same_bits(&p(i, j), &p(j, i), 1)) {
+          std::fprintf(stderr, "P(%ld,%ld) = %.17g but P(%ld,%ld) = %.17g\n", long(i), long(j), double(p(i, j)),
+                       long(j), long(i), double(p(j, i)));
+          FUZZ_CHECK(false);
+        }
+      }
+    }
+    // The trace ceiling, up to the rounding of the n-term trace and of the scaling that enforces it.
+    const double slack = 1.0 + 4.0 * static_cast<double>(m_n + 2) * static_cast<double>(std::numeric_limits<Scalar>::epsilon());
+    if (!(trace <= m_max_trace * slack)) {
+      std::fprintf(stderr, "trace(P) = %.17g above the ceiling %.17g\n", trace, m_max_trace);
+      FUZZ_CHECK(false);
+    }
+  }
+
+  Model m_structure;
+  Est m_est;
+  Eigen::Index m_n;
+  double m_max_trace = 0.0;
+  Eigen::Index m_capacity = 0;
+  Eigen::Index m_recorded = 0;
+};
+
+template <class Model>
+void fuzz(FuzzedDataProvider& in, const Orders& orders) {
+  std::optional<Model> structure;
+  try {
+    structure.emplace(ModelInfo<Model>::make(orders));
+  } catch (const std::invalid_argument&) {
+    FUZZ_CHECK(!ModelInfo<Model>::valid(orders));
+    return;
+  }
+  FUZZ_CHECK(ModelInfo<Model>::valid(orders));
+
+  const bonl::EstimatorOptions options = decode_options(in);
+  print(options);
+  std::optional<Harness<Model>> harness;
+  try {
+    harness.emplace(*structure, options);
+  } catch (const std::invalid_argument& e) {
+    if (options_valid<Model>(options)) std::fprintf(stderr, "valid options rejected: %s\n", e.what());
+    FUZZ_CHECK(!options_valid<Model>(options));
+    return;
+  }
+  FUZZ_CHECK(options_valid<Model>(options));
+  harness->run(in);
+}
+
+/// Kinds 0-5 (run-time orders, paper orders in double for ARX and Hammerstein) are instantiated in
+/// fuzz_estimator_update.cpp; kinds 6-11 (paper H-W and P-H-W, the four in float) here.
+void fuzz_kinds_6_to_11(int kind, FuzzedDataProvider& in, const Orders& orders);
+
+}  // namespace bonl_fuzz

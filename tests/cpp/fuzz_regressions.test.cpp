@@ -1,6 +1,5 @@
 // Reproducers of what the libFuzzer targets (fuzz/, docs/fuzzing.md) found in the estimator,
-// reduced to plain inputs. A test tagged [!shouldfail] reproduces a bug that is not fixed yet: it
-// passes while the bug is there, and fails once the bug is fixed, as a reminder to drop the tag.
+// reduced to plain inputs. Both were fixed in Rls::update (rls.hpp); these keep them fixed.
 // (The plant's reproducers are in plant_fuzz_regressions.test.cpp, which links bonl::plant.)
 
 #include <catch2/catch.hpp>
@@ -14,12 +13,14 @@
 // P phi phi' P / denominator = P_00 (1 - 0.98 / (0.98 + 1e6 u^2)), the check passes on a rounding
 // residue and the update returns Updated with P(0, 0) = 0 exactly: a singular covariance reported
 // as a good update. The default settings and an input of 1e5 (a pressure in Pa, say) suffice.
-TEST_CASE("an accepted update keeps every diagonal entry of P positive", "[!shouldfail]") {
+// Fixed: the check now runs on h_i^2 and keeps a margin of 64 roundings; this update is refused.
+TEST_CASE("an accepted update keeps every diagonal entry of P positive", "[fuzz]") {
   bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1));
   REQUIRE(estimator.update(100006.0, 0.0) == bonl::UpdateStatus::Updated);  // phi = 0: nothing to learn yet
   const bonl::UpdateStatus status = estimator.update(0.0, 0.0);             // phi = (100006, 0, ...)
   INFO("status " << static_cast<int>(status) << ", P(0, 0) = " << estimator.covariance()(0, 0));
   CHECK(estimator.covariance()(0, 0) > 0.0);
+  CHECK(status == bonl::UpdateStatus::NumericalFailure);
 }
 
 // fuzz_estimator_update: with a very small forgetting factor the trace ceiling is enforced on
@@ -27,7 +28,8 @@ TEST_CASE("an accepted update keeps every diagonal entry of P positive", "[!shou
 // scaling that should bring the trace to the ceiling overshoots it (here by 0.4 %), and P, scaled
 // up from round-off, is no longer positive definite. lambda = 1e-20 is absurd but valid ((0, 1]);
 // the overshoot appears from about lambda = 1e-2 (4.6e-11 relative).
-TEST_CASE("the trace ceiling holds with a tiny forgetting factor", "[!shouldfail]") {
+// Fixed: the ceiling is applied to the trace computed after the downdate.
+TEST_CASE("the trace ceiling holds with a tiny forgetting factor", "[fuzz]") {
   bonl::EstimatorOptions options;  // trace_ceiling 1: trace(P) <= 6 * p0
   options.forgetting = bonl::ForgettingSchedule::constant(1e-20);
   bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1), options);

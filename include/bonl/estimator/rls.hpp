@@ -123,28 +123,31 @@ class Rls {
     const Scalar error = target - phi.dot(m_theta);
     next = m_theta + (error * inverse) * h;
     if (!next.allFinite()) return false;
-    // The new diagonal, P_ii - (P phi)_i^2 / denominator, must stay positive (a vectorised minimum:
-    // every term is finite here, since next is).
-    if (!((m_P.diagonal().template head<N_>(n).array() - h.array().square() * inverse).minCoeff() > Scalar(0))) {
-      return false;
-    }
-    // Forgetting, decided before anything changes: trace(P - h h') = trace(P) - |h|^2.
+    // h = P phi / sqrt(denominator); the downdate is P -= h h'. Each new diagonal entry
+    // P_ii - h_i^2 must stay above a few roundings of P_ii: below that the subtraction has cancelled
+    // and what is left is round-off (a direction pinned down beyond P's resolution, e.g. one input of
+    // 1e5 with P(0) = 1e6 I, left P_00 = 0 exactly and "Updated"; found by fuzzing).
     p_phi *= std::sqrt(inverse);
-    Scalar growth = Scalar(1);
-    bool limited = false;
-    if (lambda != Scalar(1)) {
-      growth = Scalar(1) / lambda;
-      const Scalar trace = m_P.trace() - p_phi.squaredNorm();
-      if (trace * growth > max_trace) {
-        growth = std::max(Scalar(1), max_trace / trace);
-        limited = true;
-      }
-      if (!std::isfinite(trace * growth)) return false;  // P would overflow (no ceiling)
-    }
+    const auto diagonal = m_P.diagonal().template head<N_>(n).array();
+    constexpr Scalar kMargin = Scalar(64) * std::numeric_limits<Scalar>::epsilon();
+    if (!((diagonal - h.array().square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
+    // Forgetting would overflow P (possible only without a ceiling: the trace can only fall by the
+    // downdate, so trace(P) / lambda bounds it).
+    if (lambda != Scalar(1) && !std::isfinite(std::min(m_P.trace() / lambda, max_trace))) return false;
     m_theta = next;
     m_P.noalias() -= p_phi * p_phi.transpose();
-    if (growth != Scalar(1)) m_P *= growth;
-    m_forgetting_limited = limited;
+    m_forgetting_limited = false;
+    if (lambda != Scalar(1)) {
+      // The ceiling is applied to the trace after the downdate as computed, not as trace(P) - |h|^2,
+      // which cancels when the downdate removes most of P (a tiny lambda overshot the ceiling).
+      Scalar growth = Scalar(1) / lambda;
+      const Scalar trace = m_P.trace();
+      if (trace * growth > max_trace) {
+        growth = std::max(Scalar(1), max_trace / trace);
+        m_forgetting_limited = true;
+      }
+      if (growth != Scalar(1)) m_P *= growth;
+    }
     return true;
   }
 

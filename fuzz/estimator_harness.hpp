@@ -55,7 +55,7 @@ struct ModelInfo<bonl::HammersteinWiener<S, Na, Nb, R, R1>> {
 };
 template <typename S, int Na, int Nb, int R>
 struct ModelInfo<bonl::PseudoHammersteinWiener<S, Na, Nb, R>> {
-  static constexpr bool kUsesC0 = true;
+  static constexpr bool kUsesC0 = true;  // and the only model with a constrained parameter (c >= 0)
   static bonl::PseudoHammersteinWiener<S, Na, Nb, R> make(const Orders& o) { return {o.na, o.nb, o.nk, o.r}; }
   static bool valid(const Orders& o) { return ModelInfo<bonl::Hammerstein<S, Na, Nb, R>>::valid(o); }
 };
@@ -126,6 +126,18 @@ inline void print(const bonl::EstimatorOptions& o) {
                o.p0, o.c0, long(o.internal_refresh), o.trace_ceiling, long(o.recover_after));
 }
 
+/// With BONL_FUZZ_STATS set: how the inputs and updates ended, printed at exit (docs/fuzzing.md).
+struct Outcomes {
+  long bad_orders = 0, bad_options = 0, estimators = 0, status[4] = {0, 0, 0, 0};
+  ~Outcomes() {
+    if (std::getenv("BONL_FUZZ_STATS") == nullptr) return;
+    std::fprintf(stderr, "outcomes: orders rejected %ld, options rejected %ld, estimators run %ld; updates: Updated %ld, "
+                 "NoInformation %ld, RejectedNonFinite %ld, NumericalFailure %ld\n", bad_orders, bad_options, estimators,
+                 status[0], status[1], status[2], status[3]);
+  }
+};
+inline Outcomes outcomes;
+
 inline bool lambda_ok(double lambda) { return std::isfinite(lambda) && lambda > 0.0 && lambda <= 1.0; }
 
 /// What EstimatorOptions::validate and the estimator's constructor accept, per their documentation.
@@ -188,8 +200,12 @@ class Harness {
         m_recorded = 0;
         FUZZ_CHECK(m_est.recording() && m_est.trajectory().status.empty());
       } else {
-        const Model model = m_est.model();  // theta is finite, so it is a valid model
-        FUZZ_CHECK(same(model.theta(), m_est.theta()));
+        // theta is finite, so it is a valid model once projected (the P-H-W c < 0 of the paper
+        // method becomes 0); nothing else changes.
+        const Model model = m_est.model();
+        Params expected = m_est.theta();
+        if (ModelInfo<Model>::kUsesC0 && expected[m_n - 1] < Scalar(0)) expected[m_n - 1] = Scalar(0);
+        FUZZ_CHECK(same(model.theta(), expected));
       }
       check_invariants();
     }
@@ -220,6 +236,8 @@ class Harness {
     const Eigen::Index samples = m_est.samples();
     const bonl::EstimatorHealth health = m_est.health();
     const bonl::UpdateStatus status = m_est.update(u, y);
+    const auto status_index = static_cast<std::size_t>(status);
+    if (status_index < 4) ++outcomes.status[status_index];
     if (verbose()) {
       std::fprintf(stderr, "update(%.17g, %.17g) -> %d, trace %.17g\n", double(u), double(y), int(status),
                    double(m_est.covariance().trace()));
@@ -320,9 +338,12 @@ class Harness {
         }
       }
     }
-    // The trace ceiling, up to the rounding of the n-term trace and of the scaling that enforces it.
-    const double slack = 1.0 + 4.0 * static_cast<double>(m_n + 2) * static_cast<double>(std::numeric_limits<Scalar>::epsilon());
-    if (!(trace <= m_max_trace * slack)) {
+    // The trace ceiling, up to the rounding of the n-term trace and of the scaling that enforces it:
+    // relative, and absolute in Scalar's denormals (p0 may be denormal: it is finite and > 0).
+    const double terms = 4.0 * static_cast<double>(m_n + 2);
+    const double slack = m_max_trace * terms * static_cast<double>(std::numeric_limits<Scalar>::epsilon()) +
+                         terms * static_cast<double>(std::numeric_limits<Scalar>::denorm_min());
+    if (!(trace <= m_max_trace + slack)) {
       std::fprintf(stderr, "trace(P) = %.17g above the ceiling %.17g\n", trace, m_max_trace);
       FUZZ_CHECK(false);
     }
@@ -343,6 +364,7 @@ void fuzz(FuzzedDataProvider& in, const Orders& orders) {
     structure.emplace(ModelInfo<Model>::make(orders));
   } catch (const std::invalid_argument&) {
     FUZZ_CHECK(!ModelInfo<Model>::valid(orders));
+    ++outcomes.bad_orders;
     return;
   }
   FUZZ_CHECK(ModelInfo<Model>::valid(orders));
@@ -355,9 +377,11 @@ void fuzz(FuzzedDataProvider& in, const Orders& orders) {
   } catch (const std::invalid_argument& e) {
     if (options_valid<Model>(options)) std::fprintf(stderr, "valid options rejected: %s\n", e.what());
     FUZZ_CHECK(!options_valid<Model>(options));
+    ++outcomes.bad_options;
     return;
   }
   FUZZ_CHECK(options_valid<Model>(options));
+  ++outcomes.estimators;
   harness->run(in);
 }
 

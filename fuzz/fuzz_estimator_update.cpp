@@ -22,7 +22,8 @@
 // - reset() gives theta = the model's initial estimate, P = p0 I, samples() = 0, diverged() false,
 //   health cleared; reset(theta0) throws std::invalid_argument for a wrong size or a non-finite
 //   entry and otherwise gives theta = theta0, P = p0 I; start_pass() keeps theta and P and sets
-//   samples() to 0; recover() keeps theta, sets P = p0 I and clears diverged().
+//   samples() to 0; recover() keeps theta, sets P = p0 I and clears diverged(); model() is theta
+//   with a P-H-W c < 0 projected to 0.
 // - While recording, the newest entry of trajectory() is the last update's status and theta.
 
 #include <cstdint>

@@ -3,6 +3,10 @@
 // Contract checked (besides ASan/UBSan/LSan and no hang):
 // - load_model either returns a model or throws std::invalid_argument whose message starts with
 //   "bonl: model JSON: "; any other exception is a finding.
+// - What it accepts is a model file by the format's rules, checked on a separate plain parse:
+//   exactly the keys of the kind, format "bonl-model", version 1, integer orders in range,
+//   arrays of finite numbers of the right lengths, b_0 = 1, q_1 = 1, c >= 0; and the loaded
+//   model's numbers are those of the file, bit for bit.
 // - The typed readers agree with load_model: model_from_json<K> (run-time orders) succeeds exactly
 //   when load_model returned kind K, with bit-identical parameters; the fixed-order (paper) type
 //   succeeds exactly when the orders match too; the float type exactly when every number fits in
@@ -16,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -139,9 +144,82 @@ bool paper_orders(const M& m) {
   return true;
 }
 
+/// The format's rules, checked independently of the reader on a plain nlohmann parse of the same
+/// text: what load_model accepted must be a bonl model file, and hold exactly the model's numbers.
+bool exact_keys(const nlohmann::json& object, std::initializer_list<const char*> keys) {
+  if (!object.is_object() || object.size() != keys.size()) return false;
+  for (const char* key : keys) {
+    if (!object.contains(key)) return false;
+  }
+  return true;
+}
+
+bool order_ok(const nlohmann::json& value, std::int64_t minimum, std::int64_t maximum, Eigen::Index expected) {
+  if (!value.is_number_integer()) return false;
+  if (value.is_number_unsigned() && value.get<std::uint64_t>() > static_cast<std::uint64_t>(maximum)) return false;
+  const auto order = value.get<std::int64_t>();
+  return order >= minimum && order <= maximum && order == static_cast<std::int64_t>(expected);
+}
+
+template <typename Vector>
+bool numbers_ok(const nlohmann::json& value, const Vector& expected) {
+  if (!value.is_array() || value.size() != static_cast<std::size_t>(expected.size())) return false;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (!value[i].is_number()) return false;
+    const double x = value[i].get<double>();
+    if (!std::isfinite(x) || !same_bits(&x, &expected[static_cast<Eigen::Index>(i)], 1)) return false;
+  }
+  return true;
+}
+
+template <class M>
+void check_format(const std::string& text, const M& model) {
+  constexpr std::int64_t kMax = bonl::io::kMaxModelOrder;
+  const nlohmann::json document = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  FUZZ_CHECK(!document.is_discarded());
+  FUZZ_CHECK(exact_keys(document, {"format", "version", "model", "orders", "params"}));
+  FUZZ_CHECK(document["format"] == "bonl-model");
+  FUZZ_CHECK(document["version"].is_number_integer() && document["version"] == 1);
+  const char* names[] = {"ARX", "Hammerstein", "HammersteinWiener", "PseudoHammersteinWiener"};
+  FUZZ_CHECK(document["model"] == names[kIndex<M>]);
+  const nlohmann::json& orders = document["orders"];
+  const nlohmann::json& params = document["params"];
+  // The keys first (operator[] on a const json needs them).
+  if constexpr (!kBlock<M>) {
+    FUZZ_CHECK(exact_keys(orders, {"na", "nb", "nk"}) && exact_keys(params, {"b", "a"}));
+  } else if constexpr (kHw<M>) {
+    FUZZ_CHECK(exact_keys(orders, {"na", "nb", "nk", "r", "r1"}) && exact_keys(params, {"b", "a", "f", "p", "q"}));
+  } else if constexpr (std::is_same_v<M, bonl::PseudoHammersteinWienerd>) {
+    FUZZ_CHECK(exact_keys(orders, {"na", "nb", "nk", "r"}) && exact_keys(params, {"b", "a", "f", "p", "c"}));
+  } else {
+    FUZZ_CHECK(exact_keys(orders, {"na", "nb", "nk", "r"}) && exact_keys(params, {"b", "a", "f", "p"}));
+  }
+  FUZZ_CHECK(order_ok(orders["na"], 1, kMax, model.na()));
+  FUZZ_CHECK(order_ok(orders["nb"], 0, kMax, model.nb()));
+  FUZZ_CHECK(order_ok(orders["nk"], 0, kMax, model.nk()));
+  FUZZ_CHECK(numbers_ok(params["b"], model.b()) && numbers_ok(params["a"], model.a()));
+  if constexpr (kBlock<M>) {
+    FUZZ_CHECK(order_ok(orders["r"], 1, kMax, model.r()));
+    FUZZ_CHECK(params["b"][0] == 1.0);  // b_0 = 1
+    FUZZ_CHECK(numbers_ok(params["f"], model.f()) && numbers_ok(params["p"], model.p()));
+  }
+  if constexpr (kHw<M>) {
+    FUZZ_CHECK(order_ok(orders["r1"], 2, 32, model.r1()));
+    FUZZ_CHECK(numbers_ok(params["q"], model.q()) && params["q"][0] == 1.0);  // q_1 = 1
+  }
+  if constexpr (std::is_same_v<M, bonl::PseudoHammersteinWienerd>) {
+    const nlohmann::json& c = params["c"];
+    FUZZ_CHECK(c.is_number() && std::isfinite(c.get<double>()) && c.get<double>() >= 0.0);
+    const double value = c.get<double>(), expected = model.c();
+    FUZZ_CHECK(same_bits(&value, &expected, 1));
+  }
+}
+
 template <class M>
 void check_loaded(const std::string& text, const M& model, unsigned salt) {
   using K = Kinds<M>;
+  check_format(text, model);
+
   // Run-time orders: the same model, bit for bit.
   const auto dynamic = typed_read<typename K::Dynamic>(text);
   FUZZ_CHECK(dynamic.has_value() && same_model(*dynamic, model));

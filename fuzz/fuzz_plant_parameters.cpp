@@ -96,6 +96,16 @@ void print(const Parameters& p) {
 }
 
 /// validate(): true when accepted; a rejection must be an invalid_argument naming a field.
+/// With BONL_FUZZ_STATS set: how the inputs ended, printed at exit (docs/fuzzing.md quotes them).
+struct Outcomes {
+  long rejected = 0, accepted = 0, simulated = 0, invalid_argument = 0, numerical_error = 0;
+  ~Outcomes() {
+    if (std::getenv("BONL_FUZZ_STATS") == nullptr) return;
+    std::fprintf(stderr, "outcomes: validate rejected %ld, accepted %ld; simulate returned %ld, threw invalid_argument %ld, "
+                 "NumericalError %ld\n", rejected, accepted, simulated, invalid_argument, numerical_error);
+  }
+} outcomes;
+
 bool validates(const Parameters& p) {
   try {
     p.validate();
@@ -133,6 +143,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   print(p);
   const bool accepted = validates(p);
   if (accepted) check_accepted(p);
+  ++(accepted ? outcomes.accepted : outcomes.rejected);
 
   // A very short simulation: 5 command intervals, a command cycling through up to 4 voltages.
   bonl::plant::SimulationOptions options;
@@ -169,6 +180,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const bonl::plant::Trajectory out = bonl::plant::simulate(p, command, options);
     FUZZ_CHECK(!may_reject);
+    ++outcomes.simulated;
     const std::pair<const char*, const Eigen::VectorXd*> columns[] = {
         {"time", &out.time},           {"command", &out.command},         {"input", &out.input},
         {"position", &out.position},   {"velocity", &out.velocity},       {"head_pressure", &out.head_pressure},
@@ -185,9 +197,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_CHECK(std::isfinite(out.min_position) && std::isfinite(out.max_position));
     FUZZ_CHECK(out.min_position <= out.max_position);
   } catch (const std::invalid_argument& e) {
+    ++outcomes.invalid_argument;
     if (!may_reject) std::fprintf(stderr, "simulate rejected valid input: %s\n", e.what());
     FUZZ_CHECK(may_reject);
   } catch (const bonl::NumericalError& e) {
+    ++outcomes.numerical_error;
     if (must_reject) {  // bad parameters and options are reported as such, before any integration
       std::fprintf(stderr, "simulate: NumericalError instead of invalid_argument (accepted %d, initial position %d): %s\n",
                    accepted, good_position, e.what());

@@ -1,8 +1,12 @@
 // Reproducers of what the libFuzzer targets (fuzz/, docs/fuzzing.md) found in the estimator,
-// reduced to plain inputs. Both were fixed in Rls::update (rls.hpp); these keep them fixed.
+// reduced to plain inputs. The first two were fixed in Rls::update (rls.hpp); these keep them fixed.
+// A test tagged [!shouldfail] reproduces a bug that is not fixed yet: it passes while the bug is
+// there, and fails once the bug is fixed, as a reminder to drop the tag.
 // (The plant's reproducers are in plant_fuzz_regressions.test.cpp, which links bonl::plant.)
 
 #include <catch2/catch.hpp>
+
+#include <limits>
 
 #include "bonl/estimator.hpp"
 #include "bonl/models.hpp"
@@ -43,4 +47,22 @@ TEST_CASE("the trace ceiling holds with a tiny forgetting factor", "[fuzz]") {
                 << estimator.covariance().trace());
     CHECK(estimator.covariance().trace() <= ceiling * (1.0 + 1e-14));
   }
+}
+
+// fuzz_estimator_update, after the fix above: the overflow guard checks trace(P) / lambda, but P is
+// then scaled by growth = 1 / lambda, which overflows for a denormal lambda although trace / lambda
+// is finite (1 / 1e-309 = inf, 6e-3 / 1e-309 = 6e306). Without a ceiling (trace_ceiling = inf) the
+// update returns Updated with P(0, 0) = inf and P(0, 1) = 0 * inf = NaN. (The code before the fix
+// tested trace * growth and refused it.) lambda = 1e-309 is absurd but valid ((0, 1]).
+TEST_CASE("a denormal forgetting factor without a ceiling never makes P non-finite", "[fuzz][!shouldfail]") {
+  bonl::EstimatorOptions options;
+  options.forgetting = bonl::ForgettingSchedule::constant(1e-309);
+  options.trace_ceiling = std::numeric_limits<double>::infinity();
+  options.p0 = 1e-3;
+  bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1), options);
+  estimator.update(0.5, 0.25);  // phi = 0: refused, since 1 / (lambda + 0) overflows
+  const bonl::UpdateStatus status = estimator.update(0.5, 0.25);  // phi = (0.5, 0, 0, -0.25, 0, 0)
+  INFO("status " << static_cast<int>(status) << ", P(0, 0) = " << estimator.covariance()(0, 0) << ", P(0, 1) = "
+                 << estimator.covariance()(0, 1));
+  CHECK(estimator.covariance().allFinite());
 }

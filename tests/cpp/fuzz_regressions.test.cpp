@@ -1,7 +1,5 @@
 // Reproducers of what the libFuzzer targets (fuzz/, docs/fuzzing.md) found in the estimator,
-// reduced to plain inputs. The first two were fixed in Rls::update (rls.hpp); these keep them fixed.
-// A test tagged [!shouldfail] reproduces a bug that is not fixed yet: it passes while the bug is
-// there, and fails once the bug is fixed, as a reminder to drop the tag.
+// reduced to plain inputs. All three were fixed in Rls::update (rls.hpp); these keep them fixed.
 // (The plant's reproducers are in plant_fuzz_regressions.test.cpp, which links bonl::plant.)
 
 #include <catch2/catch.hpp>
@@ -54,7 +52,8 @@ TEST_CASE("the trace ceiling holds with a tiny forgetting factor", "[fuzz]") {
 // is finite (1 / 1e-309 = inf, 6e-3 / 1e-309 = 6e306). Without a ceiling (trace_ceiling = inf) the
 // update returns Updated with P(0, 0) = inf and P(0, 1) = 0 * inf = NaN. (The code before the fix
 // tested trace * growth and refused it.) lambda = 1e-309 is absurd but valid ((0, 1]).
-TEST_CASE("a denormal forgetting factor without a ceiling never makes P non-finite", "[fuzz][!shouldfail]") {
+// Fixed: the guard tests trace(P) * (1 / lambda), the factor P is scaled by; the update is refused.
+TEST_CASE("a denormal forgetting factor without a ceiling never makes P non-finite", "[fuzz]") {
   bonl::EstimatorOptions options;
   options.forgetting = bonl::ForgettingSchedule::constant(1e-309);
   options.trace_ceiling = std::numeric_limits<double>::infinity();
@@ -65,4 +64,5 @@ TEST_CASE("a denormal forgetting factor without a ceiling never makes P non-fini
   INFO("status " << static_cast<int>(status) << ", P(0, 0) = " << estimator.covariance()(0, 0) << ", P(0, 1) = "
                  << estimator.covariance()(0, 1));
   CHECK(estimator.covariance().allFinite());
+  CHECK(status == bonl::UpdateStatus::NumericalFailure);
 }

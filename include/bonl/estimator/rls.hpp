@@ -132,15 +132,17 @@ class Rls {
     constexpr Scalar kMargin = Scalar(64) * std::numeric_limits<Scalar>::epsilon();
     if (!((diagonal - h.array().square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
     // Forgetting would overflow P (possible only without a ceiling: the trace can only fall by the
-    // downdate, so trace(P) / lambda bounds it).
-    if (lambda != Scalar(1) && !std::isfinite(std::min(m_P.trace() / lambda, max_trace))) return false;
+    // downdate, so trace(P) / lambda bounds it). Tested with 1 / lambda, the factor P is scaled by:
+    // for a denormal lambda it is infinite although trace / lambda is not (found by fuzzing).
+    const Scalar inverse_lambda = Scalar(1) / lambda;
+    if (lambda != Scalar(1) && !std::isfinite(std::min(m_P.trace() * inverse_lambda, max_trace))) return false;
     m_theta = next;
     m_P.noalias() -= p_phi * p_phi.transpose();
     m_forgetting_limited = false;
     if (lambda != Scalar(1)) {
       // The ceiling is applied to the trace after the downdate as computed, not as trace(P) - |h|^2,
       // which cancels when the downdate removes most of P (a tiny lambda overshot the ceiling).
-      Scalar growth = Scalar(1) / lambda;
+      Scalar growth = inverse_lambda;
       const Scalar trace = m_P.trace();
       if (trace * growth > max_trace) {
         growth = std::max(Scalar(1), max_trace / trace);

@@ -173,9 +173,7 @@ class Estimator {
   /// (Resetting P instead made each pass a fresh start from a 100-sample estimate; for P-H-W that
   /// diverged over passes.)
   void start_pass() {
-    m_terms.reset();
-    m_theta_internal = m_rls.theta();
-    m_since_refresh = 0;
+    restart_internals();
     m_sample = 0;
   }
 
@@ -219,7 +217,6 @@ class Estimator {
 
   const Params& theta() const noexcept { return m_rls.theta(); }
   Covariance covariance() const { return m_rls.covariance(); }
-  /// The current estimate as a model.
   /// The current estimate as a model, projected onto the model's valid set (the paper method's
   /// P-H-W estimate can have c < 0, which simulates as c = 0).
   Model model() const {

@@ -21,6 +21,9 @@
 #include <variant>
 #include <vector>
 
+#include "bad_input_cases.hpp"
+#include "known_systems.hpp"
+
 namespace {
 
 using Catch::Matchers::Contains;
@@ -29,36 +32,9 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 constexpr Eigen::Index kHuge = std::numeric_limits<Eigen::Index>::max();
 
-Eigen::VectorXd vec(std::initializer_list<double> values) {
-  Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index i = 0;
-  for (double value : values) v[i++] = value;
-  return v;
-}
-
-/// One row's call and the fragment its message must contain.
-struct Case {
-  std::string what;
-  std::function<void()> call;
-  std::string message;
-};
-
-/// Each call must throw `Exception` (an exception of another type escapes and fails the test case)
-/// with a message that contains the case's fragment.
-template <class Exception>
-void check_cases(const std::vector<Case>& cases) {
-  for (const Case& c : cases) {
-    INFO(c.what);
-    bool thrown = false;
-    try {
-      c.call();
-    } catch (const Exception& e) {
-      thrown = true;
-      CHECK_THAT(std::string(e.what()), Contains(c.message));
-    }
-    CHECK(thrown);
-  }
-}
+using bonl_test::vec;
+using bonl_test::Case;
+using bonl_test::check_cases;
 
 // Small known systems with run-time orders: na = 2, nb = 1, nk = 2, r = 2, r1 = 3.
 const Eigen::VectorXd kF = vec({0.01, 0.8, 0.1});

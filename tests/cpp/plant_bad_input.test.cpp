@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "bad_input_cases.hpp"
+
 namespace {
 
 using Catch::Matchers::Contains;
@@ -27,28 +29,8 @@ namespace excitation = bonl::plant::excitation;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 
-struct Case {
-  std::string what;
-  std::function<void()> call;
-  std::string message;
-};
-
-/// Each call must throw `Exception` (another type escapes and fails the test case) with a message
-/// that contains the case's fragment.
-template <class Exception>
-void check_cases(const std::vector<Case>& cases) {
-  for (const Case& c : cases) {
-    INFO(c.what);
-    bool thrown = false;
-    try {
-      c.call();
-    } catch (const Exception& e) {
-      thrown = true;
-      CHECK_THAT(std::string(e.what()), Contains(c.message));
-    }
-    CHECK(thrown);
-  }
-}
+using bonl_test::Case;
+using bonl_test::check_cases;
 
 /// A short run: 0.05 s.
 plant::SimulationOptions short_run() {

@@ -62,6 +62,49 @@ Trajectory constant_command(double voltage, double duration, double sample_time 
   return bonl::plant::simulate(Parameters{}, [voltage](double) { return voltage; }, options);
 }
 
+/// Worst differences between CVODE's trajectory `r` (1 ms output grid, no sensor noise) and RK4 on
+/// derivative() with 100 steps per 1 ms command interval, the pilot play evaluated the same way
+/// (engaged at t = 0) and the load held per interval: an oracle independent of CVODE.
+struct Rk4Differences {
+  double position = 0.0, velocity = 0.0, head_pressure = 0.0;
+};
+template <typename Command, typename Load>
+Rk4Differences rk4_differences(const Parameters& p, Command command, Load load, const Trajectory& r, int intervals) {
+  bonl::plant::State s = bonl::plant::initial_state(p, 0.5 * p.stroke);
+  const auto opening = [&](double v) {
+    const double e = std::clamp(v, 0.0, p.max_voltage) - p.neutral_voltage;
+    return std::copysign(std::max(std::abs(e) - p.dead_band, 0.0), e) * p.valve_gain();
+  };
+  const auto axpy = [](const bonl::plant::State& x, double a, const bonl::plant::State& d) {
+    bonl::plant::State y;
+    y.position = x.position + a * d.position;
+    y.velocity = x.velocity + a * d.velocity;
+    y.head_pressure = x.head_pressure + a * d.head_pressure;
+    y.rod_pressure = x.rod_pressure + a * d.rod_pressure;
+    y.spool = x.spool + a * d.spool;
+    return y;
+  };
+  double pilot = opening(command(0.0));
+  const int substeps = 100;
+  const double h = 1e-3 / substeps;
+  Rk4Differences worst;
+  for (int j = 0; j < intervals; ++j) {
+    if (j > 0) pilot = bonl::Backlash<double>::map(opening(command(j * 1e-3)), pilot, p.pilot_hysteresis);
+    const double f = load(j * 1e-3);
+    for (int i = 0; i < substeps; ++i) {
+      const auto k1 = bonl::plant::derivative(p, s, pilot, f);
+      const auto k2 = bonl::plant::derivative(p, axpy(s, 0.5 * h, k1), pilot, f);
+      const auto k3 = bonl::plant::derivative(p, axpy(s, 0.5 * h, k2), pilot, f);
+      const auto k4 = bonl::plant::derivative(p, axpy(s, h, k3), pilot, f);
+      s = axpy(axpy(axpy(axpy(s, h / 6.0, k1), h / 3.0, k2), h / 3.0, k3), h / 6.0, k4);
+    }
+    worst.position = std::max(worst.position, std::abs(s.position - r.position[j + 1]));
+    worst.velocity = std::max(worst.velocity, std::abs(s.velocity - r.velocity[j + 1]));
+    worst.head_pressure = std::max(worst.head_pressure, std::abs(s.head_pressure - r.head_pressure[j + 1]));
+  }
+  return worst;
+}
+
 }  // namespace
 
 TEST_CASE("the default experiment has the output grid and stays physical") {
@@ -266,8 +309,7 @@ TEST_CASE("the pin angle lags the joint angle on a reversal") {
 }
 
 TEST_CASE("the plant agrees with an independent fixed-step integrator") {
-  // RK4 on derivative() with 100 steps per command interval, the pilot play evaluated the same
-  // way (engaged at t = 0): an oracle independent of CVODE.
+  // RK4 on derivative() with 100 steps per command interval (rk4_differences), no load.
   const Parameters p;
   SimulationOptions options;
   options.duration = 1.0;
@@ -275,45 +317,15 @@ TEST_CASE("the plant agrees with an independent fixed-step integrator") {
   options.sensor_noise = false;
   const auto command = [](double t) { return 2.5 + 1.2 * std::sin(2.0 * kPi * 2.0 * t); };
   const Trajectory r = bonl::plant::simulate(p, command, options);
-
-  bonl::plant::State s = bonl::plant::initial_state(p, 0.5 * p.stroke);
-  const auto opening = [&](double v) {
-    const double e = std::clamp(v, 0.0, p.max_voltage) - p.neutral_voltage;
-    return std::copysign(std::max(std::abs(e) - p.dead_band, 0.0), e) * p.valve_gain();
-  };
-  const auto axpy = [](const bonl::plant::State& x, double a, const bonl::plant::State& d) {
-    bonl::plant::State y;
-    y.position = x.position + a * d.position;
-    y.velocity = x.velocity + a * d.velocity;
-    y.head_pressure = x.head_pressure + a * d.head_pressure;
-    y.rod_pressure = x.rod_pressure + a * d.rod_pressure;
-    y.spool = x.spool + a * d.spool;
-    return y;
-  };
-  double pilot = opening(command(0.0));
-  const int substeps = 100;
-  const double h = 1e-3 / substeps;
-  double worst_position = 0.0, worst_velocity = 0.0, worst_pressure = 0.0;
-  for (int j = 0; j < 1000; ++j) {
-    if (j > 0) pilot = bonl::Backlash<double>::map(opening(command(j * 1e-3)), pilot, p.pilot_hysteresis);
-    for (int i = 0; i < substeps; ++i) {
-      const auto k1 = bonl::plant::derivative(p, s, pilot, 0.0);
-      const auto k2 = bonl::plant::derivative(p, axpy(s, 0.5 * h, k1), pilot, 0.0);
-      const auto k3 = bonl::plant::derivative(p, axpy(s, 0.5 * h, k2), pilot, 0.0);
-      const auto k4 = bonl::plant::derivative(p, axpy(s, h, k3), pilot, 0.0);
-      s = axpy(axpy(axpy(axpy(s, h / 6.0, k1), h / 3.0, k2), h / 3.0, k3), h / 6.0, k4);
-    }
-    worst_position = std::max(worst_position, std::abs(s.position - r.position[j + 1]));
-    worst_velocity = std::max(worst_velocity, std::abs(s.velocity - r.velocity[j + 1]));
-    worst_pressure = std::max(worst_pressure, std::abs(s.head_pressure - r.head_pressure[j + 1]));
-  }
-  INFO("worst differences: h " << worst_position << " m, v " << worst_velocity << " m/s, p1 " << worst_pressure << " Pa");
+  const Rk4Differences worst = rk4_differences(p, command, [](double) { return 0.0; }, r, 1000);
+  INFO("worst differences: h " << worst.position << " m, v " << worst.velocity << " m/s, p1 " << worst.head_pressure
+                               << " Pa");
   // Measured: h 2.2e-6 m, v 4.9e-5 m/s, p1 1.0e3 Pa, i.e. ~1e-4 relative: CVODE at rtol 1e-6 over
   // 1000 held intervals (RK4 at 10 us is far more accurate). Bounds 5x above: 1e-5 m on h (0.1 m
   // of motion), 2.5e-4 m/s on v (~0.3 m/s), 5e3 Pa on p1 (~1e7 Pa).
-  CHECK(worst_position < 1e-5);
-  CHECK(worst_velocity < 2.5e-4);
-  CHECK(worst_pressure < 5e3);
+  CHECK(worst.position < 1e-5);
+  CHECK(worst.velocity < 2.5e-4);
+  CHECK(worst.head_pressure < 5e3);
 }
 
 TEST_CASE("tightening the tolerances ten-fold barely changes the result") {
@@ -532,41 +544,11 @@ TEST_CASE("a load that changes on the command grid is held, with CVODE stopped a
   options.load = load;
   const auto command = [](double t) { return 2.5 + 1.2 * std::sin(2.0 * kPi * 2.0 * t); };
   const Trajectory r = bonl::plant::simulate(p, command, options);
-  bonl::plant::State s = bonl::plant::initial_state(p, 0.5 * p.stroke);
-  const auto opening = [&](double v) {
-    const double e = std::clamp(v, 0.0, p.max_voltage) - p.neutral_voltage;
-    return std::copysign(std::max(std::abs(e) - p.dead_band, 0.0), e) * p.valve_gain();
-  };
-  const auto axpy = [](const bonl::plant::State& x, double a, const bonl::plant::State& d) {
-    bonl::plant::State y;
-    y.position = x.position + a * d.position;
-    y.velocity = x.velocity + a * d.velocity;
-    y.head_pressure = x.head_pressure + a * d.head_pressure;
-    y.rod_pressure = x.rod_pressure + a * d.rod_pressure;
-    y.spool = x.spool + a * d.spool;
-    return y;
-  };
-  double pilot = opening(command(0.0));
-  const int substeps = 100;
-  const double h = 1e-3 / substeps;
-  double worst_position = 0.0, worst_velocity = 0.0;
-  for (int j = 0; j < 1000; ++j) {
-    if (j > 0) pilot = bonl::Backlash<double>::map(opening(command(j * 1e-3)), pilot, p.pilot_hysteresis);
-    const double f = load(j * 1e-3);
-    for (int i = 0; i < substeps; ++i) {
-      const auto k1 = bonl::plant::derivative(p, s, pilot, f);
-      const auto k2 = bonl::plant::derivative(p, axpy(s, 0.5 * h, k1), pilot, f);
-      const auto k3 = bonl::plant::derivative(p, axpy(s, 0.5 * h, k2), pilot, f);
-      const auto k4 = bonl::plant::derivative(p, axpy(s, h, k3), pilot, f);
-      s = axpy(axpy(axpy(axpy(s, h / 6.0, k1), h / 3.0, k2), h / 3.0, k3), h / 6.0, k4);
-    }
-    worst_position = std::max(worst_position, std::abs(s.position - r.position[j + 1]));
-    worst_velocity = std::max(worst_velocity, std::abs(s.velocity - r.velocity[j + 1]));
-  }
-  INFO("worst differences: h " << worst_position << " m, v " << worst_velocity << " m/s");
+  const Rk4Differences worst = rk4_differences(p, command, load, r, 1000);
+  INFO("worst differences: h " << worst.position << " m, v " << worst.velocity << " m/s");
   // The same bounds as without the load.
-  CHECK(worst_position < 1e-5);
-  CHECK(worst_velocity < 2.5e-4);
+  CHECK(worst.position < 1e-5);
+  CHECK(worst.velocity < 2.5e-4);
 }
 
 TEST_CASE("the Jacobian handed to CVODE matches finite differences of the right-hand side") {

@@ -6,6 +6,7 @@
 #include "test_support.hpp"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <random>
 
 using namespace bonl_test;
@@ -68,6 +69,37 @@ TEST_CASE("RLS with a constant forgetting factor equals exponentially weighted l
     REQUIRE(rls.update(problem.phi.row(k).transpose(), problem.y[k], 0.98));
   }
   CHECK(relative_difference(rls.theta(), batch_solution(problem, theta0, 100.0, 0.98)) <= 1e-8);
+}
+
+TEST_CASE("forgetting kept as a scale on P matches the weighted least-squares covariance across folds", "[rls]") {
+  // Rls stores P = scale * M and folds the scale into M when it passes 1 / epsilon: at lambda = 0.98
+  // after ~1,780 samples and then every ~1,780. Oracle, advanced alongside: the information matrix
+  // A = lambda A + phi phi' from A(0) = I / p0, and P = A^-1. Checked at every sample around the first
+  // fold (an error there is forgotten only slowly: 0.98^k) and at the end.
+  const double lambda = 0.98;
+  const double p0 = 100.0;
+  const Problem problem = random_problem(4000, 8, 0.1, 11);
+  Eigen::MatrixXd information = Eigen::MatrixXd::Identity(8, 8) / p0;
+  bonl::Rls<double, 8> fixed(8, p0);
+  bonl::Rls<double> dynamic(8, p0);
+  const auto relative = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a - b).norm() / b.norm(); };
+  double worst = 0.0;
+  for (Eigen::Index k = 0; k < problem.phi.rows(); ++k) {
+    const Eigen::VectorXd phi = problem.phi.row(k).transpose();
+    REQUIRE(fixed.update(phi, problem.y[k], lambda));
+    REQUIRE(dynamic.update(phi, problem.y[k], lambda));
+    information = lambda * information + phi * phi.transpose();
+    if ((k >= 1700 && k < 1900) || k + 1 == problem.phi.rows()) {
+      const Eigen::MatrixXd expected = information.ldlt().solve(Eigen::MatrixXd::Identity(8, 8));
+      worst = std::max({worst, relative(fixed.covariance(), expected), relative(dynamic.covariance(), expected)});
+    }
+  }
+  CHECK(worst <= 1e-9);
+  const Eigen::VectorXd expected_theta = batch_solution(problem, Eigen::VectorXd::Zero(8), p0, lambda);
+  CHECK(relative_difference(fixed.theta(), expected_theta) <= 1e-8);
+  CHECK(relative_difference(dynamic.theta(), expected_theta) <= 1e-8);
+  const Eigen::MatrixXd covariance = fixed.covariance();
+  CHECK((covariance - covariance.transpose()).cwiseAbs().maxCoeff() == 0.0);
 }
 
 TEST_CASE("the covariance stays exactly symmetric and positive definite", "[rls]") {

@@ -82,6 +82,24 @@ class TwoSegmentPolynomial {
     }
   }
 
+  /// basis() and, returned, w = basis . [f; p] summed as the entries are made (f, p of length
+  /// r + 1): an estimator needs both, and reading `out` back would stall on store forwarding.
+  template <typename Out, typename F, typename P>
+  static Scalar basis(Scalar u, const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p,
+                      Eigen::MatrixBase<Out>& out) noexcept {
+    const Eigen::Index r = f.size() - 1;
+    const Scalar h = input_switch(u);
+    Scalar power = Scalar(1);
+    Scalar w = Scalar(0);
+    for (Eigen::Index l = 0; l <= r; ++l) {
+      out[l] = power;
+      out[r + 1 + l] = h * power;
+      w += power * (f[l] + h * p[l]);
+      power *= u;
+    }
+    return w;
+  }
+
  private:
   /// The degree that f's length implies, r = f.size() - 1, which must be >= 1.
   template <typename F>

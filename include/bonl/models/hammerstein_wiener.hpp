@@ -76,8 +76,7 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
     void reset() noexcept { m_front.reset(); }
     template <typename Phi>
     Scalar begin(const Params& theta, Scalar u, Method method, Phi& phi) noexcept {
-      m_front.begin(theta, u, method, phi);
-      return m_front.internal(theta, phi);
+      return m_front.begin(theta, u, method, phi);
     }
     Scalar predicted_output(const Params& theta, Scalar x) const noexcept {
       Scalar y = x;

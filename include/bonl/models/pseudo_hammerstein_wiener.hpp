@@ -85,9 +85,9 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     }
     template <typename Phi>
     Scalar begin(const Params& theta, Scalar u, Method method, Phi& phi) noexcept {
-      m_front.begin(theta, u, method, phi);
+      const Scalar x = m_front.begin(theta, u, method, phi);
       phi[m_last] = Scalar(0);
-      return phi.dot(theta);  // = the front's x: the last entry is zero (a fixed-size, vectorised dot)
+      return x;
     }
     Scalar predicted_output(const Params& theta, Scalar x) const noexcept {
       return Backlash<Scalar>::map(x, m_y_prev, std::max(theta[m_last], Scalar(0)));
@@ -120,7 +120,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     }
     template <typename Phi>
     void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
-      const Scalar x_model = phi.dot(theta) - phi[m_last] * theta[m_last];  // the front's x
+      const Scalar x_model = m_front.internal(theta, phi);
       Scalar x_lag = x_model;
       if (method == Method::Default) {
         const Scalar c = std::max(theta[m_last], Scalar(0));

@@ -393,6 +393,11 @@ TEST_CASE("TwoSegmentPolynomial: basis dotted with [f; p] is the value", "[block
     const double h = u < 0.0 ? 1.0 : 0.0;
     REQUIRE(near(basis, vec({1.0, u, u * u, u * u * u, h, h * u, h * u * u, h * u * u * u}), 1e-15));
     REQUIRE(near(basis.dot(fp), n1(u), 1e-13));
+    // The estimators' form: the same basis, and its dot with [f; p] returned.
+    Eigen::VectorXd fused = Eigen::VectorXd::Constant(8, 99.0);
+    const double w = bonl::TwoSegmentPolynomial<double>::basis(u, f, p, fused);
+    REQUIRE(fused == basis);
+    REQUIRE(near(w, n1(u), 1e-13));
   }
 }
 

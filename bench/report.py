@@ -4,8 +4,9 @@ Inputs: Google Benchmark JSON of bonl_bench and bonl_bench_plant, and the JSON p
 bench/python_baselines.py. Prints the tables (Markdown) to stdout; --json FILE writes the flat
 numbers; --results-md FILE writes them with the machine's description (bench/RESULTS.md).
 
-C++ times are Google Benchmark's CPU time per iteration (the median over repetitions when there are
-several), which leaves out the time the process was preempted; the plant's real-time factor is
+C++ times are Google Benchmark's CPU time per iteration (the fastest repetition when there are
+several, like the Python best-of-repeats: on a shared machine noise only adds time), which leaves
+out the time the process was preempted; the plant's real-time factor is
 wall-clock. Python times are the best wall time of several repeats.
 """
 
@@ -25,21 +26,19 @@ MODELS = (("arx", "ARX", "arx_update_ns"), ("hammerstein", "Hammerstein", "hamme
 
 
 def load_gbench(path: str) -> tuple[dict, dict]:
-    """{name: entry} with the median aggregate when the run had repetitions, and the context."""
+    """{name: entry}, the fastest repetition when the run had several, and the context."""
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
     entries: dict = {}
-    medians: dict = {}
     for b in data["benchmarks"]:
         name = b["run_name"] if "run_name" in b else b["name"]
         if b.get("run_type") == "aggregate":
-            if b.get("aggregate_name") == "median":
-                medians[name] = b
-        elif b.get("error_occurred"):
+            continue
+        if b.get("error_occurred"):
             entries[name] = b
-        else:
-            entries.setdefault(name, b)
-    entries.update(medians)
+        elif name not in entries or (not entries[name].get("error_occurred") and
+                                     ns(b) < ns(entries[name])):
+            entries[name] = b
     return entries, data["context"]
 
 
@@ -275,7 +274,7 @@ def main() -> int:
         "`vs textbook RLS` and `vs padasip`: the baseline's time divided by this row's time, at the same "
         "parameter count (how many times faster this row is). `updated`: fraction of the samples that ran the "
         "RLS step (the P-H-W default method skips samples inside the backlash gap). C++: CPU time per sample "
-        "(median of repetitions); Python: best wall time of several repeats. Same random regressors, "
+        "(fastest of 5 repetitions); Python: best wall time of several repeats. Same random regressors, "
         f"forgetting factor 0.99 and P(0) = 1e3 I for every RLS baseline; float estimators use P(0) = 1e4 I."
     )
     text = "\n\n".join(f"### {title}\n\n{body}" for title, body in sections) + "\n\n" + legend + "\n"

@@ -129,8 +129,12 @@ class HammersteinFront {
 ///   [basis(u(k-nk)), w(k-nk-1), ..., w(k-nk-nb), -x(k-1), ..., -x(k-na)],
 /// so that x(k) = regressor . theta_front. Before the record starts, u, w and x are zero
 /// (the model is at rest), which is what the free-run simulation assumes too.
-template <typename Scalar>
+/// Orders fixed in the template (the paper's 3, 2, 3) make every loop here a fixed, unrolled
+/// sequence and the x history a shift register; Eigen::Dynamic takes them from the constructor.
+template <typename Scalar, int Na = Eigen::Dynamic, int Nb = Eigen::Dynamic, int R = Eigen::Dynamic>
 class FrontKeyTerms {
+  static constexpr int kCoeffs = poly_size(R);  // r + 1
+
  public:
   FrontKeyTerms() = default;
   FrontKeyTerms(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r)
@@ -141,6 +145,7 @@ class FrontKeyTerms {
     m_w.clear();
     m_x.clear();
     m_k = 0;
+    m_x_begin = Scalar(0);
   }
 
   /// Pushes u(k), writes the front's regressor into phi.head(front size) and returns
@@ -150,16 +155,16 @@ class FrontKeyTerms {
   template <typename Theta, typename Phi>
   Scalar begin(const Theta& theta, Scalar u, Method method, Phi& phi) noexcept {
     m_u.push(u);
-    const Eigen::Index n_fp = 2 * (m_r + 1);
-    const auto f = theta.segment(0, m_r + 1);
-    const auto p = theta.segment(m_r + 1, m_r + 1);
+    const Eigen::Index n_fp = 2 * (r() + 1);
+    const auto f = coefficients(theta, 0);
+    const auto p = coefficients(theta, r() + 1);
     Scalar x = Scalar(0);
     if (m_k >= m_nk) {
       x = TwoSegmentPolynomial<Scalar>::basis(m_u[m_nk], f, p, phi);
     } else {
       for (Eigen::Index l = 0; l < n_fp; ++l) phi[l] = Scalar(0);
     }
-    for (Eigen::Index i = 1; i <= m_nb; ++i) {
+    for (Eigen::Index i = 1; i <= nb(); ++i) {
       Scalar w = Scalar(0);
       if (m_k - m_nk - i >= 0) {
         // Paper: w as estimated when it entered (eq. 24). Default: recomputed with the newest
@@ -169,18 +174,23 @@ class FrontKeyTerms {
       phi[n_fp + i - 1] = w;
       x += theta[n_fp + i - 1] * w;
     }
-    for (Eigen::Index j = 1; j <= m_na; ++j) {
-      phi[n_fp + m_nb + j - 1] = -m_x[j - 1];
-      x -= theta[n_fp + m_nb + j - 1] * m_x[j - 1];
+    for (Eigen::Index j = 1; j <= na(); ++j) {
+      phi[n_fp + nb() + j - 1] = -m_x[j - 1];
+      x -= theta[n_fp + nb() + j - 1] * m_x[j - 1];
     }
+    m_x_begin = x;
     return x;
   }
 
-  /// x(k) = regressor . theta over the front's entries.
+  /// x(k) = regressor . theta over the front's entries, for the lags end() stores. The paper's method
+  /// re-evaluates it with the updated estimate (eq. 24); the default method gets the theta begin()
+  /// had (the estimator's internal copy), so it is the x begin() returned, kept rather than summed again.
   template <typename Theta, typename Phi>
-  Scalar internal(const Theta& theta, const Phi& phi) const noexcept {
-    const Eigen::Index n = 2 * (m_r + 1) + m_nb + m_na;
-    return phi.head(n).dot(theta.head(n));
+  Scalar internal(const Theta& theta, const Phi& phi, Method method) const noexcept {
+    if (method == Method::Default) return m_x_begin;
+    const Eigen::Index n = 2 * (r() + 1) + nb() + na();
+    constexpr int kFront = front_params(Na, Nb, R);
+    return phi.template head<kFront>(n).dot(theta.template head<kFront>(n));
   }
 
   /// Stores x(k) (the value later regressors use as a lag) and, for the paper's method, w(k).
@@ -188,15 +198,28 @@ class FrontKeyTerms {
   void end(const Theta& theta, Scalar u, Scalar x_lag, Method method) noexcept {
     m_x.push(x_lag);
     if (method == Method::Paper) {
-      m_w.push(TwoSegmentPolynomial<Scalar>::evaluate(theta.segment(0, m_r + 1), theta.segment(m_r + 1, m_r + 1), u));
+      m_w.push(TwoSegmentPolynomial<Scalar>::evaluate(coefficients(theta, 0), coefficients(theta, r() + 1), u));
     }
-    if (m_k < m_nk + m_nb + 1) ++m_k;  // only "before or after the record start" matters
+    if (m_k < m_nk + nb() + 1) ++m_k;  // only "before or after the record start" matters
   }
 
  private:
+  // The orders as constants where the template fixes them, so that the compiler unrolls.
+  Eigen::Index na() const noexcept { return Na == Eigen::Dynamic ? m_na : Na; }
+  Eigen::Index nb() const noexcept { return Nb == Eigen::Dynamic ? m_nb : Nb; }
+  Eigen::Index r() const noexcept { return R == Eigen::Dynamic ? m_r : R; }
+
+  /// f (start 0) or p (start r + 1): r + 1 entries of theta, of fixed size when R is.
+  template <typename Theta>
+  auto coefficients(const Theta& theta, Eigen::Index start) const noexcept {
+    return theta.template segment<kCoeffs>(start, r() + 1);
+  }
+
   Eigen::Index m_na = 0, m_nb = 0, m_nk = 0, m_r = 0;
-  History<Scalar> m_u, m_w, m_x;
+  History<Scalar> m_u, m_w;  // capacity nk + nb + 1: nk is a run-time order
+  History<Scalar, Na> m_x;
   Eigen::Index m_k = 0;
+  Scalar m_x_begin = Scalar(0);  // what begin() returned
 };
 
 }  // namespace bonl::detail

@@ -56,12 +56,12 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0> {
     }
     template <typename Phi>
     void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
-      m_front.end(theta, u, method == Method::Paper ? m_front.internal(theta, phi) : y, method);
+      m_front.end(theta, u, method == Method::Paper ? m_front.internal(theta, phi, method) : y, method);
     }
     void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
-    detail::FrontKeyTerms<Scalar> m_front;
+    detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
   };
 };
 

@@ -99,7 +99,7 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
     }
     template <typename Phi>
     void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
-      const Scalar x_model = m_front.internal(theta, phi);
+      const Scalar x_model = m_front.internal(theta, phi, method);
       Scalar x_lag = x_model;
       if (method == Method::Default) {
         // q_1 = 1 sits outside theta: invert x + sum_{m>=2} q_m x^m = y.
@@ -115,7 +115,7 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
     void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
-    detail::FrontKeyTerms<Scalar> m_front;
+    detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
     Eigen::Index m_r1;
     Eigen::Index m_n;
   };

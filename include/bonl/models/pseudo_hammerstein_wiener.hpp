@@ -120,7 +120,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     }
     template <typename Phi>
     void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
-      const Scalar x_model = m_front.internal(theta, phi);
+      const Scalar x_model = m_front.internal(theta, phi, method);
       Scalar x_lag = x_model;
       if (method == Method::Default) {
         const Scalar c = std::max(theta[m_last], Scalar(0));
@@ -135,7 +135,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     }
 
    private:
-    detail::FrontKeyTerms<Scalar> m_front;
+    detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
     Eigen::Index m_last;
     Scalar m_y_prev = Scalar(0);
     Scalar m_x_prev = Scalar(0);

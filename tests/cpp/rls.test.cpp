@@ -141,3 +141,19 @@ TEST_CASE("an unsafe update is refused and leaves the state untouched", "[rls]")
   CHECK(rls.theta() == theta);
   CHECK(rls.covariance() == p);
 }
+
+TEMPLATE_TEST_CASE("an update whose new theta would overflow is refused", "[rls]", (bonl::Rls<double, 14>),
+                   (bonl::Rls<double>)) {
+  // A small regressor with a large P gives a gain of 500 (K = P phi / (1 + phi' P phi)), so a finite
+  // error of 1e308 would take theta to infinity.
+  TestType rls(14, 1e6);
+  Eigen::VectorXd phi = Eigen::VectorXd::Zero(14);
+  phi[3] = 1e-3;
+  const Eigen::VectorXd theta = rls.theta();
+  const Eigen::MatrixXd p = rls.covariance();
+  CHECK_FALSE(rls.update(phi, 1e308, 1.0));
+  CHECK(rls.theta() == theta);
+  CHECK(rls.covariance() == p);
+  CHECK(rls.update(phi, 1.0, 1.0));  // and a sane update still goes through
+  CHECK(rls.theta()[3] == Approx(500.0).epsilon(1e-12));  // 1e6 * 1e-3 / (1 + 1e6 * 1e-6) * error 1
+}

@@ -142,7 +142,9 @@ class Rls {
     const Scalar inverse = Scalar(1) / denominator;
     const Scalar error = target - phi.dot(m_theta);
     next = m_theta + (error * inverse * m_scale) * g;  // K = P phi / denominator = scale M phi / denominator
-    if (!next.allFinite()) return false;
+    // All finite: x - x is 0 for a finite x and NaN otherwise, so the sum is exactly 0 when every entry
+    // is finite (a vectorised reduction; allFinite() tests and branches entry by entry).
+    if (!((next.array() - next.array()).sum() == Scalar(0))) return false;
     // v = M phi sqrt(scale / denominator); the downdate is M -= v v'. Each new diagonal entry
     // M_ii - v_i^2 must stay above a few roundings of M_ii: below that the subtraction has cancelled
     // and what is left is round-off (a direction pinned down beyond P's resolution, e.g. one input of

@@ -21,14 +21,6 @@
 // M -= v v' with v = M phi sqrt(scale / denominator). The scale is folded back into M (one pass)
 // only when it passes 1 / epsilon, i.e. every ~1,800 samples at lambda = 0.98 and never at 1.
 //
-// M's diagonal is also kept contiguous, in m_diagonal, for the guard on P's positiveness and for the
-// trace: read in place (stride n + 1) the guard was ~80 instructions of lane extractions and scalar
-// minima (about 4 ns of the P-H-W update). The copy gets the same operation as M, M_jj - v_j^2, so
-// the two are equal bit for bit when the compiler treats both alike: GCC 12 and Clang 14 do, at -O1
-// to -O3, SSE2 to AVX-512, with -ffp-contract off, on and fast (checked after each of 20,000 updates
-// at 6 to 15 parameters, fixed and run-time sizes, with folds). As a bound in case a compiler did
-// not, the copy is re-read from M every kDiagonalResync updates and at every fold.
-//
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -66,7 +58,6 @@ class Rls {
     m_next = Vector::Zero(n);
     m_scratch = StorageVector::Zero(storage_size(n));
     m_M = StorageMatrix::Zero(storage_size(n), storage_size(n));
-    m_diagonal = StorageVector::Zero(storage_size(n));  // padding entries stay 0 (see update())
     reset(m_theta, p0);
   }
 
@@ -86,9 +77,7 @@ class Rls {
     check_p0(p0);
     m_M.setZero();  // keeps its size: no allocation
     m_M.diagonal().template head<N_>(size()).setConstant(p0);
-    m_diagonal.template head<N_>(size()).setConstant(p0);
     m_scale = Scalar(1);
-    m_since_resync = 0;
   }
 
   /// One update with regressor phi, target y and forgetting factor lambda in (0, 1]; forgetting is
@@ -161,30 +150,27 @@ class Rls {
     // and what is left is round-off (a direction pinned down beyond P's resolution, e.g. one input of
     // 1e5 with P(0) = 1e6 I, left P_00 = 0 exactly and "Updated"; found by fuzzing).
     work *= std::sqrt(m_scale * inverse);  // work = v from here on
-    // Over whole (padded) registers: the padding entries of m_diagonal and v are 0 and give exactly 0,
-    // hence >= (a real entry at exactly 0 would still leave M_ii - v_i^2 = 64 eps M_ii > 0).
-    const auto diagonal = m_diagonal.array();
+    const auto v = work.template head<N_>(n).array();
+    const auto diagonal = m_M.diagonal().template head<N_>(n).array();
     constexpr Scalar kMargin = Scalar(64) * std::numeric_limits<Scalar>::epsilon();
-    if (!((diagonal - work.array().square() - kMargin * diagonal).minCoeff() >= Scalar(0))) return false;
+    if (!((diagonal - v.square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
     // Forgetting would overflow P (possible only without a ceiling: the trace can only fall by the
     // downdate, so trace(P) / lambda bounds it). Tested with 1 / lambda, the factor P is scaled by:
     // for a denormal lambda it is infinite although trace / lambda is not (found by fuzzing).
     const Scalar inverse_lambda = Scalar(1) / lambda;
-    if (lambda != Scalar(1) && !std::isfinite(std::min(m_scale * trace_of_m() * inverse_lambda, max_trace))) {
+    if (lambda != Scalar(1) && !std::isfinite(std::min(m_scale * diagonal.sum() * inverse_lambda, max_trace))) {
       return false;
     }
     m_theta = next;
     // Column by column (only the n used ones): entry (i, j) is M_ij - v_i v_j and (j, i) is
     // M_ji - v_j v_i, equal because multiplication is commutative.
     for (Eigen::Index j = 0; j < n; ++j) m_M.col(j) -= work * work[j];
-    m_diagonal -= work.cwiseAbs2();  // the same M_jj - v_j^2 (see the top of this file)
-    if (++m_since_resync == kDiagonalResync) resync_diagonal();
     m_forgetting_limited = false;
     if (lambda != Scalar(1)) {
       // The ceiling is applied to the trace after the downdate as computed, not as trace(P) - |h|^2,
       // which cancels when the downdate removes most of P (a tiny lambda overshot the ceiling).
       Scalar growth = inverse_lambda;
-      const Scalar trace = m_scale * trace_of_m();
+      const Scalar trace = m_scale * m_M.diagonal().template head<N_>(n).sum();
       if (trace * growth > max_trace) {
         growth = std::max(Scalar(1), max_trace / trace);
         m_forgetting_limited = true;
@@ -195,28 +181,16 @@ class Rls {
     return true;
   }
 
-  Scalar trace_of_m() const noexcept { return m_diagonal.sum(); }  // the padding adds exact zeros
-
-  /// m_diagonal = M's diagonal, read from the matrix (a no-op in value with GCC and Clang).
-  void resync_diagonal() noexcept {
-    for (Eigen::Index j = 0; j < size(); ++j) m_diagonal[j] = m_M(j, j);
-    m_since_resync = 0;
-  }
-
   /// M *= scale, scale = 1 (P unchanged up to one rounding per entry, still exactly symmetric).
   void fold_scale() noexcept {
     m_M *= m_scale;
     m_scale = Scalar(1);
-    resync_diagonal();
   }
 
   Vector m_theta;
   StorageMatrix m_M;      // P / m_scale in the top-left n x n corner, zero padding (fixed sizes only)
   Scalar m_scale = Scalar(1);
   Vector m_next;          // scratch for run-time sizes
-  StorageVector m_diagonal;  // M's diagonal (see the top of this file), then padding entries of 0
-  static constexpr int kDiagonalResync = 64;
-  int m_since_resync = 0;
   StorageVector m_scratch;  // scratch for run-time sizes
   bool m_forgetting_limited = false;
 };

@@ -27,6 +27,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "../detail/flatten.hpp"
 #include "../detail/validate.hpp"
 
 namespace bonl {
@@ -115,8 +116,8 @@ class Rls {
   static Eigen::Index storage_size(Eigen::Index n) { return N_ == Eigen::Dynamic ? n : kStorage; }
 
   template <typename Phi>
-  bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda, Scalar max_trace,
-              StorageVector& work, Vector& next) noexcept {
+  BONL_FLATTEN bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda, Scalar max_trace,
+                           StorageVector& work, Vector& next) noexcept {
     const Eigen::Index n = size();
     // work = M phi, as a sum of columns: vectorised axpys over whole (padded) columns, no horizontal
     // reductions. The padding rows of M are zero, so work's padding is zero too. Fixed sizes sum

@@ -27,7 +27,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "../detail/flatten.hpp"
+#include "../detail/inlining.hpp"
 #include "../detail/validate.hpp"
 
 namespace bonl {
@@ -183,7 +183,7 @@ class Rls {
   }
 
   /// M *= scale, scale = 1 (P unchanged up to one rounding per entry, still exactly symmetric).
-  void fold_scale() noexcept {
+  BONL_COLD void fold_scale() noexcept {
     m_M *= m_scale;
     m_scale = Scalar(1);
   }

@@ -28,6 +28,36 @@ long heap_allocations_in(Body&& body) {
   Eigen::internal::set_is_malloc_allowed(true);
   return bonl_test::allocations() + g_eigen_allocations - before;
 }
+
+
+/// Updates `structure` on a noisy record, with both methods, and checks that they allocate nothing,
+/// refuse nothing and leave the covariance exactly symmetric.
+template <class Model>
+void check_updates_allocate_nothing(const Model& structure, const bonl::ForgettingSchedule& forgetting) {
+  INFO(Model::kName);
+  const Eigen::VectorXd u = bonl::signals::random_levels(3000, 5, 1.0, 3);
+  const Eigen::VectorXd y = structure.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 4);
+  for (bonl::Method method : {bonl::Method::Default, bonl::Method::Paper}) {
+    bonl::EstimatorOptions options;
+    options.method = method;
+    options.forgetting = forgetting;
+    bonl::Estimator<Model> estimator(structure, options);
+    CHECK(heap_allocations_in([&] {
+            for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
+            estimator.update(std::nan(""), 0.0);
+          }) == 0);
+    CHECK(estimator.health().failures == 0);
+    const auto p = estimator.covariance();
+    CHECK(p == p.transpose());
+  }
+}
+
+/// A run-time-size copy of a known (fixed-size) system.
+template <class Dynamic, class Fixed>
+Dynamic with_theta_of(Dynamic model, const Fixed& known) {
+  model.set_theta(known.theta());
+  return model;
+}
 }  // namespace
 
 TEMPLATE_TEST_CASE("fixed-size updates allocate nothing", "[allocation]", bonl::PaperARX, bonl::PaperHammerstein,
@@ -39,56 +69,18 @@ TEMPLATE_TEST_CASE("fixed-size updates allocate nothing", "[allocation]", bonl::
     else if constexpr (std::is_same_v<TestType, bonl::PaperHammersteinWiener>) return known_hammerstein_wiener();
     else return known_phw();
   }();
-  const Eigen::VectorXd u = bonl::signals::random_levels(3000, 5, 1.0, 3);
-  const Eigen::VectorXd y = structure.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 4);
-  for (bonl::Method method : {bonl::Method::Default, bonl::Method::Paper}) {
-    bonl::EstimatorOptions options;
-    options.method = method;
-    bonl::Estimator<TestType> estimator(structure, options);
-    CHECK(heap_allocations_in([&] {
-            for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
-            estimator.update(std::nan(""), 0.0);
-          }) == 0);
-    const auto p = estimator.covariance();
-    CHECK(p == p.transpose());
-  }
+  check_updates_allocate_nothing(structure, bonl::EstimatorOptions{}.forgetting);
 }
 
 // Run-time (Eigen::Dynamic) sizes allocate once, when the estimator is built; the updates reuse that.
-TEMPLATE_TEST_CASE("run-time-size updates allocate nothing after construction", "[allocation]", bonl::ARX<double>,
-                   bonl::Hammerstein<double>, bonl::HammersteinWiener<double>, bonl::PseudoHammersteinWiener<double>) {
-  TestType structure = [] {
-    if constexpr (std::is_same_v<TestType, bonl::ARX<double>>) {
-      TestType model(3, 2, kNk);
-      model.set_theta(known_arx().theta());
-      return model;
-    } else if constexpr (std::is_same_v<TestType, bonl::Hammerstein<double>>) {
-      TestType model(3, 2, kNk, 3);
-      model.set_theta(known_hammerstein().theta());
-      return model;
-    } else if constexpr (std::is_same_v<TestType, bonl::HammersteinWiener<double>>) {
-      TestType model(3, 2, kNk, 3, 3);
-      model.set_theta(known_hammerstein_wiener().theta());
-      return model;
-    } else {
-      TestType model(3, 2, kNk, 3);
-      model.set_theta(known_phw().theta());
-      return model;
-    }
-  }();
-  const Eigen::VectorXd u = bonl::signals::random_levels(3000, 5, 1.0, 3);
-  const Eigen::VectorXd y = structure.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 4);
-  for (bonl::Method method : {bonl::Method::Default, bonl::Method::Paper}) {
-    bonl::EstimatorOptions options;
-    options.method = method;
-    options.forgetting = bonl::ForgettingSchedule::constant(0.98);  // the trace and scale-fold paths too
-    bonl::Estimator<TestType> estimator(structure, options);
-    CHECK(heap_allocations_in([&] {
-            for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
-            estimator.update(std::nan(""), 0.0);
-          }) == 0);
-    CHECK(estimator.health().failures == 0);
-  }
+// Forgetting 0.98 throughout, so that the trace ceiling and the scale fold run too.
+TEST_CASE("run-time-size updates allocate nothing after construction", "[allocation]") {
+  const auto forgetting = bonl::ForgettingSchedule::constant(0.98);
+  check_updates_allocate_nothing(with_theta_of(bonl::ARXd(3, 2, kNk), known_arx()), forgetting);
+  check_updates_allocate_nothing(with_theta_of(bonl::Hammersteind(3, 2, kNk, 3), known_hammerstein()), forgetting);
+  check_updates_allocate_nothing(with_theta_of(bonl::HammersteinWienerd(3, 2, kNk, 3, 3), known_hammerstein_wiener()),
+                                 forgetting);
+  check_updates_allocate_nothing(with_theta_of(bonl::PseudoHammersteinWienerd(3, 2, kNk, 3), known_phw()), forgetting);
 }
 
 TEST_CASE("updates with recording on, the trace ceiling acting and automatic recovery allocate nothing",

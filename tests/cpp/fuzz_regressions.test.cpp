@@ -16,6 +16,8 @@
 // residue and the update returns Updated with P(0, 0) = 0 exactly: a singular covariance reported
 // as a good update. The default settings and an input of 1e5 (a pressure in Pa, say) suffice.
 // Fixed: the check now runs on h_i^2 and keeps a margin of 64 roundings; this update is refused.
+// (The downdate is now P_ii - c (g_i g_i) with g = P phi, c = 1 / denominator; the check runs on
+// that same product.)
 TEST_CASE("an accepted update keeps every diagonal entry of P positive", "[fuzz]") {
   bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1));
   REQUIRE(estimator.update(100006.0, 0.0) == bonl::UpdateStatus::Updated);  // phi = 0: nothing to learn yet

@@ -2,12 +2,14 @@
 // Recursive least squares with a forgetting factor (paper eqs. 21-23):
 //   K = P phi / (lambda + phi' P phi),  theta += K (target - phi' theta),
 //   P = (P - P phi phi' P / (lambda + phi' P phi)) / lambda.
-// The downdate is written P -= h h' with h = P phi / sqrt(lambda + phi' P phi): entry (i, j) is
-// P_ij - h_i h_j and (j, i) is P_ji - h_j h_i, equal because floating-point multiplication is
-// commutative, so P stays exactly symmetric by construction without a triangular view (whose
+// The downdate is written P -= c g g' with g = P phi and c = 1 / (lambda + phi' P phi): entry (i, j)
+// is P_ij - c (g_i g_j) and (j, i) is P_ji - c (g_j g_i), equal because floating-point multiplication
+// is commutative, so P stays exactly symmetric by construction without a triangular view (whose
 // generic kernels cost 4x more at the paper's sizes). The paper's (I - K phi') P / lambda is the same
-// matrix in exact arithmetic. An update that would make the denominator or a diagonal entry of P
-// non-positive, or a number non-finite, is refused and leaves the state untouched.
+// matrix in exact arithmetic. (Written as h h' with h = g sqrt(c), which saves the multiplication by
+// c per entry, the square root lies on the critical path: the P-H-W update was 5 ns slower.)
+// An update that would make the denominator or a diagonal entry of P non-positive, or a number
+// non-finite, is refused and leaves the state untouched.
 //
 // Bounded covariance: with lambda < 1 and poor excitation, P grows by 1/lambda per sample in every
 // direction the data do not reach (covariance wind-up: 0.98^-k overflows after ~35,000 samples).
@@ -18,7 +20,7 @@
 
 // Forgetting without touching P: P is stored as scale * M, so dividing P by lambda is one scalar
 // multiply (scale /= lambda) instead of a pass over all n^2 entries; the downdate becomes
-// M -= v v' with v = M phi sqrt(scale / denominator). The scale is folded back into M (one pass)
+// M -= gain (M phi)(M phi)' with gain = scale / denominator. The scale is folded back into M (one pass)
 // only when it passes 1 / epsilon, i.e. every ~1,800 samples at lambda = 0.98 and never at 1.
 //
 #include <Eigen/Core>
@@ -140,21 +142,20 @@ class Rls {
     const auto g = work.template head<N_>(n);
     const Scalar denominator = lambda + m_scale * phi.dot(g);
     if (!(denominator > Scalar(0)) || !std::isfinite(denominator)) return false;
-    const Scalar inverse = Scalar(1) / denominator;
+    const Scalar gain = m_scale / denominator;  // K = P phi / denominator = gain M phi
     const Scalar error = target - phi.dot(m_theta);
-    next = m_theta + (error * inverse * m_scale) * g;  // K = P phi / denominator = scale M phi / denominator
+    next = m_theta + (error * gain) * g;
     // All finite: x - x is 0 for a finite x and NaN otherwise, so the sum is exactly 0 when every entry
     // is finite (a vectorised reduction; allFinite() tests and branches entry by entry).
     if (!((next.array() - next.array()).sum() == Scalar(0))) return false;
-    // v = M phi sqrt(scale / denominator); the downdate is M -= v v'. Each new diagonal entry
-    // M_ii - v_i^2 must stay above a few roundings of M_ii: below that the subtraction has cancelled
-    // and what is left is round-off (a direction pinned down beyond P's resolution, e.g. one input of
-    // 1e5 with P(0) = 1e6 I, left P_00 = 0 exactly and "Updated"; found by fuzzing).
-    work *= std::sqrt(m_scale * inverse);  // work = v from here on
-    const auto v = work.template head<N_>(n).array();
+    // The downdate is M -= gain g g'. Each new diagonal entry M_ii - gain g_i^2 must stay above a few
+    // roundings of M_ii: below that the subtraction has cancelled and what is left is round-off (a
+    // direction pinned down beyond P's resolution, e.g. one input of 1e5 with P(0) = 1e6 I, left
+    // P_00 = 0 exactly and "Updated"; found by fuzzing).
+    const auto ga = g.array();
     const auto diagonal = m_M.diagonal().template head<N_>(n).array();
     constexpr Scalar kMargin = Scalar(64) * std::numeric_limits<Scalar>::epsilon();
-    if (!((diagonal - v.square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
+    if (!((diagonal - gain * ga.square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
     // Forgetting would overflow P (possible only without a ceiling: the trace can only fall by the
     // downdate, so trace(P) / lambda bounds it). Tested with 1 / lambda, the factor P is scaled by:
     // for a denormal lambda it is infinite although trace / lambda is not (found by fuzzing).
@@ -163,13 +164,14 @@ class Rls {
       return false;
     }
     m_theta = next;
-    // Column by column (only the n used ones): entry (i, j) is M_ij - v_i v_j and (j, i) is
-    // M_ji - v_j v_i, equal because multiplication is commutative.
-    for (Eigen::Index j = 0; j < n; ++j) m_M.col(j) -= work * work[j];
+    // Column by column (only the n used ones): entry (i, j) is M_ij - gain (g_i g_j) and (j, i) is
+    // M_ji - gain (g_j g_i), the same number because multiplication is commutative.
+    for (Eigen::Index j = 0; j < n; ++j) m_M.col(j) -= gain * (work * work[j]);
     m_forgetting_limited = false;
     if (lambda != Scalar(1)) {
-      // The ceiling is applied to the trace after the downdate as computed, not as trace(P) - |h|^2,
-      // which cancels when the downdate removes most of P (a tiny lambda overshot the ceiling).
+      // The ceiling is applied to the trace after the downdate as computed, not as
+      // trace(P) - gain |g|^2, which cancels when the downdate removes most of P (a tiny lambda
+      // overshot the ceiling).
       Scalar growth = inverse_lambda;
       const Scalar trace = m_scale * m_M.diagonal().template head<N_>(n).sum();
       if (trace * growth > max_trace) {

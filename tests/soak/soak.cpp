@@ -9,8 +9,11 @@
 // positive definite (smallest eigenvalue > 0), trace within the ceiling. Measured: the largest |P|
 // entry, the smallest eigenvalue, and for each rich phase after a poor one the recovery time: the
 // samples until the median |innovation| over a 100-sample window first comes within 1.5x the median
-// over the second half of the same phase. Exit status 1 if any check fails or a rich phase does not
-// recover within its first half. Figures are in docs/reliability.md.
+// over the second half of the same phase. Exit status 1 if any check fails, a rich phase does not
+// recover within its first half, or a rich phase passes without a single accepted update (the
+// estimator has stopped learning: the recovery time cannot see that, since a stalled estimator's
+// innovation is as large in the second half of a phase as in the first). Figures are in
+// docs/reliability.md.
 //
 //   bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X] [--seed S]
 //             [--method default|paper] [--json FILE]
@@ -217,6 +220,7 @@ int main(int argc, char** argv) {
   abs_innovation.reserve(static_cast<std::size_t>(settings.phase_length));
   Phase previous_poor = Phase::Zero;
   long long status_counts[4] = {0, 0, 0, 0};
+  long long updates_in_phase = 0, stalled_phases = 0, first_stall_end = -1;
 
   const auto report_problem = [&](long long k, const std::string& what) {
     if (problems.size() < 20) problems.push_back("sample " + std::to_string(k) + ": " + what);
@@ -254,10 +258,16 @@ int main(int argc, char** argv) {
 
     const bonl::UpdateStatus status = estimator.update(u, y);
     ++status_counts[static_cast<int>(status)];
+    if (status == bonl::UpdateStatus::Updated) ++updates_in_phase;
     if (!estimator.theta().allFinite()) report_problem(k, "theta is not finite");
     if (phase == Phase::Rich) abs_innovation.push_back(std::abs(y - estimator.last_prediction()));
 
     if (in_phase == settings.phase_length - 1) {
+      if (phase == Phase::Rich && updates_in_phase == 0) {
+        ++stalled_phases;
+        if (first_stall_end < 0) first_stall_end = k;
+      }
+      updates_in_phase = 0;
       if (phase == Phase::Rich) {
         if (phase_index > 0) recoveries.push_back({previous_poor, recovery_time(abs_innovation)});
         abs_innovation.clear();
@@ -300,6 +310,12 @@ int main(int argc, char** argv) {
     ++failures;
     problems.push_back(std::to_string(not_recovered) + " rich phases did not recover within their first half");
   }
+  if (stalled_phases > 0) {
+    ++failures;
+    problems.push_back(std::to_string(stalled_phases) +
+                       " rich phases without a single accepted update (the first ended at sample " +
+                       std::to_string(first_stall_end) + "): the estimator stopped learning");
+  }
   const auto stats = [](std::vector<double> v) {
     if (v.empty()) return std::string("none");
     std::sort(v.begin(), v.end());
@@ -326,6 +342,7 @@ int main(int argc, char** argv) {
   std::printf("  largest |theta| %.3e\n", largest_theta);
   std::printf("  recovery after constant input: %s\n", stats(after_constant).c_str());
   std::printf("  recovery after zero input:     %s\n", stats(after_zero).c_str());
+  std::printf("  rich phases without an accepted update: %lld\n", stalled_phases);
   for (const std::string& problem : problems) std::printf("  PROBLEM %s\n", problem.c_str());
   std::printf("  result: %s\n", failures == 0 ? "pass" : "FAIL");
 
@@ -340,7 +357,7 @@ int main(int argc, char** argv) {
         << ", \"largest_abs_theta\": " << largest_theta << ", \"failures\": " << failures
         << ", \"forgetting_limited\": " << health.forgetting_limited << ", \"numerical_failures\": " << health.failures
         << ", \"recovery_after_constant\": \"" << stats(after_constant) << "\", \"recovery_after_zero\": \""
-        << stats(after_zero) << "\", \"pass\": " << (failures == 0 ? "true" : "false") << "}\n";
+        << stats(after_zero) << "\", \"stalled_rich_phases\": " << stalled_phases << ", \"pass\": " << (failures == 0 ? "true" : "false") << "}\n";
   }
   return failures == 0 ? 0 : 1;
 }

@@ -29,7 +29,6 @@ long heap_allocations_in(Body&& body) {
   return bonl_test::allocations() + g_eigen_allocations - before;
 }
 
-
 /// Updates `structure` on a noisy record, with both methods, and checks that they allocate nothing,
 /// refuse nothing and leave the covariance exactly symmetric.
 template <class Model>

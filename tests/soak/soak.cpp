@@ -263,17 +263,17 @@ int main(int argc, char** argv) {
     if (phase == Phase::Rich) abs_innovation.push_back(std::abs(y - estimator.last_prediction()));
 
     if (in_phase == settings.phase_length - 1) {
-      if (phase == Phase::Rich && updates_in_phase == 0) {
-        ++stalled_phases;
-        if (first_stall_end < 0) first_stall_end = k;
-      }
-      updates_in_phase = 0;
       if (phase == Phase::Rich) {
+        if (updates_in_phase == 0) {  // stalled: the estimator learned nothing in a whole rich phase
+          if (stalled_phases == 0) first_stall_end = k;
+          ++stalled_phases;
+        }
         if (phase_index > 0) recoveries.push_back({previous_poor, recovery_time(abs_innovation)});
         abs_innovation.clear();
       } else {
         previous_poor = phase;
       }
+      updates_in_phase = 0;
     }
 
     if ((k + 1) % settings.check_every == 0) {
@@ -357,7 +357,8 @@ int main(int argc, char** argv) {
         << ", \"largest_abs_theta\": " << largest_theta << ", \"failures\": " << failures
         << ", \"forgetting_limited\": " << health.forgetting_limited << ", \"numerical_failures\": " << health.failures
         << ", \"recovery_after_constant\": \"" << stats(after_constant) << "\", \"recovery_after_zero\": \""
-        << stats(after_zero) << "\", \"stalled_rich_phases\": " << stalled_phases << ", \"pass\": " << (failures == 0 ? "true" : "false") << "}\n";
+        << stats(after_zero) << "\", \"stalled_rich_phases\": " << stalled_phases
+        << ", \"pass\": " << (failures == 0 ? "true" : "false") << "}\n";
   }
   return failures == 0 ? 0 : 1;
 }

@@ -152,10 +152,9 @@ class Rls {
     // roundings of M_ii: below that the subtraction has cancelled and what is left is round-off (a
     // direction pinned down beyond P's resolution, e.g. one input of 1e5 with P(0) = 1e6 I, left
     // P_00 = 0 exactly and "Updated"; found by fuzzing).
-    const auto ga = g.array();
     const auto diagonal = m_M.diagonal().template head<N_>(n).array();
     constexpr Scalar kMargin = Scalar(64) * std::numeric_limits<Scalar>::epsilon();
-    if (!((diagonal - gain * ga.square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
+    if (!((diagonal - gain * g.array().square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
     // Forgetting would overflow P (possible only without a ceiling: the trace can only fall by the
     // downdate, so trace(P) / lambda bounds it). Tested with 1 / lambda, the factor P is scaled by:
     // for a denormal lambda it is infinite although trace / lambda is not (found by fuzzing).

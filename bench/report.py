@@ -254,6 +254,9 @@ def main() -> int:
     target_table = table(["target", "measured", "required", "met"],
                          [[name, shown, target, "yes" if met else "NO"] for name, _, target, met, shown in targets],
                          "lrrl")
+    if not all(met for _, _, _, met, _ in targets):
+        target_table += ("\n\nA missed target: where the time goes, what was tried and what is left are in "
+                         "`docs/performance.md`.")
 
     info = machine(args.compiler, context)
     info["flags"] = args.flags

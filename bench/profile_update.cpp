@@ -1,0 +1,65 @@
+// A plain loop over Estimator<Model>::update for profilers (callgrind, perf), which the timing loop
+// of Google Benchmark would blur: `passes` passes over the benchmark record (4096 samples), each from
+// the initial estimate, at the paper's orders with fixed sizes in double.
+//   bonl_profile_update MODEL [PASSES]    MODEL: arx, hammerstein, hw, phw, phw-paper
+// Instructions per sample: run it under callgrind with 1 and 3 passes and divide the difference by
+// 2 * 4096 (docs/performance.md has the recipe and the latest profile).
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "bench_data.hpp"
+
+namespace {
+
+template <class Model>
+long run(bonl::Method method, long passes) {
+  const auto& data = bonl_bench::record<double>();
+  bonl::EstimatorOptions options;
+  options.method = method;
+  bonl::Estimator<Model> estimator(bonl_bench::make_structure<Model>(), options);
+  long updated = 0;
+  for (long pass = 0; pass < passes; ++pass) {
+    estimator.reset();
+    for (Eigen::Index k = 0; k < data.u.size(); ++k) {
+      updated += estimator.update(data.u[k], data.y[k]) == bonl::UpdateStatus::Updated ? 1 : 0;
+    }
+  }
+  return updated;
+}
+
+int usage() {
+  std::fprintf(stderr, "usage: bonl_profile_update MODEL [PASSES]  (MODEL: arx, hammerstein, hw, phw, phw-paper;"
+                       " PASSES >= 1, default 1)\n");
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || argc > 3) return usage();
+  const std::string model = argv[1];
+  char* end = nullptr;
+  const long passes = argc == 3 ? std::strtol(argv[2], &end, 10) : 1;
+  if (argc == 3 && (end == argv[2] || *end != '\0' || passes < 1)) return usage();
+
+  using M = bonl_bench::Models<double, true>;
+  long updated = 0;
+  if (model == "arx") {
+    updated = run<M::Arx>(bonl::Method::Default, passes);
+  } else if (model == "hammerstein") {
+    updated = run<M::Hammerstein>(bonl::Method::Default, passes);
+  } else if (model == "hw") {
+    updated = run<M::HammersteinWiener>(bonl::Method::Default, passes);
+  } else if (model == "phw") {
+    updated = run<M::Phw>(bonl::Method::Default, passes);
+  } else if (model == "phw-paper") {
+    updated = run<M::Phw>(bonl::Method::Paper, passes);
+  } else {
+    return usage();
+  }
+  // Printed, so that the loop cannot be optimised away; also a check that the estimator updated.
+  std::printf("%s: %ld passes, %ld updates\n", model.c_str(), passes, updated);
+  return 0;
+}

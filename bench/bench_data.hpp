@@ -99,6 +99,23 @@ Model make_structure() {
   return structure_of(static_cast<Model*>(nullptr));
 }
 
+/// Updates an estimator of `structure` over the record `passes` times, each pass from the initial
+/// estimate (reset()), and returns how many updates ran the RLS step (UpdateStatus::Updated).
+template <class Model>
+long count_updates(const Model& structure, const bonl::EstimatorOptions& options, long passes = 1) {
+  using Scalar = typename Model::Scalar;
+  const auto& data = record<Scalar>();
+  bonl::Estimator<Model> estimator(structure, options);
+  long updated = 0;
+  for (long pass = 0; pass < passes; ++pass) {
+    estimator.reset();
+    for (Eigen::Index k = 0; k < data.u.size(); ++k) {
+      updated += estimator.update(data.u[k], data.y[k]) == bonl::UpdateStatus::Updated ? 1 : 0;
+    }
+  }
+  return updated;
+}
+
 /// A stable model with the known parameters (ARX: b = true_b, a = true_a).
 template <class Model>
 Model make_known_model() {

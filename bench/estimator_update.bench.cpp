@@ -18,18 +18,6 @@ namespace {
 using bonl_bench::record;
 
 template <class Model>
-double updated_fraction(const Model& structure, const bonl::EstimatorOptions& options) {
-  using Scalar = typename Model::Scalar;
-  const auto& data = record<Scalar>();
-  bonl::Estimator<Model> estimator(structure, options);
-  Eigen::Index updated = 0;
-  for (Eigen::Index k = 0; k < data.u.size(); ++k) {
-    updated += estimator.update(data.u[k], data.y[k]) == bonl::UpdateStatus::Updated ? 1 : 0;
-  }
-  return static_cast<double>(updated) / static_cast<double>(data.u.size());
-}
-
-template <class Model>
 void update(benchmark::State& state, bonl::Method method) {
   using Scalar = typename Model::Scalar;
   const auto& data = record<Scalar>();
@@ -40,7 +28,8 @@ void update(benchmark::State& state, bonl::Method method) {
   // loses positiveness and every later update is refused, which would time a cheap rejection, not an
   // update); 1e4 keeps every model's float estimator updating.
   if constexpr (std::is_same_v<Scalar, float>) options.p0 = 1e4;
-  const double updated = updated_fraction(structure, options);
+  const double updated = static_cast<double>(bonl_bench::count_updates(structure, options)) /
+                         static_cast<double>(data.u.size());
   bonl::Estimator<Model> estimator(structure, options);
   Eigen::Index k = 0;
   for (auto _ : state) {

@@ -15,18 +15,9 @@ namespace {
 
 template <class Model>
 long run(bonl::Method method, long passes) {
-  const auto& data = bonl_bench::record<double>();
   bonl::EstimatorOptions options;
   options.method = method;
-  bonl::Estimator<Model> estimator(bonl_bench::make_structure<Model>(), options);
-  long updated = 0;
-  for (long pass = 0; pass < passes; ++pass) {
-    estimator.reset();
-    for (Eigen::Index k = 0; k < data.u.size(); ++k) {
-      updated += estimator.update(data.u[k], data.y[k]) == bonl::UpdateStatus::Updated ? 1 : 0;
-    }
-  }
-  return updated;
+  return bonl_bench::count_updates(bonl_bench::make_structure<Model>(), options, passes);
 }
 
 int usage() {

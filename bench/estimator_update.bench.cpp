@@ -1,13 +1,15 @@
 // Cost of one online estimator update (Estimator<Model>::update) per model at the paper's orders
 // (na = 3, nb = 2, nk = 8, r = r1 = 3), on a recorded noisy response of the known P-H-W system:
 // fixed (paper-order template) sizes and run-time (Eigen::Dynamic) sizes, double and float, the
-// default method, and the paper method for P-H-W. One benchmark iteration is one sample.
+// output-error method (the default), the equation-error method, and the paper method for P-H-W. One
+// benchmark iteration is one sample.
 //
-// Names: update/<model>/<fixed|dynamic>/<double|float>[/paper]. The counter `updated` is the
-// fraction of samples that ran the RLS step (measured in an untimed pass over the record): the P-H-W
-// default method skips the samples inside the backlash gap (about a quarter here), so its average is
-// below the cost of a full update. Float runs use P(0) = 1e4 I (see update()); a numerical failure
-// would show here as a small `updated`.
+// Names: update/<model>/<fixed|dynamic>/<double|float>[/equation_error|/paper] (no suffix: the
+// output-error method). The counter `updated` is the fraction of samples that ran the RLS step
+// (measured in an untimed pass over the record): the P-H-W equation-error method skips the samples
+// inside the backlash gap (about a quarter here), so its average is below the cost of a full update;
+// the output-error method updates on every sample. Float runs of the equation-error and paper
+// methods use P(0) = 1e4 I (see update()); a numerical failure would show here as a small `updated`.
 
 #include <benchmark/benchmark.h>
 
@@ -27,7 +29,9 @@ void update(benchmark::State& state, bonl::Method method) {
   // In float the paper's P(0) = 1e6 I breaks down within 60 samples of this record (the covariance
   // loses positiveness and every later update is refused, which would time a cheap rejection, not an
   // update); 1e4 keeps every model's float estimator updating.
-  if constexpr (std::is_same_v<Scalar, float>) options.p0 = 1e4;
+  if constexpr (std::is_same_v<Scalar, float>) {
+    if (method != bonl::Method::OutputError) options.p0 = 1e4;  // the output-error default, 10, is fine
+  }
   const double updated = static_cast<double>(bonl_bench::count_updates(structure, options)) /
                          static_cast<double>(data.u.size());
   bonl::Estimator<Model> estimator(structure, options);
@@ -58,10 +62,13 @@ void register_sizes(const std::string& suffix) {
     benchmark::RegisterBenchmark(("update/" + model + "/" + suffix + extra).c_str(),
                                  [method](benchmark::State& s) { update<Model>(s, method); });
   };
-  add("arx", static_cast<typename M::Arx*>(nullptr), bonl::Method::Default, "");
-  add("hammerstein", static_cast<typename M::Hammerstein*>(nullptr), bonl::Method::Default, "");
-  add("hw", static_cast<typename M::HammersteinWiener*>(nullptr), bonl::Method::Default, "");
-  add("phw", static_cast<typename M::Phw*>(nullptr), bonl::Method::Default, "");
+  for (const bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError}) {
+    const std::string extra = method == bonl::Method::OutputError ? "" : std::string("/") + bonl::to_string(method);
+    add("arx", static_cast<typename M::Arx*>(nullptr), method, extra);
+    add("hammerstein", static_cast<typename M::Hammerstein*>(nullptr), method, extra);
+    add("hw", static_cast<typename M::HammersteinWiener*>(nullptr), method, extra);
+    add("phw", static_cast<typename M::Phw*>(nullptr), method, extra);
+  }
   add("phw", static_cast<typename M::Phw*>(nullptr), bonl::Method::Paper, "/paper");
 }
 

@@ -1,12 +1,14 @@
 // A plain loop over Estimator<Model>::update for profilers (callgrind, perf), which the timing loop
 // of Google Benchmark would blur: `passes` passes over the benchmark record (4096 samples), each from
 // the initial estimate, at the paper's orders with fixed sizes in double.
-//   bonl_profile_update MODEL [PASSES]    MODEL: arx, hammerstein, hw, phw, phw-paper
+//   bonl_profile_update MODEL[-METHOD] [PASSES]
+//     MODEL: arx, hammerstein, hw, phw; METHOD: output_error (the default), equation_error, paper
 // Instructions per sample: run it under callgrind with 1 and 3 passes and divide the difference by
 // 2 * 4096 (docs/performance.md has the recipe and the latest profile).
 
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 
 #include "bench_data.hpp"
@@ -21,8 +23,8 @@ long run(bonl::Method method, long passes) {
 }
 
 int usage() {
-  std::fprintf(stderr, "usage: bonl_profile_update MODEL [PASSES]  (MODEL: arx, hammerstein, hw, phw, phw-paper;"
-                       " PASSES >= 1, default 1)\n");
+  std::fprintf(stderr, "usage: bonl_profile_update MODEL[-METHOD] [PASSES]  (MODEL: arx, hammerstein, hw, phw;"
+                       " METHOD: output_error, equation_error, paper; PASSES >= 1, default 1)\n");
   return 2;
 }
 
@@ -30,7 +32,17 @@ int usage() {
 
 int main(int argc, char** argv) {
   if (argc < 2 || argc > 3) return usage();
-  const std::string model = argv[1];
+  const std::string name = argv[1];
+  const std::size_t dash = name.find('-');
+  const std::string model = name.substr(0, dash);
+  bonl::Method method = bonl::Method::OutputError;
+  if (dash != std::string::npos) {
+    try {
+      method = bonl::method_from_string(name.substr(dash + 1));
+    } catch (const std::invalid_argument&) {
+      return usage();
+    }
+  }
   char* end = nullptr;
   const long passes = argc == 3 ? std::strtol(argv[2], &end, 10) : 1;
   if (argc == 3 && (end == argv[2] || *end != '\0' || passes < 1)) return usage();
@@ -38,19 +50,17 @@ int main(int argc, char** argv) {
   using M = bonl_bench::Models<double, true>;
   long updated = 0;
   if (model == "arx") {
-    updated = run<M::Arx>(bonl::Method::Default, passes);
+    updated = run<M::Arx>(method, passes);
   } else if (model == "hammerstein") {
-    updated = run<M::Hammerstein>(bonl::Method::Default, passes);
+    updated = run<M::Hammerstein>(method, passes);
   } else if (model == "hw") {
-    updated = run<M::HammersteinWiener>(bonl::Method::Default, passes);
+    updated = run<M::HammersteinWiener>(method, passes);
   } else if (model == "phw") {
-    updated = run<M::Phw>(bonl::Method::Default, passes);
-  } else if (model == "phw-paper") {
-    updated = run<M::Phw>(bonl::Method::Paper, passes);
+    updated = run<M::Phw>(method, passes);
   } else {
     return usage();
   }
   // Printed, so that the loop cannot be optimised away; also a check that the estimator updated.
-  std::printf("%s: %ld passes, %ld updates\n", model.c_str(), passes, updated);
+  std::printf("%s: %ld passes, %ld updates\n", name.c_str(), passes, updated);
   return 0;
 }

@@ -86,16 +86,28 @@ inline double setting(FuzzedDataProvider& in, double typical) {
 
 inline bonl::EstimatorOptions decode_options(FuzzedDataProvider& in) {
   bonl::EstimatorOptions options;
-  options.method = in.ConsumeBool() ? bonl::Method::Paper : bonl::Method::Default;
-  switch (in.ConsumeIntegralInRange<int>(0, 3)) {
-    case 0: break;  // the paper's schedule
+  constexpr bonl::Method kMethods[] = {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper};
+  options.method = kMethods[in.ConsumeIntegralInRange<int>(0, 2)];
+  switch (in.ConsumeIntegralInRange<int>(0, 4)) {
+    case 0: break;  // the method's schedule
     case 1: options.forgetting = bonl::ForgettingSchedule::constant(std::min(setting(in, 0.99), 1.0)); break;
     case 2: options.forgetting = bonl::ForgettingSchedule::constant(setting(in, 1.0)); break;
-    default:
-      options.forgetting.initial = setting(in, 0.98);
-      options.forgetting.initial_samples = in.ConsumeIntegralInRange<Eigen::Index>(-2, 300);
-      options.forgetting.final = setting(in, 1.0);
+    case 3: {
+      bonl::ForgettingSchedule schedule = bonl::ForgettingSchedule::adaptive_memory();
+      schedule.initial_memory = setting(in, 50.0);
+      schedule.changing_memory = setting(in, 100.0);
+      schedule.memory_growth = setting(in, 0.5);
+      options.forgetting = schedule;
       break;
+    }
+    default: {
+      bonl::ForgettingSchedule schedule;
+      schedule.initial = setting(in, 0.98);
+      schedule.initial_samples = in.ConsumeIntegralInRange<Eigen::Index>(-2, 300);
+      schedule.final = setting(in, 1.0);
+      options.forgetting = schedule;
+      break;
+    }
   }
   if (in.ConsumeBool()) options.p0 = setting(in, 1e6);
   if (in.ConsumeBool()) options.c0 = setting(in, 0.01);
@@ -120,10 +132,13 @@ inline bool verbose() {
 inline void print(const bonl::EstimatorOptions& o) {
   if (!verbose()) return;
   std::fprintf(stderr,
-               "options: method %s, forgetting %.17g for %ld then %.17g, p0 %.17g, c0 %.17g, internal_refresh %ld, "
-               "trace_ceiling %.17g, recover_after %ld\n",
-               bonl::to_string(o.method), o.forgetting.initial, long(o.forgetting.initial_samples), o.forgetting.final,
-               o.p0, o.c0, long(o.internal_refresh), o.trace_ceiling, long(o.recover_after));
+               "options: method %s, forgetting %s %.17g for %ld then %.17g (memory %.17g, %.17g, growth %.17g), p0 %.17g, "
+               "c0 %.17g, internal_refresh %ld, trace_ceiling %.17g, recover_after %ld\n",
+               bonl::to_string(o.method), o.resolved_forgetting().adaptive() ? "adaptive" : "steps",
+               o.resolved_forgetting().initial, long(o.resolved_forgetting().initial_samples), o.resolved_forgetting().final,
+               o.resolved_forgetting().initial_memory, o.resolved_forgetting().changing_memory,
+               o.resolved_forgetting().memory_growth, o.resolved_p0(), o.c0, long(o.internal_refresh),
+               o.resolved_trace_ceiling(), long(o.recover_after));
 }
 
 /// With BONL_FUZZ_STATS set: how the inputs and updates ended, printed at exit (docs/fuzzing.md).
@@ -144,14 +159,20 @@ inline bool lambda_ok(double lambda) { return std::isfinite(lambda) && lambda > 
 template <class Model>
 bool options_valid(const bonl::EstimatorOptions& o) {
   using Scalar = typename Model::Scalar;
-  const bool schedule = lambda_ok(o.forgetting.initial) && lambda_ok(o.forgetting.final) &&
-                        o.forgetting.initial_samples >= 0;
-  const bool p0 = std::isfinite(o.p0) && o.p0 > 0.0;
+  const bonl::ForgettingSchedule f = o.resolved_forgetting();
+  const auto memory_ok = [](double value, double minimum) { return std::isfinite(value) && value >= minimum; };
+  // Every field is validated, whichever kind is in force.
+  const bool schedule = lambda_ok(f.initial) && lambda_ok(f.final) && f.initial_samples >= 0 &&
+                        memory_ok(f.initial_memory, 1.0) && memory_ok(f.changing_memory, 1.0) &&
+                        memory_ok(f.memory_growth, 0.0) && memory_ok(f.short_window, 1.0) &&
+                        memory_ok(f.long_window, 1.0) && memory_ok(f.change_ratio, 1.0) && memory_ok(f.poor_fit, 0.0);
+  const double p0_value = o.resolved_p0();
+  const bool p0 = std::isfinite(p0_value) && p0_value > 0.0;
   const bool c0 = std::isfinite(o.c0) && o.c0 >= 0.0;
   // In Scalar: P(0) = p0 I must be finite and positive, and (P-H-W) c(0) = c0 finite.
-  const bool p0_scalar = p0 && std::isfinite(to_scalar<Scalar>(o.p0)) && to_scalar<Scalar>(o.p0) > Scalar(0);
+  const bool p0_scalar = p0 && std::isfinite(to_scalar<Scalar>(p0_value)) && to_scalar<Scalar>(p0_value) > Scalar(0);
   const bool c0_scalar = !ModelInfo<Model>::kUsesC0 || (c0 && std::isfinite(to_scalar<Scalar>(o.c0)));
-  const bool safeguards = o.trace_ceiling >= 1.0 && o.recover_after >= 0;  // trace_ceiling may be +inf
+  const bool safeguards = o.resolved_trace_ceiling() >= 1.0 && o.recover_after >= 0;  // the ceiling may be +inf
   return schedule && p0 && c0 && o.internal_refresh >= 1 && p0_scalar && c0_scalar && safeguards;
 }
 
@@ -167,7 +188,8 @@ class Harness {
   Harness(const Model& structure, const bonl::EstimatorOptions& options)
       : m_structure(structure), m_est(structure, options), m_n(structure.num_params()) {
     // The documented ceiling: trace(P) <= trace_ceiling * trace(P(0)) = trace_ceiling * n * p0.
-    m_max_trace = options.trace_ceiling * static_cast<double>(to_scalar<Scalar>(options.p0)) * static_cast<double>(m_n);
+    m_max_trace = options.resolved_trace_ceiling() * static_cast<double>(to_scalar<Scalar>(options.resolved_p0())) *
+                  static_cast<double>(m_n);
     check_fresh();
   }
 
@@ -224,7 +246,7 @@ class Harness {
   }
 
   bool is_initial_covariance() const {
-    const Covariance expected = Covariance::Identity(m_n, m_n) * to_scalar<Scalar>(m_est.options().p0);
+    const Covariance expected = Covariance::Identity(m_n, m_n) * to_scalar<Scalar>(m_est.options().resolved_p0());
     return same(expected, m_est.covariance());
   }
 
@@ -304,7 +326,9 @@ class Harness {
   }
 
   void check_fresh() {
-    FUZZ_CHECK(same(m_structure.initial_estimate(to_scalar<Scalar>(m_est.options().c0)), m_est.theta()));
+    // The output-error method starts c at 0 (the model's OutputErrorTerms), the others at c0.
+    const double c0 = m_est.options().method == bonl::Method::OutputError ? 0.0 : m_est.options().c0;
+    FUZZ_CHECK(same(m_structure.initial_estimate(to_scalar<Scalar>(c0)), m_est.theta()));
     check_fresh_covariance();
     m_recorded = 0;
   }

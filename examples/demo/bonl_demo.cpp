@@ -1,8 +1,9 @@
 // bonl_demo: the paper's experiment on the simulated excavator dipper joint (docs/plant.md).
 // Identifies ARX, Hammerstein, H-W and P-H-W with the paper's orders and settings on the multi-sine
 // record, validates them by free-run simulation on another trajectory, and prints Table 1
-// (parameters) and Table 2 (validation MSE of the velocity) in the paper's layout, for both
-// estimator methods. --sweep varies the pilot hysteresis and the pin backlash to show where P-H-W's
+// (parameters) and Table 2 (validation MSE of the velocity) in the paper's layout, for the
+// output-error method (bonl's default) and the paper's, and the validation MSE of the online
+// estimate alone (the recursive estimator after one pass, no refinement). --sweep varies the pilot hysteresis and the pin backlash to show where P-H-W's
 // advantage comes from.
 
 #include <bonl/bonl.hpp>
@@ -26,12 +27,13 @@ namespace {
 using bonl::plant::IdentifiedModels;
 
 const char* kUsage =
-    "usage: bonl_demo [--method default|paper] [--json FILE] [--csv FILE] [--sweep DIR]\n"
+    "usage: bonl_demo [--method output_error|paper] [--json FILE] [--csv FILE] [--sweep DIR]\n"
     "  Runs the paper's identification experiment on the default (20 t) plant and prints\n"
-    "  Table 1 (identified parameters) and Table 2 (validation MSE of the velocity) for both\n"
-    "  estimator methods.\n"
-    "  --method M   which method's results --json and --csv write at the top level (default: default)\n"
-    "  --json FILE  {\"mse\": {\"ARX\", \"Hammerstein\", \"HW\", \"PHW\"}, \"params\": {...}, \"methods\": {...}}\n"
+    "  Table 1 (identified parameters) and Table 2 (validation MSE of the velocity) for the\n"
+    "  output-error and the paper's estimator, and the online estimates' validation MSE.\n"
+    "  --method M   which method's results --json and --csv write at the top level (default: output_error)\n"
+    "  --json FILE  {\"mse\": {\"ARX\", \"Hammerstein\", \"HW\", \"PHW\"}, \"params\": {...}, \"methods\": {...},\n"
+    "               \"online\": {\"output_error\": {\"ARX\", ...}, \"paper\": {...}}}\n"
     "  --csv FILE   time, input, measured and predicted validation velocities\n"
     "  --sweep DIR  vary the pilot hysteresis (0-8%) and the pin backlash (0-20 mrad); writes\n"
     "               DIR/sweep.csv and DIR/sweep.svg (validation MSE of every model against each)\n";
@@ -112,13 +114,20 @@ std::string json_results(const IdentifiedModels& m) {
   return out.str();
 }
 
+std::string json_mse(const IdentifiedModels& m) {
+  return "{\"ARX\": " + json_number(m.mse_arx) + ", \"Hammerstein\": " + json_number(m.mse_hammerstein) +
+         ", \"HW\": " + json_number(m.mse_hammerstein_wiener) + ", \"PHW\": " + json_number(m.mse_phw) + "}";
+}
+
 void write_json(const std::string& path, const IdentifiedModels& chosen, const IdentifiedModels& ours,
-                const IdentifiedModels& paper) {
+                const IdentifiedModels& paper, const IdentifiedModels& ours_online, const IdentifiedModels& paper_online) {
   std::string top = json_results(chosen);
   top.pop_back();  // reopen the object to add the per-method results
   std::ofstream out(path);
-  out << top << ",\n \"method\": \"" << bonl::to_string(chosen.method) << "\",\n \"methods\": {\"default\": "
-      << json_results(ours) << ",\n \"paper\": " << json_results(paper) << "}}\n";
+  out << top << ",\n \"method\": \"" << bonl::to_string(chosen.method) << "\",\n \"methods\": {\""
+      << bonl::to_string(ours.method) << "\": " << json_results(ours) << ",\n \"paper\": " << json_results(paper)
+      << "},\n \"online\": {\"" << bonl::to_string(ours.method) << "\": " << json_mse(ours_online)
+      << ", \"paper\": " << json_mse(paper_online) << "}}\n";
   if (!out) throw std::runtime_error("bonl_demo: cannot write " + path);
 }
 
@@ -149,13 +158,13 @@ void robustness(const bonl::plant::Parameters& parameters, const IdentifiedModel
       counts[m][0] += phw_best;
       counts[m][1] += h_over_arx;
       counts[m][2] += phw_best && h_over_arx;
-      std::printf("%-4zu %-9s %11.3e %11.3e %11.3e %11.3e\n", i + 1, m == 0 ? "default" : "paper", e.phw,
+      std::printf("%-4zu %-12s %11.3e %11.3e %11.3e %11.3e\n", i + 1, m == 0 ? "output_error" : "paper", e.phw,
                   e.hammerstein_wiener, e.hammerstein, e.arx);
     }
   }
   for (int m = 0; m < 2; ++m) {
     std::printf("%s method: P-H-W < Hammerstein on %d/%zu, Hammerstein < ARX on %d/%zu, both on %d/%zu\n",
-                m == 0 ? "default" : "paper", counts[m][0], commands.size(), counts[m][1], commands.size(),
+                m == 0 ? "output_error" : "paper", counts[m][0], commands.size(), counts[m][1], commands.size(),
                 counts[m][2], commands.size());
   }
 }
@@ -171,10 +180,10 @@ int sweep(const std::string& dir) {
     bonl::plant::Parameters parameters;
     set(parameters);
     const auto data = bonl::plant::acquire(parameters);
-    points.push_back({name, value, bonl::plant::identify_models(data, bonl::Method::Default),
+    points.push_back({name, value, bonl::plant::identify_models(data, bonl::Method::OutputError),
                       bonl::plant::identify_models(data, bonl::Method::Paper)});
     const Point& p = points.back();
-    std::printf("%-16s %7.4g  default: PHW %.3e HW %.3e H %.3e ARX %.3e c %.4f | paper: PHW %.3e HW %.3e H %.3e ARX %.3e c %.4f\n",
+    std::printf("%-16s %7.4g  output_error: PHW %.3e HW %.3e H %.3e ARX %.3e c %.4f | paper: PHW %.3e HW %.3e H %.3e ARX %.3e c %.4f\n",
                 name.c_str(), value, p.ours.mse_phw, p.ours.mse_hammerstein_wiener, p.ours.mse_hammerstein,
                 p.ours.mse_arx, p.ours.phw.c(), p.paper.mse_phw, p.paper.mse_hammerstein_wiener,
                 p.paper.mse_hammerstein, p.paper.mse_arx, p.paper.phw.c());
@@ -201,7 +210,7 @@ int sweep(const std::string& dir) {
   }
   const auto chart = [&](const std::string& parameter, double scale, const std::string& x_label, bool ours) {
     bonl_demo::Chart c;
-    c.title = std::string(ours ? "default method" : "paper method") + ": validation MSE";
+    c.title = std::string(ours ? "output-error method" : "paper method") + ": validation MSE";
     c.x_label = x_label;
     c.y_label = "validation MSE of the velocity [(rad/s)^2]";
     bonl_demo::Series phw{"P-H-W", "#d62728", {}}, hw{"H-W", "#ff7f0e", {}}, h{"Hammerstein", "#2ca02c", {}},
@@ -227,7 +236,7 @@ int sweep(const std::string& dir) {
                         chart("joint_backlash", 1000.0, "pin backlash delta [mrad]", false)});
   const Point& zero = points.back();
   const Eigen::VectorXd y = bonl::plant::acquire(bonl::plant::Parameters{}).validation.velocity;
-  std::printf("\nWith no pilot hysteresis and no pin backlash, the identified c is %.4g (default) and %.4g (paper) "
+  std::printf("\nWith no pilot hysteresis and no pin backlash, the identified c is %.4g (output_error) and %.4g (paper) "
               "rad/s; the default plant's validation velocity has a standard deviation of %.4g rad/s.\n",
               zero.ours.phw.c(), zero.paper.phw.c(), std::sqrt((y.array() - y.mean()).square().mean()));
   std::printf("wrote %s/sweep.csv and %s/sweep.svg\n", dir.c_str(), dir.c_str());
@@ -238,7 +247,7 @@ int sweep(const std::string& dir) {
 
 int main(int argc, char** argv) {
   std::string json, csv, sweep_dir;
-  bonl::Method chosen = bonl::Method::Default;
+  bonl::Method chosen = bonl::Method::OutputError;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const auto value = [&]() -> std::string {
@@ -259,11 +268,11 @@ int main(int argc, char** argv) {
       sweep_dir = value();
     } else if (arg == "--method") {
       const std::string m = value();
-      if (m != "default" && m != "paper") {
-        std::fprintf(stderr, "bonl_demo: --method must be default or paper, got %s\n", m.c_str());
+      if (m != "output_error" && m != "paper") {
+        std::fprintf(stderr, "bonl_demo: --method must be output_error or paper, got %s\n", m.c_str());
         return 2;
       }
-      chosen = m == "paper" ? bonl::Method::Paper : bonl::Method::Default;
+      chosen = bonl::method_from_string(m);
     } else {
       std::fprintf(stderr, "bonl_demo: unknown argument %s\n%s", arg.c_str(), kUsage);
       return 2;
@@ -288,14 +297,24 @@ int main(int argc, char** argv) {
     std::printf("  plant simulation and processing: %.2f s\n", plant_seconds);
 
     const auto t_identify = std::chrono::steady_clock::now();
-    const IdentifiedModels ours = bonl::plant::identify_models(data, bonl::Method::Default);
+    const IdentifiedModels ours = bonl::plant::identify_models(data, bonl::Method::OutputError);
     const IdentifiedModels paper = bonl::plant::identify_models(data, bonl::Method::Paper);
+    const IdentifiedModels ours_online = bonl::plant::identify_models(data, bonl::Method::OutputError, 0);
+    const IdentifiedModels paper_online = bonl::plant::identify_models(data, bonl::Method::Paper, 0);
     print_tables(paper);
     print_tables(ours);
+    std::printf("\nOnline: the recursive estimator alone after one pass (no refinement), validation MSE\n");
+    std::printf("%-13s %12s %12s %12s %12s\n", "method", "P-H-W", "H-W", "Hammerstein", "ARX");
+    for (const IdentifiedModels* m : {&ours_online, &paper_online}) {
+      std::printf("%-13s %12.4e %12.4e %12.4e %12.4e   (rad/s)^2\n", bonl::to_string(m->method), m->mse_phw,
+                  m->mse_hammerstein_wiener, m->mse_hammerstein, m->mse_arx);
+    }
+    std::printf("%-13s %12.4e %12.4e %12.4e %12.4e   (identify(): recursive estimate refined)\n", "identify()",
+                ours.mse_phw, ours.mse_hammerstein_wiener, ours.mse_hammerstein, ours.mse_arx);
     std::printf("\nidentification and validation: %.2f s\n", seconds_since(t_identify));
     robustness(parameters, ours, paper);
     const IdentifiedModels& selected = chosen == bonl::Method::Paper ? paper : ours;
-    if (!json.empty()) write_json(json, selected, ours, paper);
+    if (!json.empty()) write_json(json, selected, ours, paper, ours_online, paper_online);
     if (!csv.empty()) write_csv(csv, data.validation, selected);
     return 0;
   } catch (const std::exception& error) {

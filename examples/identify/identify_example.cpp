@@ -91,6 +91,6 @@ int main() {
   const Eigen::VectorXd y_val = truth.simulate(u_val) + bonl::signals::white_noise(u_val.size(), sigma, 3);
   std::printf("Known P-H-W machine (c = 0.1), paper's multi-sine, 5000 samples, output noise 2%% of std(y).\n");
   run(bonl::Method::Paper, u, y, u_val, y_val);
-  run(bonl::Method::Default, u, y, u_val, y_val);
+  run(bonl::Method::OutputError, u, y, u_val, y_val);
   return 0;
 }

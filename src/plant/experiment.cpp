@@ -106,22 +106,25 @@ double free_run_mse(const Model& model, const Record& record, Eigen::VectorXd& s
 }
 
 template <class Model>
-void fit(const ExperimentData& data, Method method, Model& model, double& mse, Eigen::VectorXd& simulated) {
-  IdentifyOptions options;  // the paper's settings
+void fit(const ExperimentData& data, Method method, int refine_iterations, Model& model, double& mse,
+         Eigen::VectorXd& simulated) {
+  IdentifyOptions options;  // the method's default settings (for paper and equation_error, the paper's)
   options.method = method;
+  options.refine_iterations = refine_iterations;
   model = identify(model, data.identification.input, data.identification.velocity, options);
   mse = free_run_mse(model, data.validation, simulated);
 }
 
 }  // namespace
 
-IdentifiedModels identify_models(const ExperimentData& data, Method method) {
+IdentifiedModels identify_models(const ExperimentData& data, Method method, int refine_iterations) {
   IdentifiedModels result;
   result.method = method;
-  fit(data, method, result.arx, result.mse_arx, result.simulated_arx);
-  fit(data, method, result.hammerstein, result.mse_hammerstein, result.simulated_hammerstein);
-  fit(data, method, result.hammerstein_wiener, result.mse_hammerstein_wiener, result.simulated_hammerstein_wiener);
-  fit(data, method, result.phw, result.mse_phw, result.simulated_phw);
+  fit(data, method, refine_iterations, result.arx, result.mse_arx, result.simulated_arx);
+  fit(data, method, refine_iterations, result.hammerstein, result.mse_hammerstein, result.simulated_hammerstein);
+  fit(data, method, refine_iterations, result.hammerstein_wiener, result.mse_hammerstein_wiener,
+      result.simulated_hammerstein_wiener);
+  fit(data, method, refine_iterations, result.phw, result.mse_phw, result.simulated_phw);
   return result;
 }
 

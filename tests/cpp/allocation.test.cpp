@@ -12,6 +12,8 @@ inline long g_eigen_allocations = 0;
 #define EIGEN_RUNTIME_NO_MALLOC
 #define eigen_assert(x) ((x) ? static_cast<void>(0) : static_cast<void>(++bonl_test::g_eigen_allocations))
 
+#include <optional>
+
 #include "counting_allocator.hpp"
 #include "test_support.hpp"
 
@@ -32,11 +34,11 @@ long heap_allocations_in(Body&& body) {
 /// Updates `structure` on a noisy record, with both methods, and checks that they allocate nothing,
 /// refuse nothing and leave the covariance exactly symmetric.
 template <class Model>
-void check_updates_allocate_nothing(const Model& structure, const bonl::ForgettingSchedule& forgetting) {
+void check_updates_allocate_nothing(const Model& structure, const std::optional<bonl::ForgettingSchedule>& forgetting) {
   INFO(Model::kName);
   const Eigen::VectorXd u = bonl::signals::random_levels(3000, 5, 1.0, 3);
   const Eigen::VectorXd y = structure.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 4);
-  for (bonl::Method method : {bonl::Method::Default, bonl::Method::Paper}) {
+  for (bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
     bonl::EstimatorOptions options;
     options.method = method;
     options.forgetting = forgetting;
@@ -86,6 +88,10 @@ TEST_CASE("updates with recording on, the trace ceiling acting and automatic rec
           "[allocation]") {
   const auto structure = known_phw();
   bonl::EstimatorOptions options;
+  // Equation error: its huge inputs stay in the regressor and fail updates in a row. (The
+  // output-error method restarts its simulation when it leaves the finite numbers, so the failures
+  // do not come in a row; check_updates_allocate_nothing covers its updates.)
+  options.method = bonl::Method::EquationError;
   options.forgetting = bonl::ForgettingSchedule::constant(0.98);
   options.recover_after = 2;
   bonl::Estimator<bonl::PaperPseudoHammersteinWiener> estimator(structure, options);

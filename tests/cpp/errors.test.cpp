@@ -65,7 +65,8 @@ TEST_CASE("identify rejects bad records", "[errors]") {
   options.passes = 0;
   CHECK_THROWS_WITH(bonl::identify(model, u, y, options), Contains("passes"));
   options.passes = 1;
-  options.forgetting.final = 1.01;
+  options.forgetting = bonl::ForgettingSchedule::paper();
+  options.forgetting->final = 1.01;
   CHECK_THROWS_WITH(bonl::identify(model, u, y, options), Contains("forgetting factor"));
 }
 
@@ -83,7 +84,7 @@ TEST_CASE("a non-finite sample in the online update leaves the estimator untouch
   const bonl::PaperPseudoHammersteinWiener truth = known_phw();
   const Eigen::VectorXd u = bonl::signals::random_levels(1000, 5, 1.0, 31);
   const Eigen::VectorXd y = truth.simulate(u);
-  for (bonl::Method method : {bonl::Method::Default, bonl::Method::Paper}) {
+  for (bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
     bonl::EstimatorOptions options;
     options.method = method;
     bonl::Estimator<bonl::PaperPseudoHammersteinWiener> clean(truth, options);

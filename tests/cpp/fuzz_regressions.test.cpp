@@ -14,12 +14,15 @@
 // differently. When a sample pins a direction down to below P's resolution (here one large input,
 // P phi phi' P / denominator = P_00 (1 - 0.98 / (0.98 + 1e6 u^2)), the check passes on a rounding
 // residue and the update returns Updated with P(0, 0) = 0 exactly: a singular covariance reported
-// as a good update. The default settings and an input of 1e5 (a pressure in Pa, say) suffice.
+// as a good update. The equation-error method's default settings (P(0) = 1e6 I) and an input of 1e5
+// (a pressure in Pa, say) suffice.
 // Fixed: the check now runs on h_i^2 and keeps a margin of 64 roundings; this update is refused.
 // (The downdate is now P_ii - c (g_i g_i) with g = P phi, c = 1 / denominator; the check runs on
 // that same product.)
 TEST_CASE("an accepted update keeps every diagonal entry of P positive", "[fuzz]") {
-  bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1));
+  bonl::EstimatorOptions options;
+  options.method = bonl::Method::EquationError;
+  bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1), options);
   REQUIRE(estimator.update(100006.0, 0.0) == bonl::UpdateStatus::Updated);  // phi = 0: nothing to learn yet
   const bonl::UpdateStatus status = estimator.update(0.0, 0.0);             // phi = (100006, 0, ...)
   INFO("status " << static_cast<int>(status) << ", P(0, 0) = " << estimator.covariance()(0, 0));
@@ -34,13 +37,13 @@ TEST_CASE("an accepted update keeps every diagonal entry of P positive", "[fuzz]
 // the overshoot appears from about lambda = 1e-2 (4.6e-11 relative).
 // Fixed: the ceiling is applied to the trace computed after the downdate.
 TEST_CASE("the trace ceiling holds with a tiny forgetting factor", "[fuzz]") {
-  bonl::EstimatorOptions options;  // trace_ceiling 1: trace(P) <= 6 * p0
+  bonl::EstimatorOptions options;  // the default ceiling: trace(P) <= trace_ceiling * 6 * p0
   options.forgetting = bonl::ForgettingSchedule::constant(1e-20);
   bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1), options);
   const double samples[][2] = {{0.75, 2},      {-1.25, 0.25}, {0.25, 0.75},   {-0.75, -2},
                                {1, -1.75},     {-1, -1.75},   {-1.75, 1.25},  {0.25, -0.75},
                                {-1.25, -1.5},  {0.75, -1.5},  {1.25, -1.75},  {0.75, 0}};
-  const double ceiling = options.trace_ceiling * 6.0 * options.p0;
+  const double ceiling = options.resolved_trace_ceiling() * 6.0 * options.resolved_p0();
   for (const auto& sample : samples) {
     const bonl::UpdateStatus status = estimator.update(sample[0], sample[1]);
     INFO("u = " << sample[0] << ", y = " << sample[1] << ": status " << static_cast<int>(status) << ", trace "

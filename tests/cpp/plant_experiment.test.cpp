@@ -51,7 +51,7 @@ TEST_CASE("the default experiment: records, end stops, and the paper's ranking",
   // own estimator, Hammerstein < ARX holds but its P-H-W does not beat its Hammerstein on this
   // validation record (README, "The experiment": eq. (27) feeds the gap samples the output's
   // increments), so only what holds is asserted for it, and the shortfall is printed.
-  const auto ours = bonl::plant::identify_models(data, bonl::Method::Default);
+  const auto ours = bonl::plant::identify_models(data, bonl::Method::OutputError);
   INFO("default: MSE P-H-W " << ours.mse_phw << ", H-W " << ours.mse_hammerstein_wiener << ", Hammerstein "
                              << ours.mse_hammerstein << ", ARX " << ours.mse_arx);
   CHECK(ours.mse_phw < ours.mse_hammerstein);
@@ -69,7 +69,7 @@ TEST_CASE("without pilot hysteresis and pin backlash the identified c is near ze
   parameters.pilot_hysteresis = 0.0;
   parameters.joint_backlash = 0.0;
   const auto data = bonl::plant::acquire(parameters);
-  const auto ours = bonl::plant::identify_models(data, bonl::Method::Default);
+  const auto ours = bonl::plant::identify_models(data, bonl::Method::OutputError);
   CHECK(ours.phw.c() <= 0.01 * standard_deviation(data.validation.velocity));
 }
 
@@ -80,7 +80,7 @@ TEST_CASE("P-H-W's advantage grows with the pilot hysteresis", "[experiment][slo
   for (int i = 0; i < 2; ++i) {
     bonl::plant::Parameters parameters;
     parameters.pilot_hysteresis = i == 0 ? 0.0 : 0.08;
-    const auto models = bonl::plant::identify_models(bonl::plant::acquire(parameters), bonl::Method::Default);
+    const auto models = bonl::plant::identify_models(bonl::plant::acquire(parameters), bonl::Method::OutputError);
     ratio[i] = models.mse_phw / models.mse_hammerstein;
   }
   CHECK(ratio[0] == Approx(1.0).epsilon(0.05));

@@ -120,6 +120,7 @@ TEST_CASE("the model estimator with lambda = 1 equals batch least squares on the
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 22);
   const double p0 = 1e3;
   bonl::EstimatorOptions options;
+  options.method = bonl::Method::EquationError;  // for ARX: least squares on its regressor
   options.forgetting = bonl::ForgettingSchedule::constant(1.0);
   options.p0 = p0;
   bonl::Estimator<bonl::PaperARX> estimator(truth, options);

@@ -1,5 +1,5 @@
 // bonl_soak: the estimator as it would run for months inside a controller. P-H-W online
-// identification (paper orders, default method, constant forgetting factor 0.98) of a known P-H-W
+// identification (paper orders, output-error method by default, constant forgetting factor 0.98) of a known P-H-W
 // plant through a repeating cycle of phases:
 //   rich      random input levels, 1% output noise, occasional outliers (|y| spikes of 20 std(y));
 //   constant  the input held at one value (only the output noise excites);
@@ -16,7 +16,7 @@
 // docs/reliability.md.
 //
 //   bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X] [--seed S]
-//             [--method default|paper] [--json FILE]
+//             [--method output_error|equation_error|paper] [--json FILE]
 
 #include <bonl/bonl.hpp>
 
@@ -29,6 +29,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -43,8 +44,8 @@ struct Settings {
   long long samples = 100'000'000;
   long long phase_length = 50'000;
   long long check_every = 10'000;
-  double trace_ceiling = bonl::EstimatorOptions{}.trace_ceiling;
-  bonl::Method method = bonl::Method::Default;
+  std::optional<double> trace_ceiling;  // unset: the method's default
+  bonl::Method method = bonl::Method::OutputError;
   unsigned seed = 2026;
   std::string json;
 };
@@ -52,7 +53,7 @@ struct Settings {
 [[noreturn]] void usage(const std::string& problem) {
   std::cerr << "bonl_soak: " << problem
             << "\nusage: bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X]"
-               " [--seed S] [--method default|paper] [--json FILE]\n";
+               " [--seed S] [--method output_error|equation_error|paper] [--json FILE]\n";
   std::exit(2);
 }
 
@@ -90,10 +91,11 @@ Settings parse(int argc, char** argv) {
       }
     }
     else if (arg == "--method") {
-      const std::string method = value();
-      if (method == "default") s.method = bonl::Method::Default;
-      else if (method == "paper") s.method = bonl::Method::Paper;
-      else usage("--method must be 'default' or 'paper', got '" + method + "'");
+      try {
+        s.method = bonl::method_from_string(value());
+      } catch (const std::invalid_argument& error) {
+        usage(std::string("--method: ") + error.what());
+      }
     }
     else usage("unknown argument '" + arg + "'");
   }
@@ -192,9 +194,9 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& error) {
     usage(error.what());
   }
-  const bool ceiling = std::isfinite(options.trace_ceiling);
+  const bool ceiling = std::isfinite(options.resolved_trace_ceiling());
   bonl::Estimator<Model> estimator(truth, options);
-  const double trace_limit = options.trace_ceiling * options.p0 * double(truth.num_params());
+  const double trace_limit = options.resolved_trace_ceiling() * options.resolved_p0() * double(truth.num_params());
 
   std::mt19937_64 rng(settings.seed);
   std::uniform_real_distribution<double> level(-1.0, 1.0);
@@ -327,7 +329,7 @@ int main(int argc, char** argv) {
   const bonl::EstimatorHealth& health = estimator.health();
 
   std::printf("bonl_soak: %lld samples of P-H-W online identification, %s method, lambda = 0.98, trace ceiling %g\n",
-              settings.samples, bonl::to_string(settings.method), options.trace_ceiling);
+              settings.samples, bonl::to_string(settings.method), options.resolved_trace_ceiling());
   std::printf("  phases of %lld samples: rich, constant, rich, zero; %lld outliers of +-%.2f\n",
               settings.phase_length, outliers, outlier_size);
   std::printf("  wall time %.1f s (%.0f ns per sample, data generation and checks included)\n", seconds,
@@ -351,7 +353,7 @@ int main(int argc, char** argv) {
     out.precision(6);
     out << "{\"samples\": " << settings.samples << ", \"method\": \"" << bonl::to_string(settings.method)
         << "\", \"phase_length\": " << settings.phase_length
-        << ", \"trace_ceiling\": " << (ceiling ? std::to_string(options.trace_ceiling) : std::string("null")) << ", \"seconds\": " << seconds
+        << ", \"trace_ceiling\": " << (ceiling ? std::to_string(options.resolved_trace_ceiling()) : std::string("null")) << ", \"seconds\": " << seconds
         << ", \"outliers\": " << outliers << ", \"largest_abs_p\": " << largest_p
         << ", \"largest_trace\": " << largest_trace << ", \"smallest_eigenvalue\": " << smallest_eigenvalue
         << ", \"largest_abs_theta\": " << largest_theta << ", \"failures\": " << failures

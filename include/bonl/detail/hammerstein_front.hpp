@@ -1,7 +1,8 @@
 #pragma once
 // What the three block models share: the Hammerstein front (two-segment input polynomial, then
 // the linear block with b_0 = 1), its parameters in eq. (19) order, its free-run simulation, and the
-// key-term regressor of its linear-in-parameters form (eq. 14). Users never name this header.
+// key-term regressor of its linear-in-parameters form (eq. 14), and its one-step simulation with
+// sensitivities for the output-error method. Users never name this header.
 
 #include <Eigen/Core>
 #include <cmath>
@@ -10,6 +11,8 @@
 #include "../blocks/two_segment_polynomial.hpp"
 #include "../estimator/method.hpp"
 #include "history.hpp"
+#include "simulated_lags.hpp"
+#include "stability.hpp"
 #include "validate.hpp"
 
 namespace bonl::detail {
@@ -183,11 +186,11 @@ class FrontKeyTerms {
   }
 
   /// x(k) = regressor . theta over the front's entries, for the lags end() stores. The paper's method
-  /// re-evaluates it with the updated estimate (eq. 24); the default method gets the theta begin()
+  /// re-evaluates it with the updated estimate (eq. 24); the equation-error method gets the theta begin()
   /// had (the estimator's internal copy), so it is the x begin() returned, kept rather than summed again.
   template <typename Theta, typename Phi>
   Scalar internal(const Theta& theta, const Phi& phi, Method method) const noexcept {
-    if (method == Method::Default) return m_x_begin;
+    if (method == Method::EquationError) return m_x_begin;
     const Eigen::Index n = 2 * (r() + 1) + nb() + na();
     constexpr int kFront = front_params(Na, Nb, R);
     return phi.template head<kFront>(n).dot(theta.template head<kFront>(n));
@@ -220,6 +223,102 @@ class FrontKeyTerms {
   History<Scalar, Na> m_x;
   Eigen::Index m_k = 0;
   Scalar m_x_begin = Scalar(0);  // what begin() returned
+};
+
+/// The front for the output-error method: one step of its free-run simulation with the current
+/// estimate, x(k) = sum_{i=0..nb} b_i w(k-nk-i) - sum_j a_j x(k-j) with w = N1(u; f, p) recomputed from
+/// the stored u (w has no memory of its own, so it is exact for the current f, p), and the sensitivity
+/// of x(k) to the front's parameters:
+///   d x / d f_l = sum_i b_i u(k-nk-i)^l,  d x / d p_l = sum_i b_i h(u) u(k-nk-i)^l,
+///   d x / d b_i = w(k-nk-i),  d x / d a_j = -x(k-j),
+/// each filtered by 1 / A (SimulatedLags). Before the record starts u, w and x are zero, as in simulate().
+template <typename Scalar, int Na = Eigen::Dynamic, int Nb = Eigen::Dynamic, int R = Eigen::Dynamic>
+class FrontOutputError {
+  static constexpr int kCoeffs = poly_size(R);
+  static constexpr int kFront = front_params(Na, Nb, R);
+
+ public:
+  using Sensitivity = Eigen::Matrix<Scalar, kFront, 1>;
+
+  FrontOutputError() = default;
+  FrontOutputError(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_u(nk + nb + 1), m_lags(na, 2 * (r + 1) + nb + na),
+        m_dx(Sensitivity::Zero(2 * (r + 1) + nb + na)), m_work(Eigen::Matrix<Scalar, Na, 1>::Zero(na)) {}
+
+  void reset() noexcept {
+    m_u.clear();
+    m_lags.reset();
+    m_dx.setZero();
+    m_x = Scalar(0);
+    m_k = 0;
+  }
+
+  /// Pushes u(k) and simulates one step with `theta` (whose first entries are the front's): returns
+  /// x(k); sensitivity() is then d x(k) / d theta_front. Nothing is stored until commit().
+  template <typename Theta>
+  Scalar step(const Theta& theta, Scalar u) noexcept {
+    m_u.push(u);
+    const Eigen::Index n_fp = 2 * (r() + 1);
+    const auto f = theta.template segment<kCoeffs>(0, r() + 1);
+    const auto p = theta.template segment<kCoeffs>(r() + 1, r() + 1);
+    m_dx.head(n_fp).setZero();
+    Scalar x = Scalar(0);
+    for (Eigen::Index i = 0; i <= nb(); ++i) {
+      Scalar w = Scalar(0);
+      if (m_k - m_nk - i >= 0) {
+        const Scalar u_lag = m_u[m_nk + i];
+        const Scalar b = i == 0 ? Scalar(1) : theta[n_fp + i - 1];
+        const Scalar h = input_switch(u_lag);
+        Scalar power = Scalar(1);
+        for (Eigen::Index l = 0; l <= r(); ++l) {
+          m_dx[l] += b * power;
+          m_dx[r() + 1 + l] += b * h * power;
+          w += power * (f[l] + h * p[l]);
+          power *= u_lag;
+        }
+        x += b * w;
+      }
+      if (i > 0) m_dx[n_fp + i - 1] = w;
+    }
+    x += m_lags.apply(theta.template segment<Na>(n_fp + nb(), na()), m_dx, n_fp + nb());
+    m_x = x;
+    return x;
+  }
+
+  /// d x(k) / d theta_front of the last step().
+  const Sensitivity& sensitivity() const noexcept { return m_dx; }
+  /// x(k) of the last step().
+  Scalar x() const noexcept { return m_x; }
+
+  /// Stores the last step's x(k) and its sensitivity as the newest lag.
+  void commit() noexcept {
+    m_lags.push(m_x, m_dx);
+    if (m_k < m_nk + nb() + 1) ++m_k;  // only "before or after the record start" matters
+  }
+  /// After the estimate's front moved by `delta`: the stored lags to first order (SimulatedLags).
+  template <typename Delta>
+  void correct(const Delta& delta) noexcept {
+    m_lags.correct(delta);
+  }
+
+  /// Is the linear block's denominator in `theta` stable, all poles inside |z| < radius?
+  template <typename Theta>
+  bool stable(const Theta& theta, Scalar radius) noexcept {
+    return roots_inside(theta.template segment<Na>(2 * (r() + 1) + nb(), na()), radius, m_work);
+  }
+
+ private:
+  Eigen::Index na() const noexcept { return Na == Eigen::Dynamic ? m_na : Na; }
+  Eigen::Index nb() const noexcept { return Nb == Eigen::Dynamic ? m_nb : Nb; }
+  Eigen::Index r() const noexcept { return R == Eigen::Dynamic ? m_r : R; }
+
+  Eigen::Index m_na = 0, m_nb = 0, m_nk = 0, m_r = 0;
+  History<Scalar> m_u;  // capacity nk + nb + 1: nk is a run-time order
+  SimulatedLags<Scalar, Na, kFront> m_lags;
+  Sensitivity m_dx;
+  Eigen::Matrix<Scalar, Na, 1> m_work;  // for the stability test
+  Scalar m_x = Scalar(0);
+  Eigen::Index m_k = 0;
 };
 
 }  // namespace bonl::detail

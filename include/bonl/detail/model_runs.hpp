@@ -1,6 +1,6 @@
 #pragma once
 // What every model's simulate() and predict() share. One-step-ahead prediction runs the model's
-// key-term tracker with the default method's internal-variable estimates (those that use the
+// key-term tracker with the equation-error method's internal-variable estimates (those that use the
 // measured output) and fixed parameters, so a prediction and the estimator's regressor come from
 // the same code.
 
@@ -37,9 +37,9 @@ typename Model::VectorX predict_one_step(const Model& model, const Eigen::Matrix
   typename Model::Params phi = Model::Params::Zero(model.num_params());
   typename Model::VectorX prediction(u.size());
   for (Eigen::Index k = 0; k < u.size(); ++k) {
-    const Scalar x = terms.begin(theta, u[k], Method::Default, phi);
+    const Scalar x = terms.begin(theta, u[k], Method::EquationError, phi);
     prediction[k] = terms.predicted_output(theta, x);
-    terms.end(theta, phi, u[k], y[k], Method::Default);
+    terms.end(theta, phi, u[k], y[k], Method::EquationError);
   }
   return prediction;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// Whole-record identification: passes of the recursive estimator over (u, y) and, for the default
-// method, refinement of the result by minimising the free-run simulation error.
+// Whole-record identification: passes of the recursive estimator over (u, y) and, for the
+// output-error and equation-error methods, refinement of the result by minimising the free-run
+// simulation error.
 
 #include <Eigen/Core>
 #include <cmath>
@@ -16,7 +17,7 @@ namespace bonl {
 
 struct IdentifyOptions : EstimatorOptions {
   int passes = 1;              ///< passes of the recursive estimator over the record (paper's step 5)
-  int refine_iterations = 100; ///< Levenberg-Marquardt iterations of the default method (0: none)
+  int refine_iterations = 100; ///< Levenberg-Marquardt iterations of the refinement (0: none)
 };
 
 /// The recursive estimator alone: `options.passes` passes over the record, each continuing from the
@@ -43,10 +44,11 @@ Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u
 /// Identifies the parameters of `structure` (its orders; its parameter values are not used) from
 /// input u and measured output y.
 /// - Method::Paper: the recursive estimator of eqs. (21)-(31), `passes` passes.
-/// - Method::Default: the recursive estimator with measured-output internals, `passes` passes; then
-///   both that estimate and the paper method's are refined by Levenberg-Marquardt on the free-run
-///   simulation error over this record, and the one that simulates the record better is returned.
-///   ARX has no internal variables and keeps its least-squares (equation-error) estimate.
+/// - Method::OutputError (the default) and Method::EquationError: that recursive estimator,
+///   `passes` passes; then both its estimate and the paper method's are refined by
+///   Levenberg-Marquardt on the free-run simulation error over this record, and the one that
+///   simulates the record better is returned. ARX under Method::EquationError is least squares and
+///   keeps that estimate (that is what an ARX model is).
 template <class Model, typename U, typename Y>
 Model identify(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
                const IdentifyOptions& options = {}) {
@@ -55,11 +57,13 @@ Model identify(const Model& structure, const Eigen::MatrixBase<U>& u, const Eige
   detail::require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
   detail::require_record(u, y, structure.num_params());
 
-  if (options.method == Method::Paper || !Model::kHasInternalVariables || options.refine_iterations == 0) {
+  const bool least_squares_arx = options.method == Method::EquationError && !Model::kHasInternalVariables;
+  if (options.method == Method::Paper || least_squares_arx || options.refine_iterations == 0) {
     return estimate_recursively(structure, u, y, options);
   }
-  // Two starts for the refinement: the default recursive estimate and the paper method's. A start
-  // whose recursion broke down numerically is dropped; if both did, the error is reported.
+  // Two starts for the refinement: the method's recursive estimate and the paper method's (with the
+  // paper method's defaults where the options leave them unset). A start whose recursion broke down
+  // numerically is dropped; if both did, the error is reported.
   IdentifyOptions paper_options = options;
   paper_options.method = Method::Paper;
   const IdentifyOptions* starts[] = {&options, &paper_options};

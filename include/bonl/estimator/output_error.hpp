@@ -74,11 +74,11 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
       // Projected like every candidate: at a bound (c = 0) the difference becomes one-sided, with
       // the same simulations as before (a model with c < 0 simulates as c = 0).
       shifted[i] = theta[i] + step;
-      constraint.constrain(shifted, Method::Default);
+      constraint.constrain(shifted, Method::EquationError);
       trial.set_theta(shifted);
       const bool ok_plus = trial.try_simulate(u, plus);
       shifted[i] = theta[i] - step;
-      constraint.constrain(shifted, Method::Default);
+      constraint.constrain(shifted, Method::EquationError);
       trial.set_theta(shifted);
       const bool ok_minus = trial.try_simulate(u, minus);
       if (ok_plus && ok_minus) {
@@ -98,7 +98,7 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
       damped.diagonal() += Scalar(damping) * scale;
       const VectorX delta = damped.ldlt().solve(gradient);
       typename Model::Params candidate = theta + delta;
-      constraint.constrain(candidate, Method::Default);
+      constraint.constrain(candidate, Method::EquationError);
       if (candidate.allFinite()) {
         trial.set_theta(candidate);
         new_cost = detail::simulation_cost(trial, u, y, plus);

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -17,35 +18,66 @@
 namespace bonl {
 
 struct EstimatorOptions {
-  Method method = Method::Default;
-  ForgettingSchedule forgetting = ForgettingSchedule::paper();
-  double p0 = 1e6;  ///< P(0) = p0 I
-  double c0 = 0.01; ///< initial backlash half-width (P-H-W only)
-  /// Method::Default only: the internal variables are computed from a copy of theta refreshed every
-  /// `internal_refresh` samples, not from the running estimate (see Estimator::update).
+  Method method = Method::OutputError;
+  /// Unset, the method's default: ForgettingSchedule::adaptive_memory() for output_error, the
+  /// paper's schedule (0.98 for 200 samples, then 1) for equation_error and paper.
+  std::optional<ForgettingSchedule> forgetting;
+  /// P(0) = p0 I. Unset, the method's default: 10 for output_error (its regressor is a gradient of the
+  /// simulated output, and larger first steps destabilise the simulation it is taken along), the
+  /// paper's 1e6 for equation_error and paper (linear regressions: P(0) large says "no prior").
+  std::optional<double> p0;
+  double c0 = 0.01; ///< initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0)
+  /// Method::EquationError only: the internal variables are computed from a copy of theta refreshed
+  /// every `internal_refresh` samples, not from the running estimate (see Estimator::update).
   Eigen::Index internal_refresh = 100;
 
   // Numerical safeguards (see "Reliability" in the README and docs/reliability.md).
   /// trace(P) is kept at or below trace_ceiling * trace(P(0)) = trace_ceiling * n * p0 by reducing
   /// the forgetting where it would grow P beyond that (no covariance wind-up under poor excitation).
-  /// Must be >= 1; infinity turns it off (the paper's algorithm exactly as written). The default,
-  /// 1, means "never less certain than at the start"; larger ceilings let P's condition number
-  /// grow with them (at 100 the paper method's P lost positive definiteness to round-off in the
-  /// 1e8-sample soak test, docs/reliability.md).
-  double trace_ceiling = 1.0;
+  /// Must be >= 1; infinity turns it off (the paper's algorithm exactly as written). Unset, the
+  /// method's default: 1 for equation_error and paper, "never less certain than at the start" (larger
+  /// ceilings let P's condition number grow with them: at 100 the paper method's P lost positive
+  /// definiteness to round-off in the 1e8-sample soak test, docs/reliability.md); 100 for output_error,
+  /// whose P(0) is small and whose short memory while converging needs room in the weakly excited
+  /// directions (docs/algorithm.md).
+  std::optional<double> trace_ceiling;
   /// After this many consecutive refused updates (UpdateStatus::NumericalFailure) the estimator
   /// resets P to p0 I itself, keeping theta (counted in health().recoveries). 0: never; the caller
   /// sees diverged() and calls recover() or reset().
   Eigen::Index recover_after = 0;
 
+  // Method::OutputError only.
+  /// The linear block's estimated poles are kept inside |z| < stability_radius: an update that would
+  /// move one outside is shortened (halved up to 10 times, else not taken), counted in
+  /// health().projections. In (0, 1]; 0.999 admits time constants up to about 1000 samples.
+  double stability_radius = 0.999;
+  /// P-H-W: c is held at 0 for this many samples from the start (see the model's OutputErrorTerms).
+  Eigen::Index backlash_hold = 200;
+
+  /// The forgetting schedule, p0 and trace ceiling in force: the ones set, or the method's defaults.
+  ForgettingSchedule resolved_forgetting() const {
+    if (forgetting) return *forgetting;
+    return method == Method::OutputError ? ForgettingSchedule::adaptive_memory() : ForgettingSchedule::paper();
+  }
+  double resolved_p0() const { return p0 ? *p0 : (method == Method::OutputError ? 10.0 : 1e6); }
+  double resolved_trace_ceiling() const {
+    return trace_ceiling ? *trace_ceiling : (method == Method::OutputError ? 100.0 : 1.0);
+  }
+
   void validate() const {
-    forgetting.validate();
-    detail::require(std::isfinite(p0) && p0 > 0.0, "p0 (initial covariance scale) must be finite and > 0");
+    resolved_forgetting().validate();
+    const double p0_value = resolved_p0();
+    detail::require(std::isfinite(p0_value) && p0_value > 0.0, "p0 (initial covariance scale) must be finite and > 0, got " +
+                                                                   detail::format_number(p0_value));
     detail::require(std::isfinite(c0) && c0 >= 0.0, "c0 (initial backlash half-width) must be finite and >= 0");
     detail::require(internal_refresh >= 1, "internal_refresh must be >= 1");
-    detail::require(trace_ceiling >= 1.0, "trace_ceiling must be >= 1 (a multiple of trace(P(0))) or infinity, got " +
-                                              detail::format_number(trace_ceiling));
+    const double ceiling = resolved_trace_ceiling();
+    detail::require(ceiling >= 1.0, "trace_ceiling must be >= 1 (a multiple of trace(P(0))) or infinity, got " +
+                                        detail::format_number(ceiling));
     detail::require(recover_after >= 0, "recover_after must be >= 0 (0: never recover automatically)");
+    detail::require(stability_radius > 0.0 && stability_radius <= 1.0,
+                    "stability_radius must be in (0, 1], got " + detail::format_number(stability_radius));
+    detail::require(backlash_hold >= 0, "backlash_hold must be >= 0");
   }
 };
 
@@ -66,6 +98,7 @@ struct EstimatorHealth {
   Eigen::Index forgetting_limited = 0;     ///< updates whose forgetting the trace ceiling reduced
   Eigen::Index recoveries = 0;             ///< automatic covariance resets (EstimatorOptions::recover_after)
   Eigen::Index internal_restarts = 0;      ///< internal variables restarted because they became non-finite
+  Eigen::Index projections = 0;            ///< output_error updates shortened to keep the linear block stable
 };
 
 /// Recorded history of an estimator (Estimator::start_recording): one column / entry per update,
@@ -82,7 +115,8 @@ namespace detail {
 template <class M, class = void>
 struct is_model : std::false_type {};
 template <class M>
-struct is_model<M, std::void_t<typename M::Scalar, typename M::Params, typename M::KeyTerms, typename M::VectorX,
+struct is_model<M, std::void_t<typename M::Scalar, typename M::Params, typename M::KeyTerms,
+                               typename M::OutputErrorTerms, typename M::VectorX,
                                decltype(M::kNumParams), decltype(M::kHasInternalVariables),
                                decltype(std::declval<const M&>().theta()),
                                decltype(std::declval<const M&>().num_params())>> : std::true_type {};
@@ -91,7 +125,7 @@ struct is_model<M, std::void_t<typename M::Scalar, typename M::Params, typename 
 template <class Model>
 class Estimator {
   static_assert(detail::is_model<Model>::value,
-                "bonl::Estimator<Model>: Model must provide Scalar, Params, VectorX, KeyTerms, kNumParams, "
+                "bonl::Estimator<Model>: Model must provide Scalar, Params, VectorX, KeyTerms, OutputErrorTerms, kNumParams, "
                 "kHasInternalVariables, theta() and num_params() (see the model concept in bonl/models.hpp)");
 
  public:
@@ -99,16 +133,20 @@ class Estimator {
   using Params = typename Model::Params;
   using Covariance = Eigen::Matrix<Scalar, Model::kNumParams, Model::kNumParams>;
 
-  /// `structure` gives the orders; the estimate starts from the paper's initial values (zero, c = c0).
+  /// `structure` gives the orders; the estimate starts from zero (c = c0 for the equation-error and
+  /// paper methods, c = 0 for the output-error method).
   explicit Estimator(const Model& structure, const EstimatorOptions& options = {})
-      : m_model(structure), m_terms(structure), m_rls(structure.num_params(), Scalar(validated(options).p0)),
-        m_phi(Params::Zero(structure.num_params())), m_theta_internal(m_phi), m_options(options) {
+      : m_model(validated(structure, options)), m_terms(structure), m_outputs(structure),
+        m_rls(structure.num_params(), Scalar(options.resolved_p0())),
+        m_phi(Params::Zero(structure.num_params())), m_theta_internal(m_phi), m_step(m_phi), m_options(options),
+        m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
     reset();
   }
 
   /// Everything back to the start: initial theta, P = p0 I, internals at rest.
   void reset() {
-    m_rls.reset(m_model.initial_estimate(Scalar(m_options.c0)), Scalar(m_options.p0));
+    const double c0 = m_options.method == Method::OutputError ? 0.0 : m_options.c0;
+    m_rls.reset(m_model.initial_estimate(Scalar(c0)), Scalar(m_p0));
     start_pass();
     clear_history();
   }
@@ -117,7 +155,7 @@ class Estimator {
   /// P = p0 I, internals at rest.
   template <typename T>
   void reset(const Eigen::MatrixBase<T>& theta0) {
-    m_rls.reset(theta0, Scalar(m_options.p0));
+    m_rls.reset(theta0, Scalar(m_p0));
     start_pass();
     clear_history();
   }
@@ -182,6 +220,7 @@ class Estimator {
   UpdateStatus update(Scalar u, Scalar y) noexcept {
     if (!std::isfinite(u) || !std::isfinite(y)) return UpdateStatus::RejectedNonFinite;
     const Method method = m_options.method;
+    if (method == Method::OutputError) return update_output_error(u, y);
     // Paper: internal variables from the running estimate, as eqs. (24)-(27) write it. Default: from
     // a copy refreshed every internal_refresh samples. While P is large the running estimate swings,
     // and internal variables computed from it feed those swings back into the regressor, which
@@ -194,7 +233,7 @@ class Estimator {
     Scalar target = Scalar(0);
     UpdateStatus status = UpdateStatus::NoInformation;
     if (m_terms.regress(theta, x, y, method, m_phi, target)) {
-      if (m_rls.update(m_phi, target, Scalar(m_options.forgetting.at(m_sample)), m_max_trace)) {
+      if (m_rls.update(m_phi, target, forgetting_factor(y, y - m_prediction), m_max_trace)) {
         m_terms.constrain(m_rls.mutable_theta(), method);
         status = UpdateStatus::Updated;
         m_health.consecutive_failures = 0;
@@ -221,13 +260,15 @@ class Estimator {
   /// P-H-W estimate can have c < 0, which simulates as c = 0).
   Model model() const {
     Params theta = m_rls.theta();
-    m_terms.constrain(theta, Method::Default);
+    m_terms.constrain(theta, Method::EquationError);
     Model model = m_model;
     model.set_theta(theta);
     return model;
   }
-  /// The one-step prediction of the last sample's y, made before the update with the parameters
-  /// the update used: y - last_prediction() is the innovation (for monitoring and fault detection).
+  /// The prediction of the last sample's y, made before the update with the parameters the update
+  /// used: y - last_prediction() is the innovation (for monitoring and fault detection). For the
+  /// output-error method it is the model's free-run (simulated) output; for the others the key-term
+  /// one-step prediction from the measured past.
   Scalar last_prediction() const noexcept { return m_prediction; }
   /// Samples since the last pass started.
   Eigen::Index samples() const noexcept { return m_sample; }
@@ -236,16 +277,24 @@ class Estimator {
   /// What the safeguards did since the last reset().
   const EstimatorHealth& health() const noexcept { return m_health; }
   const EstimatorOptions& options() const noexcept { return m_options; }
+  /// The forgetting factor's current memory length 1 / (1 - lambda) under an adaptive-memory
+  /// schedule (NaN for a step schedule).
+  double memory() const noexcept {
+    return m_forgetting.adaptive() ? m_memory.memory() : std::numeric_limits<double>::quiet_NaN();
+  }
 
  private:
-  static const EstimatorOptions& validated(const EstimatorOptions& options) {
+  /// Checks the options and the parameter count before any storage is sized from them (the
+  /// output-error terms keep na x n sensitivities).
+  static const Model& validated(const Model& structure, const EstimatorOptions& options) {
     options.validate();
-    return options;
+    detail::require_order(structure.num_params(), 1, "number of parameters");
+    return structure;
   }
 
   void clear_history() {
     m_health = EstimatorHealth{};
-    m_max_trace = Scalar(m_options.trace_ceiling * m_options.p0 * double(m_rls.size()));
+    m_max_trace = Scalar(m_options.resolved_trace_ceiling() * m_p0 * double(m_rls.size()));
     m_record_next = 0;
     m_recorded = 0;
     m_total_samples = 0;
@@ -254,6 +303,8 @@ class Estimator {
 
   void restart_internals() noexcept {
     m_terms.reset();
+    m_outputs.reset();
+    m_memory.reset(m_forgetting);
     m_theta_internal = m_rls.theta();
     m_since_refresh = 0;
   }
@@ -261,10 +312,63 @@ class Estimator {
   /// recover() without clearing diverged(). The data histories are kept: they are fine unless
   /// non-finite, which update() handles itself. Cannot throw: p0 was validated, P keeps its size.
   void reset_covariance() noexcept {
-    m_rls.reset_covariance(Scalar(m_options.p0));
+    m_rls.reset_covariance(Scalar(m_p0));
     m_theta_internal = m_rls.theta();
     m_since_refresh = 0;
     m_health.consecutive_failures = 0;
+  }
+
+  /// Lambda for this sample: the schedule's value, or under an adaptive memory the factor that the
+  /// output y and its a-priori prediction error lead to.
+  Scalar forgetting_factor(Scalar y, Scalar error) noexcept {
+    if (m_forgetting.adaptive()) {
+      return Scalar(m_memory.next(m_forgetting, static_cast<double>(y), static_cast<double>(error)));
+    }
+    return Scalar(m_forgetting.at(m_sample));
+  }
+
+  /// Method::OutputError (docs/algorithm.md): simulate the model one step with the current estimate,
+  /// take one Gauss-Newton step on the simulation error with the output's sensitivities as the
+  /// regressor, keep the estimate valid (c >= 0, the linear block stable), then store the step and
+  /// move the stored simulation to first order along the change of the estimate.
+  UpdateStatus update_output_error(Scalar u, Scalar y) noexcept {
+    const Scalar prediction = m_outputs.predict(m_rls.theta(), u, m_phi);
+    if (!std::isfinite(prediction)) return internal_divergence(prediction);
+    m_prediction = prediction;
+    if (m_sample < m_options.backlash_hold) m_outputs.hold(m_phi);
+    const Scalar error = y - prediction;
+    const Scalar lambda = forgetting_factor(y, error);
+    m_step = m_rls.theta();
+    UpdateStatus status = UpdateStatus::Updated;
+    if (m_rls.update_with_error(m_phi, error, lambda, m_max_trace)) {
+      Params& theta = m_rls.mutable_theta();
+      m_outputs.constrain(theta);
+      m_step = theta - m_step;  // the step taken; theta = previous + m_step from here on
+      if (!m_outputs.stable(theta, Scalar(m_options.stability_radius))) shorten_step(theta);
+      m_health.consecutive_failures = 0;
+      if (m_rls.forgetting_limited()) ++m_health.forgetting_limited;
+    } else {
+      m_step.setZero();
+      status = failure();
+    }
+    m_outputs.commit(m_phi, prediction);
+    m_outputs.correct(m_step);
+    return finish(status, m_outputs.internal());
+  }
+
+  /// theta = previous + m_step left the stability region: halve the step until it is back inside
+  /// (the region is not convex in theta, but its interior is open, so short enough steps from a
+  /// stable estimate stay in it), at most 10 times, else take no step.
+  void shorten_step(Params& theta) noexcept {
+    ++m_health.projections;
+    const Scalar radius = Scalar(m_options.stability_radius);
+    for (int halving = 0; halving < 10; ++halving) {
+      m_step *= Scalar(0.5);
+      theta -= m_step;
+      if (m_outputs.stable(theta, radius)) return;
+    }
+    theta -= m_step;
+    m_step.setZero();
   }
 
   UpdateStatus failure() noexcept {
@@ -303,11 +407,16 @@ class Estimator {
   }
 
   Model m_model;
-  typename Model::KeyTerms m_terms;
+  typename Model::KeyTerms m_terms;           // equation_error and paper
+  typename Model::OutputErrorTerms m_outputs; // output_error
   Rls<Scalar, Model::kNumParams> m_rls;
-  Params m_phi;
-  Params m_theta_internal;
+  Params m_phi;             // the regressor: key terms, or the output's sensitivities
+  Params m_theta_internal;  // equation_error: the copy of theta the internal variables use
+  Params m_step;            // output_error: the change of theta in the current update
   EstimatorOptions m_options;
+  ForgettingSchedule m_forgetting;  // resolved from the options
+  double m_p0;                      // resolved from the options
+  detail::AdaptiveMemory m_memory;
   Eigen::Index m_since_refresh = 0;
   Eigen::Index m_sample = 0;
   Eigen::Index m_total_samples = 0;

@@ -89,13 +89,15 @@ class Rls {
   template <typename Phi>
   bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda,
               Scalar max_trace = std::numeric_limits<Scalar>::infinity()) noexcept {
-    if constexpr (N_ == Eigen::Dynamic) {
-      return update(phi, target, lambda, max_trace, m_scratch, m_next);  // preallocated: no allocation
-    } else {
-      StorageVector work;  // on the stack; as locals they cannot alias phi, which keeps them in registers
-      Vector next;
-      return update(phi, target, lambda, max_trace, work, next);
-    }
+    return dispatch<false>(phi, target, lambda, max_trace);
+  }
+
+  /// The same update given the prediction error e = target - phi' theta itself: for a regressor that
+  /// is a gradient (the output-error method), where there is no target.
+  template <typename Phi>
+  bool update_with_error(const Eigen::MatrixBase<Phi>& phi, Scalar error, Scalar lambda,
+                         Scalar max_trace = std::numeric_limits<Scalar>::infinity()) noexcept {
+    return dispatch<true>(phi, error, lambda, max_trace);
   }
 
   /// True when the last accepted update had its forgetting reduced by the trace ceiling.
@@ -117,9 +119,20 @@ class Rls {
 
   static Eigen::Index storage_size(Eigen::Index n) { return N_ == Eigen::Dynamic ? n : kStorage; }
 
-  template <typename Phi>
-  BONL_FLATTEN bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda, Scalar max_trace,
-                           StorageVector& work, Vector& next) noexcept {
+  template <bool kGivenError, typename Phi>
+  bool dispatch(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda, Scalar max_trace) noexcept {
+    if constexpr (N_ == Eigen::Dynamic) {
+      return update<kGivenError>(phi, target_or_error, lambda, max_trace, m_scratch, m_next);  // preallocated
+    } else {
+      StorageVector work;  // on the stack; as locals they cannot alias phi, which keeps them in registers
+      Vector next;
+      return update<kGivenError>(phi, target_or_error, lambda, max_trace, work, next);
+    }
+  }
+
+  template <bool kGivenError, typename Phi>
+  BONL_FLATTEN bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
+                           Scalar max_trace, StorageVector& work, Vector& next) noexcept {
     const Eigen::Index n = size();
     // work = M phi, as a sum of columns: vectorised axpys over whole (padded) columns, no horizontal
     // reductions. The padding rows of M are zero, so work's padding is zero too. Fixed sizes sum
@@ -143,7 +156,8 @@ class Rls {
     const Scalar denominator = lambda + m_scale * phi.dot(g);
     if (!(denominator > Scalar(0)) || !std::isfinite(denominator)) return false;
     const Scalar gain = m_scale / denominator;  // K = P phi / denominator = gain M phi
-    const Scalar error = target - phi.dot(m_theta);
+    Scalar error = target_or_error;
+    if constexpr (!kGivenError) error -= phi.dot(m_theta);
     next = m_theta + (error * gain) * g;
     // All finite: x - x is 0 for a finite x and NaN otherwise, so the sum is exactly 0 when every entry
     // is finite (a vectorised reduction; allFinite() tests and branches entry by entry).

@@ -9,6 +9,8 @@
 #include "../blocks/linear_block.hpp"
 #include "../detail/history.hpp"
 #include "../detail/model_runs.hpp"
+#include "../detail/simulated_lags.hpp"
+#include "../detail/stability.hpp"
 #include "../detail/validate.hpp"
 #include "../estimator/method.hpp"
 
@@ -121,6 +123,51 @@ class ARX {
    private:
     Eigen::Index m_na, m_nb, m_nk;
     detail::History<Scalar> m_u, m_y;
+  };
+
+  /// The output-error method's view (Method::OutputError): ARX's parameters as the output-error
+  /// model y = z^-nk B / A u, the way simulate() runs it. One step of the free run,
+  /// x(k) = sum_i b_i u(k-nk-i) - sum_j a_j x(k-j), with dx/db_i = u(k-nk-i) and dx/da_j = -x(k-j)
+  /// filtered by 1 / A (detail::SimulatedLags).
+  class OutputErrorTerms {
+   public:
+    explicit OutputErrorTerms(const ARX& model)
+        : m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_u(model.nk() + model.nb() + 1),
+          m_lags(model.na(), model.num_params()), m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())) {}
+    void reset() noexcept {
+      m_u.clear();
+      m_lags.reset();
+      m_x = Scalar(0);
+    }
+    template <typename Psi>
+    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+      m_u.push(u);
+      Scalar x = Scalar(0);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) {
+        psi[i] = m_u[m_nk + i];
+        x += theta[i] * psi[i];
+      }
+      x += m_lags.apply(theta.template segment<Na_>(m_nb + 1, m_na), psi, m_nb + 1);
+      m_x = x;
+      return x;
+    }
+    template <typename Psi>
+    void commit(const Psi& psi, Scalar /*output*/) noexcept { m_lags.push(m_x, psi); }
+    void correct(const Params& delta) noexcept { m_lags.correct(delta); }
+    bool stable(const Params& theta, Scalar radius) noexcept {
+      return detail::roots_inside(theta.template segment<Na_>(m_nb + 1, m_na), radius, m_work);
+    }
+    void constrain(Params& /*theta*/) const noexcept {}
+    template <typename Psi>
+    void hold(Psi& /*psi*/) const noexcept {}
+    Scalar internal() const noexcept { return m_x; }
+
+   private:
+    Eigen::Index m_na, m_nb, m_nk;
+    detail::History<Scalar> m_u;
+    detail::SimulatedLags<Scalar, Na_, kNumParams> m_lags;
+    Eigen::Matrix<Scalar, Na_, 1> m_work;
+    Scalar m_x = Scalar(0);
   };
 
  private:

@@ -38,7 +38,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0> {
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form (eq. 14): y(k) = [basis(u(k-nk)), w lags, -x lags] . theta. The past x are the
-  /// model's free run for Method::Paper and the measured y for Method::Default.
+  /// model's free run for Method::Paper and the measured y for Method::EquationError.
   class KeyTerms {
    public:
     explicit KeyTerms(const Hammerstein& model) : m_front(model.na(), model.nb(), model.nk(), model.r()) {}
@@ -62,6 +62,32 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0> {
 
    private:
     detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
+  };
+
+  /// The output-error method's view (Method::OutputError): the free run one step at a time with
+  /// its sensitivities; y = x, so dy/dtheta = dx/dtheta.
+  class OutputErrorTerms {
+   public:
+    explicit OutputErrorTerms(const Hammerstein& model) : m_front(model.na(), model.nb(), model.nk(), model.r()) {}
+    void reset() noexcept { m_front.reset(); }
+    /// Pushes u(k); returns the simulated y(k) with `theta` and writes dy(k)/dtheta into psi.
+    template <typename Psi>
+    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+      const Scalar x = m_front.step(theta, u);
+      psi = m_front.sensitivity();
+      return x;
+    }
+    template <typename Psi>
+    void commit(const Psi& /*psi*/, Scalar /*output*/) noexcept { m_front.commit(); }
+    void correct(const Params& delta) noexcept { m_front.correct(delta); }
+    bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
+    void constrain(Params& /*theta*/) const noexcept {}
+    template <typename Psi>
+    void hold(Psi& /*psi*/) const noexcept {}
+    Scalar internal() const noexcept { return m_front.x(); }
+
+   private:
+    detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;
   };
 };
 

@@ -101,7 +101,7 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
     void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
       const Scalar x_model = m_front.internal(theta, phi, method);
       Scalar x_lag = x_model;
-      if (method == Method::Default) {
+      if (method == Method::EquationError) {
         // q_1 = 1 sits outside theta: invert x + sum_{m>=2} q_m x^m = y.
         Scalar q_buffer[32];
         const Eigen::Index r1 = std::min<Eigen::Index>(m_r1, 32);
@@ -116,6 +116,45 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
 
    private:
     detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
+    Eigen::Index m_r1;
+    Eigen::Index m_n;
+  };
+
+  /// The output-error method's view (Method::OutputError): the front's free run with its
+  /// sensitivities, then y = x + sum_{m>=2} q_m x^m, so dy/dtheta_front = q'(x) dx/dtheta_front and
+  /// dy/dq_m = x^m.
+  class OutputErrorTerms {
+   public:
+    explicit OutputErrorTerms(const HammersteinWiener& model)
+        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_r1(model.r1()), m_n(model.num_params()) {}
+    void reset() noexcept { m_front.reset(); }
+    template <typename Psi>
+    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+      const Scalar x = m_front.step(theta, u);
+      Scalar y = x;
+      Scalar slope = Scalar(1);
+      Scalar power = x;  // x^(m-1), then x^m
+      for (Eigen::Index m = 2; m <= m_r1; ++m) {
+        const Eigen::Index index = m_n - m_r1 + m - 1;
+        slope += Scalar(m) * theta[index] * power;
+        power *= x;
+        y += theta[index] * power;
+        psi[index] = power;
+      }
+      psi.head(m_n - m_r1 + 1) = slope * m_front.sensitivity();
+      return y;
+    }
+    template <typename Psi>
+    void commit(const Psi& /*psi*/, Scalar /*output*/) noexcept { m_front.commit(); }
+    void correct(const Params& delta) noexcept { m_front.correct(delta.head(m_n - m_r1 + 1)); }
+    bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
+    void constrain(Params& /*theta*/) const noexcept {}
+    template <typename Psi>
+    void hold(Psi& /*psi*/) const noexcept {}
+    Scalar internal() const noexcept { return m_front.x(); }
+
+   private:
+    detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;
     Eigen::Index m_r1;
     Eigen::Index m_n;
   };

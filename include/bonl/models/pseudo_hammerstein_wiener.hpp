@@ -71,7 +71,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   /// Key-term form (eqs. 15-18): [front, s(k)] . theta = y_c(k).
   /// Paper: s = 0.5 {(1 - sgn dx) g4 - (1 + sgn dx) g3} and y_c from eq. (27), with g3, g4 from
   /// eqs. (30)-(31) and dx the change of the model's free-run x.
-  /// Default: the a-priori x decides the regime against the measured y(k-1) (eqs. 30-31); pushing
+  /// EquationError: the a-priori x decides the regime against the measured y(k-1) (eqs. 30-31); pushing
   /// up gives y = x - c (s = -1), down y = x + c (s = +1); inside the gap y(k) = y(k-1) says nothing
   /// about theta and the sample is skipped. Past x are clipped to [y - c, y + c].
   class KeyTerms {
@@ -122,7 +122,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
       const Scalar x_model = m_front.internal(theta, phi, method);
       Scalar x_lag = x_model;
-      if (method == Method::Default) {
+      if (method == Method::EquationError) {
         const Scalar c = std::max(theta[m_last], Scalar(0));
         x_lag = std::min(std::max(x_model, y - c), y + c);
       }
@@ -131,7 +131,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
       m_y_prev = y;
     }
     void constrain(Params& theta, Method method) const noexcept {
-      if (method == Method::Default && theta[m_last] < Scalar(0)) theta[m_last] = Scalar(0);
+      if (method != Method::Paper && theta[m_last] < Scalar(0)) theta[m_last] = Scalar(0);
     }
 
    private:
@@ -139,6 +139,68 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     Eigen::Index m_last;
     Scalar m_y_prev = Scalar(0);
     Scalar m_x_prev = Scalar(0);
+  };
+
+  /// The output-error method's view (Method::OutputError): the front's free run with its
+  /// sensitivities, then the backlash with the model's own previous output as its memory. Driving up
+  /// (x - c > y(k-1)) y = x - c, so dy/dtheta = [dx/dtheta, -1]; driving down y = x + c and
+  /// [dx/dtheta, +1]; inside the gap y(k) = y(k-1) and its sensitivity is held. With c = 0 the block
+  /// is the identity and counts as driving.
+  ///
+  /// A model at rest inside its own gap (front all zero, c > 0) has a zero gradient: nothing can
+  /// move it. The estimator therefore starts P-H-W with c = 0 and holds c there for its first samples
+  /// (hold()), so that the front is learnt first, as a Hammerstein model's.
+  class OutputErrorTerms {
+   public:
+    explicit OutputErrorTerms(const PseudoHammersteinWiener& model)
+        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_last(model.num_params() - 1),
+          m_dy(Params::Zero(model.num_params())) {}
+    void reset() noexcept {
+      m_front.reset();
+      m_y = Scalar(0);
+      m_dy.setZero();
+    }
+    template <typename Psi>
+    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+      const Scalar x = m_front.step(theta, u);
+      const Scalar c = std::max(theta[m_last], Scalar(0));
+      if (x - c > m_y || (c == Scalar(0) && x >= m_y)) {
+        psi.head(m_last) = m_front.sensitivity();
+        psi[m_last] = Scalar(-1);
+        return x - c;
+      }
+      if (x + c < m_y) {
+        psi.head(m_last) = m_front.sensitivity();
+        psi[m_last] = Scalar(1);
+        return x + c;
+      }
+      psi = m_dy;
+      return m_y;
+    }
+    /// Stores the step: x and its sensitivity in the front, y(k) = `output` and its sensitivity psi as
+    /// the backlash memory.
+    template <typename Psi>
+    void commit(const Psi& psi, Scalar output) noexcept {
+      m_front.commit();
+      m_y = output;
+      m_dy = psi;
+    }
+    void correct(const Params& delta) noexcept {
+      m_front.correct(delta.head(m_last));
+      m_y += m_dy.dot(delta);
+    }
+    bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
+    void constrain(Params& theta) const noexcept { theta[m_last] = std::max(theta[m_last], Scalar(0)); }
+    /// Zeroes the sensitivity to c, which is held (at 0) for the estimator's first samples.
+    template <typename Psi>
+    void hold(Psi& psi) const noexcept { psi[m_last] = Scalar(0); }
+    Scalar internal() const noexcept { return m_front.x(); }
+
+   private:
+    detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;
+    Eigen::Index m_last;
+    Scalar m_y = Scalar(0);  // the model's own y(k-1): the backlash memory
+    Params m_dy;             // and its sensitivity
   };
 };
 

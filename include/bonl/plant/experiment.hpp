@@ -61,9 +61,10 @@ struct ExperimentData {
 ExperimentData acquire(const Parameters& parameters, const ExperimentOptions& options = {});
 
 /// The four models identified with the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3) and
-/// settings, with their validation MSE of the velocity (free-run simulation).
+/// settings, with their validation MSE of the velocity (free-run simulation). refine_iterations = 0
+/// gives the recursive estimator's result alone: what an online estimator has after one pass.
 struct IdentifiedModels {
-  Method method = Method::Default;
+  Method method = Method::OutputError;
   PaperARX arx{3, 2, 8};
   PaperHammerstein hammerstein{3, 2, 8, 3};
   PaperHammersteinWiener hammerstein_wiener{3, 2, 8, 3, 3};
@@ -72,7 +73,7 @@ struct IdentifiedModels {
   /// Free-run simulated validation velocities, in the order ARX, Hammerstein, H-W, P-H-W.
   Eigen::VectorXd simulated_arx, simulated_hammerstein, simulated_hammerstein_wiener, simulated_phw;
 };
-IdentifiedModels identify_models(const ExperimentData& data, Method method);
+IdentifiedModels identify_models(const ExperimentData& data, Method method, int refine_iterations = 100);
 
 /// Validation MSE of the four models on another record (free-run simulation; infinity for a model
 /// that is unstable on it).

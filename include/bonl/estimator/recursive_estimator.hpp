@@ -348,8 +348,13 @@ class Estimator {
       m_health.consecutive_failures = 0;
       if (m_rls.forgetting_limited()) ++m_health.forgetting_limited;
     } else {
-      m_step.setZero();
-      status = failure();
+      // Refused: the sensitivities, and the simulated state they come from, have left the range P can
+      // take (an absurd input inside the simulation decays only with the model's poles and would
+      // refuse every update for thousands of samples). Restart the simulation from rest instead.
+      const Scalar x = m_outputs.internal();
+      ++m_health.internal_restarts;
+      m_outputs.reset();
+      return finish(failure(), x);
     }
     m_outputs.commit(m_phi, prediction);
     m_outputs.correct(m_step);

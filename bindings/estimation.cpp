@@ -7,6 +7,7 @@
 #include <bonl/models.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <variant>
 
 #include "bindings.hpp"
@@ -15,15 +16,10 @@
 namespace bonl_python {
 namespace {
 
-bonl::Method parse_method(const std::string& method) {
-  if (method == "default") return bonl::Method::Default;
-  if (method == "paper") return bonl::Method::Paper;
-  throw py::value_error("method must be 'default' or 'paper', got '" + method + "'");
-}
-
-/// None: the paper's schedule (0.98 for 200 samples, then 1); a number: constant; a tuple
-/// (initial, initial_samples, final).
-constexpr const char* kForgettingForms = "forgetting must be a number or a tuple (initial, initial_samples, final)";
+/// None: the method's default schedule; a number: constant; a tuple (initial, initial_samples,
+/// final); "adaptive": the adaptive memory.
+constexpr const char* kForgettingForms =
+    "forgetting must be None, a number, a tuple (initial, initial_samples, final) or 'adaptive'";
 
 /// A real number (not a bool, a string or a complex), or a ValueError naming `what`.
 double forgetting_factor(const py::handle& value, const char* what) {
@@ -37,8 +33,12 @@ double forgetting_factor(const py::handle& value, const char* what) {
                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
 }
 
-bonl::ForgettingSchedule parse_forgetting(const py::object& forgetting) {
-  if (forgetting.is_none()) return bonl::ForgettingSchedule::paper();
+std::optional<bonl::ForgettingSchedule> parse_forgetting(const py::object& forgetting) {
+  if (forgetting.is_none()) return std::nullopt;
+  if (py::isinstance<py::str>(forgetting)) {
+    if (forgetting.cast<std::string>() == "adaptive") return bonl::ForgettingSchedule::adaptive_memory();
+    throw py::value_error(std::string(kForgettingForms) + ", got '" + forgetting.cast<std::string>() + "'");
+  }
   if (py::isinstance<py::tuple>(forgetting) || py::isinstance<py::list>(forgetting)) {
     const auto items = forgetting.cast<py::sequence>();
     if (items.size() != 3) throw py::value_error(kForgettingForms);
@@ -55,20 +55,37 @@ bonl::ForgettingSchedule parse_forgetting(const py::object& forgetting) {
       throw py::value_error(std::string(kForgettingForms) + "; initial_samples is out of range, got " +
                             std::string(py::str(samples)));
     }
-    return {forgetting_factor(items[0], "initial"), initial_samples, forgetting_factor(items[2], "final")};
+    bonl::ForgettingSchedule schedule;
+    schedule.initial = forgetting_factor(items[0], "initial");
+    schedule.initial_samples = initial_samples;
+    schedule.final = forgetting_factor(items[2], "final");
+    return schedule;
   }
   return bonl::ForgettingSchedule::constant(forgetting_factor(forgetting, "forgetting"));
 }
 
-bonl::EstimatorOptions estimator_options(const std::string& method, const py::object& forgetting, double p0,
-                                         double c0, double trace_ceiling = 1.0, Eigen::Index recover_after = 0) {
+/// The keyword arguments Estimator and identify share; None leaves an option at its method's default.
+struct OptionArguments {
+  std::string method;
+  py::object forgetting;
+  std::optional<double> p0;
+  double c0;
+  std::optional<double> trace_ceiling;
+  Eigen::Index recover_after = 0;
+  double stability_radius = 0.999;
+  Eigen::Index backlash_hold = 200;
+};
+
+bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
   bonl::EstimatorOptions options;
-  options.method = parse_method(method);
-  options.forgetting = parse_forgetting(forgetting);
-  options.p0 = p0;
-  options.c0 = c0;
-  options.trace_ceiling = trace_ceiling;
-  options.recover_after = recover_after;
+  options.method = bonl::method_from_string(arguments.method);  // std::invalid_argument: a ValueError
+  options.forgetting = parse_forgetting(arguments.forgetting);
+  options.p0 = arguments.p0;
+  options.c0 = arguments.c0;
+  options.trace_ceiling = arguments.trace_ceiling;
+  options.recover_after = arguments.recover_after;
+  options.stability_radius = arguments.stability_radius;
+  options.backlash_hold = arguments.backlash_hold;
   options.validate();
   return options;
 }
@@ -83,18 +100,21 @@ u, y : array_like, shape (n,)
     Input and measured output.
 passes : int, default 1
     Passes of the recursive estimator over the record (the paper's step 5).
-method : {'default', 'paper'}
-    'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
-    measured-output internals, then refinement by minimising the free-run simulation error.
-forgetting : float or tuple, optional
-    Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
-    paper's 0.98 for 200 samples, then 1.
-p0 : float, default 1e6
-    P(0) = p0 I.
+method : {'output_error', 'equation_error', 'paper'}
+    The recursive stage. 'output_error' (default): recursive prediction-error method on the
+    free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
+    least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
+    recursive estimate is then refined by minimising the free-run simulation error.
+forgetting : float, tuple or 'adaptive', optional
+    Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+    adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+    for the others.
+p0 : float, optional
+    P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
 c0 : float, default 0.01
-    Initial backlash half-width (P-H-W).
+    Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
 refine_iterations : int, default 100
-    Levenberg-Marquardt iterations of the default method's refinement (0: none).
+    Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
 
 Returns
 -------
@@ -113,9 +133,9 @@ void def_identify(py::module_& m) {
   m.def(
       "identify",
       [](const Model& model, const py::object& u, const py::object& y, int passes, const std::string& method,
-         const py::object& forgetting, double p0, double c0, int refine_iterations) {
+         const py::object& forgetting, std::optional<double> p0, double c0, int refine_iterations) {
         bonl::IdentifyOptions options;
-        static_cast<bonl::EstimatorOptions&>(options) = estimator_options(method, forgetting, p0, c0);
+        static_cast<bonl::EstimatorOptions&>(options) = estimator_options({method, forgetting, p0, c0, std::nullopt});
         options.passes = passes;
         options.refine_iterations = refine_iterations;
         const Eigen::VectorXd input = to_vector(u, "u");
@@ -124,8 +144,8 @@ void def_identify(py::module_& m) {
         return bonl::identify(model, input, output, options);
       },
       py::arg("model"), py::arg("u"), py::arg("y"), py::kw_only(), py::arg("passes") = 1,
-      py::arg("method") = "default", py::arg("forgetting") = py::none(), py::arg("p0") = 1e6, py::arg("c0") = 0.01,
-      py::arg("refine_iterations") = 100, kIdentifyDoc);
+      py::arg("method") = "output_error", py::arg("forgetting") = py::none(), py::arg("p0") = py::none(),
+      py::arg("c0") = 0.01, py::arg("refine_iterations") = 100, kIdentifyDoc);
 }
 
 /// One Python class over the four estimators.
@@ -174,6 +194,9 @@ class AnyEstimator {
   void recover() {
     std::visit([](auto& estimator) { estimator.recover(); }, m_estimator);
   }
+  double memory() const {
+    return std::visit([](const auto& estimator) { return estimator.memory(); }, m_estimator);
+  }
   void start_recording(Eigen::Index capacity) {
     std::visit([&](auto& estimator) { estimator.start_recording(capacity); }, m_estimator);
   }
@@ -202,12 +225,15 @@ class AnyEstimator {
 
 template <class Model>
 void def_estimator_init(py::class_<AnyEstimator>& cls) {
-  cls.def(py::init([](const Model& model, const std::string& method, const py::object& forgetting, double p0,
-                      double c0, double trace_ceiling, Eigen::Index recover_after) {
-            return AnyEstimator(model, estimator_options(method, forgetting, p0, c0, trace_ceiling, recover_after));
+  cls.def(py::init([](const Model& model, const std::string& method, const py::object& forgetting,
+                      std::optional<double> p0, double c0, std::optional<double> trace_ceiling,
+                      Eigen::Index recover_after, double stability_radius, Eigen::Index backlash_hold) {
+            return AnyEstimator(model, estimator_options({method, forgetting, p0, c0, trace_ceiling, recover_after,
+                                                          stability_radius, backlash_hold}));
           }),
-          py::arg("model"), py::kw_only(), py::arg("method") = "default", py::arg("forgetting") = py::none(),
-          py::arg("p0") = 1e6, py::arg("c0") = 0.01, py::arg("trace_ceiling") = 1.0, py::arg("recover_after") = 0);
+          py::arg("model"), py::kw_only(), py::arg("method") = "output_error", py::arg("forgetting") = py::none(),
+          py::arg("p0") = py::none(), py::arg("c0") = 0.01, py::arg("trace_ceiling") = py::none(),
+          py::arg("recover_after") = 0, py::arg("stability_radius") = 0.999, py::arg("backlash_hold") = 200);
 }
 
 }  // namespace
@@ -235,13 +261,16 @@ void bind_estimation(py::module_& m) {
                     "int: automatic covariance resets (recover_after)")
       .def_readonly("internal_restarts", &bonl::EstimatorHealth::internal_restarts,
                     "int: internal variables restarted because they became non-finite")
+      .def_readonly("projections", &bonl::EstimatorHealth::projections,
+                    "int: output_error updates shortened to keep the linear block stable")
       .def("__repr__", [](const bonl::EstimatorHealth& h) {
         return "EstimatorHealth(diverged=" + std::string(h.diverged ? "True" : "False") +
                ", failures=" + std::to_string(h.failures) +
                ", consecutive_failures=" + std::to_string(h.consecutive_failures) +
                ", forgetting_limited=" + std::to_string(h.forgetting_limited) +
                ", recoveries=" + std::to_string(h.recoveries) +
-               ", internal_restarts=" + std::to_string(h.internal_restarts) + ")";
+               ", internal_restarts=" + std::to_string(h.internal_restarts) +
+               ", projections=" + std::to_string(h.projections) + ")";
       });
 
   def_identify<bonl::ARXd>(m);
@@ -249,24 +278,32 @@ void bind_estimation(py::module_& m) {
   def_identify<bonl::HammersteinWienerd>(m);
   def_identify<bonl::PseudoHammersteinWienerd>(m);
 
-  py::class_<AnyEstimator> estimator(m, "Estimator", R"doc(Online recursive estimator (the paper's MRLSA) for one model.
+  py::class_<AnyEstimator> estimator(m, "Estimator", R"doc(Online recursive estimator for one model.
 
 Parameters
 ----------
 model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
-    Gives the structure; the estimate starts from the paper's initial values (zero, c = c0).
-method : {'default', 'paper'}
-forgetting : float or tuple, optional
-    As for identify; default the paper's schedule.
-p0 : float, default 1e6
+    Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
+    c = 0 for output_error).
+method : {'output_error', 'equation_error', 'paper'}
+    As for identify; default 'output_error' (docs/algorithm.md).
+forgetting : float, tuple or 'adaptive', optional
+    As for identify; default the method's ('adaptive' for output_error, the paper's schedule for
+    the others).
+p0 : float, optional
+    P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
 c0 : float, default 0.01
-trace_ceiling : float, default 1.0
+trace_ceiling : float, optional
     trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
     would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
-    (the paper's algorithm exactly as written).
+    (the paper's algorithm exactly as written). Default: 100 for output_error, 1 for the others.
 recover_after : int, default 0
     After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
     0: never (check ``diverged`` and call ``recover()``).
+stability_radius : float, default 0.999
+    output_error: the linear block's poles are kept inside this radius (updates shortened).
+backlash_hold : int, default 200
+    output_error, P-H-W: c is held at 0 for this many samples from the start.
 )doc");
   def_estimator_init<bonl::ARXd>(estimator);
   def_estimator_init<bonl::Hammersteind>(estimator);
@@ -297,8 +334,11 @@ UpdateStatus
       .def("start_pass", &AnyEstimator::start_pass,
            "A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.")
       .def_property_readonly("last_prediction", &AnyEstimator::last_prediction,
-                             "float: the one-step prediction of the last sample's y, made before the update "
-                             "(y - last_prediction is the innovation).")
+                             "float: the prediction of the last sample's y, made before the update "
+                             "(y - last_prediction is the innovation); for output_error the simulated output.")
+      .def_property_readonly("memory", &AnyEstimator::memory,
+                             "float: the adaptive memory's current length 1 / (1 - lambda) in samples (NaN for a "
+                             "step schedule).")
       .def_property_readonly("health", &AnyEstimator::health,
                              "EstimatorHealth: what the numerical safeguards did since reset().")
       .def("recover", &AnyEstimator::recover,

@@ -17,7 +17,7 @@ read before the structure is fixed):
    on the whole estimation part, and that model is judged on the validation data.
 
 Estimator settings (fixed, not searched): ARX by least squares (forgetting 1, P(0) = 1e6 I); the
-block models by bonl's default method with the paper's settings (forgetting 0.98 for 200 samples
+block models by the equation-error method with the paper's settings (forgetting 0.98 for 200 samples
 then 1, P(0) = 1e6 I, c(0) = 0.01, one pass, 100 Levenberg-Marquardt iterations on the free-run
 simulation error).
 
@@ -111,8 +111,8 @@ def structure(name: str, orders: dict):
 def settings(name: str) -> dict:
     """The estimator settings (fixed; see the module docstring)."""
     if name == "ARX":
-        return {"forgetting": 1.0, "p0": 1e6}
-    return {"method": "default"}  # the paper's forgetting, P(0), c(0), one pass; LM refinement
+        return {"method": "equation_error", "forgetting": 1.0, "p0": 1e6}
+    return {"method": "equation_error"}  # the paper's forgetting, P(0), c(0), one pass; LM refinement
 
 
 def candidates(name: str, grid: dict, offsets: tuple) -> list:

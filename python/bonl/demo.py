@@ -1,16 +1,18 @@
 """``python -m bonl demo``: the paper's experiment on the simulated excavator dipper joint.
 
 Runs :func:`bonl.plant.experiment` (what the C++ ``bonl_demo`` runs: identification on the
-paper's multi-sine, validation by free-run simulation on a smooth random signal, both estimator
-methods), prints Table 1 (identified parameters) and Table 2 (validation MSE of the velocity) in
-the paper's layout for both methods, and with ``--out DIR`` writes
+paper's multi-sine, validation by free-run simulation on a smooth random signal, the output-error
+method (bonl's default) and the paper's), prints Table 1 (identified parameters) and Table 2
+(validation MSE of the velocity) in the paper's layout for both methods, the online estimates'
+validation MSE, and with ``--out DIR`` writes
 
 - ``DIR/fig11_velocity.png``: measured and predicted validation velocity of the four models (the
   paper's Fig. 11), over the whole record and zoomed;
 - ``DIR/fig12_residuals.png``: the residuals, measured - predicted, one panel per model (Fig. 12);
 - ``DIR/tables.txt``: the printed tables;
 - ``DIR/results.json``: ``{"mse": {"ARX", "Hammerstein", "HW", "PHW"}, "params": {...},
-  "method": ..., "methods": {"default": {...}, "paper": {...}}, ...}`` as ``bonl_demo --json``.
+  "method": ..., "methods": {"output_error": {...}, "paper": {...}}, "online": {...}, ...}`` as
+  ``bonl_demo --json``.
 """
 
 from __future__ import annotations
@@ -40,7 +42,7 @@ def format_tables(method: str, params: Dict[str, Dict[str, Any]], mse: Dict[str,
     Parameters
     ----------
     method : str
-        ``"default"`` or ``"paper"``, for the title.
+        ``"output_error"`` or ``"paper"``, for the title.
     params : dict
         ``{"ARX": {"b", "a"}, "Hammerstein": {"f", "p", "b", "a"}, "HW": {..., "q"},
         "PHW": {..., "c"}}``, as :func:`bonl.plant.experiment` returns them under ``params``.
@@ -129,13 +131,46 @@ def format_report(result: Dict[str, Any]) -> str:
     out.append("  plant simulation and processing: %.2f s" % result["seconds"]["plant"])
     text = "\n".join(out) + "\n"
     # The paper's method first, then bonl's, as bonl_demo prints them.
-    for method in ("paper", "default"):
+    for method in ("paper", "output_error"):
         entry = result["methods"][method]
         text += format_tables(method, entry["params"], entry["mse"])
+    text += format_online(result["online"], result["methods"]["output_error"]["mse"])
     text += "\nidentification and validation: %.2f s\n" % result["seconds"]["identification"]
     if "robustness" in result:
         text += format_robustness(result["robustness"])
     return text
+
+
+def format_online(online: Dict[str, Dict[str, float]], identified: Dict[str, float]) -> str:
+    """The online table: each method's recursive estimate alone, beside ``identify()``'s, as ``bonl_demo`` prints it.
+
+    Parameters
+    ----------
+    online : dict
+        ``{"output_error": mse, "paper": mse}``, validation MSE by model of the online estimates.
+    identified : dict
+        Validation MSE by model of ``identify()`` (the output-error estimate refined).
+
+    Returns
+    -------
+    str
+    """
+    lines = [
+        "",
+        "Online: the recursive estimator alone after one pass (no refinement), validation MSE",
+        "%-13s %12s %12s %12s %12s" % ("method", "P-H-W", "H-W", "Hammerstein", "ARX"),
+    ]
+    for method in ("output_error", "paper"):
+        e = online[method]
+        lines.append(
+            "%-13s %12.4e %12.4e %12.4e %12.4e   (rad/s)^2" % (method, e["PHW"], e["HW"], e["Hammerstein"], e["ARX"])
+        )
+    e = identified
+    lines.append(
+        "%-13s %12.4e %12.4e %12.4e %12.4e   (identify(): recursive estimate refined)"
+        % ("identify()", e["PHW"], e["HW"], e["Hammerstein"], e["ARX"])
+    )
+    return "\n".join(lines) + "\n"
 
 
 def format_robustness(rows: Sequence[Dict[str, Dict[str, float]]]) -> str:
@@ -144,7 +179,7 @@ def format_robustness(rows: Sequence[Dict[str, Dict[str, float]]]) -> str:
     Parameters
     ----------
     rows : sequence of dict
-        One ``{"default": mse, "paper": mse}`` per trajectory.
+        One ``{"output_error": mse, "paper": mse}`` per trajectory.
 
     Returns
     -------
@@ -153,11 +188,11 @@ def format_robustness(rows: Sequence[Dict[str, Dict[str, float]]]) -> str:
     lines = [
         "",
         "Robustness: validation MSE on %d further trajectories (smooth random x4, other multi-sines x4)" % len(rows),
-        "%-4s %-9s %11s %11s %11s %11s" % ("", "method", "P-H-W", "H-W", "Hammerstein", "ARX"),
+        "%-4s %-12s %11s %11s %11s %11s" % ("", "method", "P-H-W", "H-W", "Hammerstein", "ARX"),
     ]
-    counts = {"default": [0, 0, 0], "paper": [0, 0, 0]}
+    counts = {"output_error": [0, 0, 0], "paper": [0, 0, 0]}
     for i, row in enumerate(rows):
-        for method in ("default", "paper"):
+        for method in ("output_error", "paper"):
             e = row[method]
             phw_best, h_over_arx = e["PHW"] < e["Hammerstein"], e["Hammerstein"] < e["ARX"]
             c = counts[method]
@@ -165,10 +200,10 @@ def format_robustness(rows: Sequence[Dict[str, Dict[str, float]]]) -> str:
             c[1] += h_over_arx
             c[2] += phw_best and h_over_arx
             lines.append(
-                "%-4d %-9s %11.3e %11.3e %11.3e %11.3e" % (i + 1, method, e["PHW"], e["HW"], e["Hammerstein"], e["ARX"])
+                "%-4d %-12s %11.3e %11.3e %11.3e %11.3e" % (i + 1, method, e["PHW"], e["HW"], e["Hammerstein"], e["ARX"])
             )
     n = len(rows)
-    for method in ("default", "paper"):
+    for method in ("output_error", "paper"):
         c = counts[method]
         lines.append(
             "%s method: P-H-W < Hammerstein on %d/%d, Hammerstein < ARX on %d/%d, both on %d/%d"
@@ -208,6 +243,7 @@ def results_json(result: Dict[str, Any]) -> Dict[str, Any]:
         "params": result["params"],
         "method": result["method"],
         "methods": {m: {"mse": dict(e["mse"]), "params": e["params"]} for m, e in result["methods"].items()},
+        "online": {m: dict(e) for m, e in result["online"].items()},
         "runs": {name: dict(result[name]["run"]) for name in ("identification", "validation")},
         "plant_parameters": result["parameters"].to_dict(),
         "seconds": dict(result["seconds"]),
@@ -305,8 +341,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--method",
-        choices=("default", "paper"),
-        default="default",
+        choices=("output_error", "paper"),
+        default="output_error",
         help="estimator method whose models the figures and the top level of results.json show "
         "(default: %(default)s); the tables show both",
     )

@@ -216,9 +216,9 @@ BAD_SETTINGS = [
     (dict(passes=-1), "passes must be >= 1, got -1"),
     (dict(refine_iterations=-1), "refine_iterations must be >= 0"),
     (dict(forgetting=(0.98, -1, 1.0)), "initial_samples must be >= 0"),
-    (dict(forgetting=(0.9, 1)), "forgetting must be a number or a tuple (initial, initial_samples, final)"),
-    (dict(forgetting=[0.9, 1, 1.0, 1.0]), "forgetting must be a number or a tuple"),
-    (dict(forgetting="0.9"), "forgetting must be a number or a tuple"),
+    (dict(forgetting=(0.9, 1)), "forgetting must be None, a number, a tuple (initial, initial_samples, final) or 'adaptive'"),
+    (dict(forgetting=[0.9, 1, 1.0, 1.0]), "forgetting must be None, a number, a tuple"),
+    (dict(forgetting="0.9"), "forgetting must be None, a number, a tuple (initial, initial_samples, final) or 'adaptive', got '0.9'"),
     # Before: RuntimeError "Unable to cast ...", and True silently taken as 1.0.
     (dict(forgetting=("a", 1, 1.0)), "initial must be a real number, got str"),
     (dict(forgetting=(0.9, 1.5, 1.0)), "initial_samples must be an integer, got float"),
@@ -226,8 +226,9 @@ BAD_SETTINGS = [
     (dict(forgetting=(0.9, 2**70, 1.0)), "initial_samples is out of range"),
     (dict(forgetting=(0.9, 10, 1 + 2j)), "final must be a real number, got complex"),
     (dict(forgetting=True), "forgetting must be a real number, got bool"),
-    (dict(method="magic"), "method must be 'default' or 'paper', got 'magic'"),
-    (dict(method="Paper"), "method must be 'default' or 'paper', got 'Paper'"),
+    (dict(method="magic"), "method must be 'output_error', 'equation_error' or 'paper', got 'magic'"),
+    (dict(method="Paper"), "method must be 'output_error', 'equation_error' or 'paper', got 'Paper'"),
+    (dict(method="default"), "method must be 'output_error', 'equation_error' or 'paper', got 'default'"),
 ]
 for _lambda in (0.0, -0.5, 1.01, NAN, INF):
     BAD_SETTINGS += [
@@ -252,6 +253,20 @@ def test_e4_to_e10_e13_identify_and_estimator_settings(settings, message):
         raises(ValueError, message, bonl.Estimator, model, **estimator_settings)
 
 
+ESTIMATOR_ONLY_SETTINGS = [
+    (dict(stability_radius=0.0), "stability_radius must be in (0, 1], got 0"),
+    (dict(stability_radius=1.5), "stability_radius must be in (0, 1], got 1.5"),
+    (dict(stability_radius=NAN), "stability_radius must be in (0, 1], got nan"),
+    (dict(backlash_hold=-1), "backlash_hold must be >= 0"),
+    (dict(trace_ceiling=0.5), "trace_ceiling must be >= 1"),
+]
+
+
+@pytest.mark.parametrize("settings, message", ESTIMATOR_ONLY_SETTINGS, ids=[repr(s) for s, _ in ESTIMATOR_ONLY_SETTINGS])
+def test_estimator_only_settings(settings, message):
+    raises(ValueError, message, bonl.Estimator, models()["PseudoHammersteinWiener"], **settings)
+
+
 @pytest.mark.parametrize("settings", [dict(passes=2**40), dict(p0="1e6"), dict(c0=None), dict(method=None)], ids=repr)
 def test_e16_settings_of_the_wrong_type_are_type_errors(settings):
     model = models()["Hammerstein"]
@@ -266,7 +281,7 @@ def test_e16_a_model_argument_that_is_not_a_model(model):
 
 
 @pytest.mark.parametrize("name", MODEL_NAMES)
-@pytest.mark.parametrize("method", ["default", "paper"])
+@pytest.mark.parametrize("method", ["output_error", "equation_error", "paper"])
 def test_e14_a_non_finite_sample_is_refused_without_a_trace(name, method):
     model = models()[name]
     u = signal(300, 7)
@@ -596,7 +611,7 @@ def test_p16_p18_p19_p20_processing_states_and_experiment():
     raises(ValueError, "state must be finite, got nan at index 1", plant.derivative, None, [0.75, NAN, 5e6, 5e6, 0.0], 0.0)
     raises(ValueError, "pilot must be finite, got inf", plant.derivative, None, [0.75, 0.0, 5e6, 5e6, 0.0], INF)
     raises(ValueError, "load must be finite, got nan", plant.derivative, None, [0.75, 0.0, 5e6, 5e6, 0.0], 0.0, NAN)
-    raises(ValueError, "method must be 'default' or 'paper', got 'ours'", plant.experiment, method="ours")
+    raises(ValueError, "method must be 'output_error' or 'paper', got 'ours'", plant.experiment, method="ours")
     raises(TypeError, "parameters must be a bonl.plant.Parameters or None, got str", plant.experiment, "20t")
     raises(ValueError, "mass must be > 0 and finite, got -1", plant.experiment, plant.Parameters(mass=-1.0))
     raises(ValueError, "t must be finite, got nan at index 1", STEP.sample, [0.0, NAN])

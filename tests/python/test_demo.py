@@ -37,7 +37,7 @@ def test_demo_writes_figures_tables_and_results(tmp_path):
     out = tmp_path / "demo"
     result = run_bonl("demo", "--out", str(out), "--method", "paper")
     assert result.returncode == 0, result.stderr
-    for table in ("Table 1. Identification results (method: paper)", "Table 1. Identification results (method: default)"):
+    for table in ("Table 1. Identification results (method: paper)", "Table 1. Identification results (method: output_error)"):
         assert table in result.stdout
     assert result.stdout.count("Table 2. MSE of the identified models") == 2
 
@@ -50,7 +50,7 @@ def test_demo_writes_figures_tables_and_results(tmp_path):
     assert results["method"] == "paper"
     assert set(results["mse"]) == MODEL_KEYS
     assert results["mse"] == results["methods"]["paper"]["mse"]
-    for method in ("default", "paper"):
+    for method in ("output_error", "paper"):
         mse = results["methods"][method]["mse"]
         assert set(mse) == MODEL_KEYS
         assert all(isinstance(v, float) and math.isfinite(v) and v > 0 for v in mse.values())

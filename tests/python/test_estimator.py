@@ -16,7 +16,8 @@ def test_online_updates_track_whole_record_recursion():
     assert estimator.samples == 3000
     model = estimator.model
     assert type(model) is bonl.Hammerstein
-    # After one pass the Hammerstein recursion is within 1% in simulation (README: 2.8e-3).
+    # After one pass the output-error recursion is within 1% in simulation (noise-free: much closer,
+    # tests/cpp/output_error.test.cpp).
     u_val = random_levels(3000, 5, 1.0, 2)
     assert bonl.metrics.nrmse(truth.simulate(u_val), model.simulate(u_val)) < 0.01
     p = estimator.covariance
@@ -46,11 +47,16 @@ def test_gap_samples_carry_no_information_and_reset_restarts():
     truth = known_models()["PseudoHammersteinWiener"]
     u = random_levels(2000, 5, 1.0, 4)
     y = truth.simulate(u)
-    estimator = bonl.Estimator(truth, method="default")
+    estimator = bonl.Estimator(truth, method="equation_error")
     statuses = [estimator.update(float(a), float(b)) for a, b in zip(u, y)]
     assert bonl.UpdateStatus.no_information in statuses
     estimator.reset()
     assert estimator.samples == 0
     np.testing.assert_array_equal(estimator.theta, np.r_[np.zeros(13), 0.01])
+    # The output-error method updates on gap samples too (the held sensitivity), and starts at c = 0.
+    output_error = bonl.Estimator(truth)
+    assert all(output_error.update(float(a), float(b)) == bonl.UpdateStatus.updated for a, b in zip(u, y))
+    output_error.reset()
+    np.testing.assert_array_equal(output_error.theta, np.zeros(14))
     estimator.reset_to(truth.theta)
     np.testing.assert_array_equal(estimator.theta, truth.theta)

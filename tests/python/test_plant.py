@@ -455,7 +455,7 @@ def test_experiment_returns_both_methods_models_and_records(experiment):
     assert e["method"] == "paper"
     assert set(e["mse"]) == MODEL_KEYS and set(e["models"]) == MODEL_KEYS
     assert e["mse"] == e["methods"]["paper"]["mse"]
-    for method in ("default", "paper"):
+    for method in ("output_error", "paper"):
         entry = e["methods"][method]
         assert set(entry["mse"]) == MODEL_KEYS
         assert all(0 < v < 1e-2 for v in entry["mse"].values())
@@ -467,14 +467,14 @@ def test_experiment_returns_both_methods_models_and_records(experiment):
         for key in ("time", "input", "velocity", "true_velocity", "angle"):
             assert record[key].shape == (n,) and record[key].dtype == np.float64
         assert not record["run"]["reached_end_stop"]
-    for method in ("default", "paper"):
+    for method in ("output_error", "paper"):
         for key in MODEL_KEYS:
             simulated = e["validation"]["simulated"][method][key]
             assert simulated.shape == (n,)
             mse = np.mean((e["validation"]["velocity"] - simulated) ** 2)
             assert mse == pytest.approx(e["methods"][method]["mse"][key], rel=1e-9)
     # The README's numbers with bonl's estimator: P-H-W beats every other model.
-    d = e["methods"]["default"]["mse"]
+    d = e["methods"]["output_error"]["mse"]
     assert d["PHW"] < min(d["HW"], d["Hammerstein"], d["ARX"])
 
 

@@ -530,42 +530,55 @@ class EstimatorHealth:
         int: internal variables restarted because they became non-finite
         """
     @property
+    def projections(self) -> int:
+        """
+        int: output_error updates shortened to keep the linear block stable
+        """
+    @property
     def recoveries(self) -> int:
         """
         int: automatic covariance resets (recover_after)
         """
 class Estimator:
     """
-    Online recursive estimator (the paper's MRLSA) for one model.
+    Online recursive estimator for one model.
     
     Parameters
     ----------
     model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
-        Gives the structure; the estimate starts from the paper's initial values (zero, c = c0).
-    method : {'default', 'paper'}
-    forgetting : float or tuple, optional
-        As for identify; default the paper's schedule.
-    p0 : float, default 1e6
+        Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
+        c = 0 for output_error).
+    method : {'output_error', 'equation_error', 'paper'}
+        As for identify; default 'output_error' (docs/algorithm.md).
+    forgetting : float, tuple or 'adaptive', optional
+        As for identify; default the method's ('adaptive' for output_error, the paper's schedule for
+        the others).
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     c0 : float, default 0.01
-    trace_ceiling : float, default 1.0
+    trace_ceiling : float, optional
         trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
         would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
-        (the paper's algorithm exactly as written).
+        (the paper's algorithm exactly as written). Default: 100 for output_error, 1 for the others.
     recover_after : int, default 0
         After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
         0: never (check ``diverged`` and call ``recover()``).
+    stability_radius : float, default 0.999
+        output_error: the linear block's poles are kept inside this radius (updates shortened).
+    backlash_hold : int, default 200
+        output_error, P-H-W: c is held at 0 for this many samples from the start.
     """
     @typing.overload
-    def __init__(self, model: ARX, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex = 1.0, recover_after: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
+    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Hammerstein, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex = 1.0, recover_after: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
+    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: HammersteinWiener, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex = 1.0, recover_after: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
+    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex = 1.0, recover_after: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
+    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     def recover(self) -> None:
         """
@@ -634,7 +647,12 @@ class Estimator:
     @property
     def last_prediction(self) -> float:
         """
-        float: the one-step prediction of the last sample's y, made before the update (y - last_prediction is the innovation).
+        float: the prediction of the last sample's y, made before the update (y - last_prediction is the innovation); for output_error the simulated output.
+        """
+    @property
+    def memory(self) -> float:
+        """
+        float: the adaptive memory's current length 1 / (1 - lambda) in samples (NaN for a step schedule).
         """
     @property
     def model(self) -> typing.Any:
@@ -657,7 +675,7 @@ class Estimator:
         numpy.ndarray: current estimate (eq. 19 order).
         """
 @typing.overload
-def identify(model: ARX, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> ARX:
+def identify(model: ARX, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> ARX:
     """
     Identify a model's parameters from an input/output record.
     
@@ -669,18 +687,21 @@ def identify(model: ARX, u: typing.Any, y: typing.Any, *, passes: typing.Support
         Input and measured output.
     passes : int, default 1
         Passes of the recursive estimator over the record (the paper's step 5).
-    method : {'default', 'paper'}
-        'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
-        measured-output internals, then refinement by minimising the free-run simulation error.
-    forgetting : float or tuple, optional
-        Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
-        paper's 0.98 for 200 samples, then 1.
-    p0 : float, default 1e6
-        P(0) = p0 I.
+    method : {'output_error', 'equation_error', 'paper'}
+        The recursive stage. 'output_error' (default): recursive prediction-error method on the
+        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
+        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
+        recursive estimate is then refined by minimising the free-run simulation error.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     c0 : float, default 0.01
-        Initial backlash half-width (P-H-W).
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the default method's refinement (0: none).
+        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
     
     Returns
     -------
@@ -695,7 +716,7 @@ def identify(model: ARX, u: typing.Any, y: typing.Any, *, passes: typing.Support
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Hammerstein, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Hammerstein:
+def identify(model: Hammerstein, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Hammerstein:
     """
     Identify a model's parameters from an input/output record.
     
@@ -707,18 +728,21 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any, *, passes: typing
         Input and measured output.
     passes : int, default 1
         Passes of the recursive estimator over the record (the paper's step 5).
-    method : {'default', 'paper'}
-        'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
-        measured-output internals, then refinement by minimising the free-run simulation error.
-    forgetting : float or tuple, optional
-        Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
-        paper's 0.98 for 200 samples, then 1.
-    p0 : float, default 1e6
-        P(0) = p0 I.
+    method : {'output_error', 'equation_error', 'paper'}
+        The recursive stage. 'output_error' (default): recursive prediction-error method on the
+        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
+        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
+        recursive estimate is then refined by minimising the free-run simulation error.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     c0 : float, default 0.01
-        Initial backlash half-width (P-H-W).
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the default method's refinement (0: none).
+        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
     
     Returns
     -------
@@ -733,7 +757,7 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any, *, passes: typing
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> HammersteinWiener:
+def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> HammersteinWiener:
     """
     Identify a model's parameters from an input/output record.
     
@@ -745,18 +769,21 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any, *, passes: 
         Input and measured output.
     passes : int, default 1
         Passes of the recursive estimator over the record (the paper's step 5).
-    method : {'default', 'paper'}
-        'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
-        measured-output internals, then refinement by minimising the free-run simulation error.
-    forgetting : float or tuple, optional
-        Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
-        paper's 0.98 for 200 samples, then 1.
-    p0 : float, default 1e6
-        P(0) = p0 I.
+    method : {'output_error', 'equation_error', 'paper'}
+        The recursive stage. 'output_error' (default): recursive prediction-error method on the
+        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
+        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
+        recursive estimate is then refined by minimising the free-run simulation error.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     c0 : float, default 0.01
-        Initial backlash half-width (P-H-W).
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the default method's refinement (0: none).
+        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
     
     Returns
     -------
@@ -771,7 +798,7 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any, *, passes: 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'default', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> PseudoHammersteinWiener:
+def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> PseudoHammersteinWiener:
     """
     Identify a model's parameters from an input/output record.
     
@@ -783,18 +810,21 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any, *, pa
         Input and measured output.
     passes : int, default 1
         Passes of the recursive estimator over the record (the paper's step 5).
-    method : {'default', 'paper'}
-        'paper': eqs. (21)-(31) as written. 'default': bonl's estimator, the recursive stage with
-        measured-output internals, then refinement by minimising the free-run simulation error.
-    forgetting : float or tuple, optional
-        Forgetting factor: a constant in (0, 1], or (initial, initial_samples, final). Default: the
-        paper's 0.98 for 200 samples, then 1.
-    p0 : float, default 1e6
-        P(0) = p0 I.
+    method : {'output_error', 'equation_error', 'paper'}
+        The recursive stage. 'output_error' (default): recursive prediction-error method on the
+        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
+        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
+        recursive estimate is then refined by minimising the free-run simulation error.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     c0 : float, default 0.01
-        Initial backlash half-width (P-H-W).
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the default method's refinement (0: none).
+        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
     
     Returns
     -------

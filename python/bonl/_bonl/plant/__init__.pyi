@@ -609,21 +609,22 @@ def differentiate(x: typing.Any, ts: typing.SupportsFloat | typing.SupportsIndex
     ValueError
         When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.
     """
-def experiment(parameters: typing.Any = None, *, method: str = 'default', robustness: bool = False) -> dict:
+def experiment(parameters: typing.Any = None, *, method: str = 'output_error', robustness: bool = False) -> dict:
     """
     The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/plant.md).
     
     Identification record from the paper's multi-sine, validation record from a smooth random
     signal (each 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated); ARX,
     Hammerstein, H-W and P-H-W identified with the paper's orders (na = 3, nb = 2, nk = 8,
-    r = r1 = 3) by both estimator methods and validated by free-run simulation. The GIL is
+    r = r1 = 3) by the output-error and the paper's methods and validated by free-run simulation;
+    also the online estimates alone (recursive estimator, one pass, no refinement). The GIL is
     released during the computation.
     
     Parameters
     ----------
     parameters : Parameters, optional
         The plant; None: ``default_parameters()``.
-    method : {'default', 'paper'}, optional
+    method : {'output_error', 'paper'}, optional
         Whose results go to the top-level ``mse``, ``models``, ``params``.
     robustness : bool, optional
         Also validate on the eight further trajectories of ``bonl_demo``'s robustness check.
@@ -634,13 +635,14 @@ def experiment(parameters: typing.Any = None, *, method: str = 'default', robust
         ``mse`` {'ARX', 'Hammerstein', 'HW', 'PHW'} validation MSE [(rad/s)^2] of ``method``;
         ``models`` the same keys, the identified models (bonl.ARX, bonl.Hammerstein, ...);
         ``params`` their parameters by name (lists); ``method``;
-        ``methods`` {'default', 'paper'} -> {``mse``, ``models``, ``params``, ``simulated``};
+        ``methods`` {'output_error', 'paper'} -> {``mse``, ``models``, ``params``, ``simulated``};
+        ``online`` {'output_error', 'paper'} -> the online estimates' validation MSE by model;
         ``identification`` and ``validation`` records: ``time`` [s], ``input`` [V], ``velocity``
         [rad/s] (what the models are fitted on), ``true_velocity`` [rad/s], ``angle`` [rad], ``run``
         (min/max position, end stop, CVODE steps); the validation record also has ``simulated``
-        {'default', 'paper'} -> {'ARX': array, ...}, the models' free-run velocities;
+        {'output_error', 'paper'} -> {'ARX': array, ...}, the models' free-run velocities;
         ``parameters``; ``seconds`` (wall time of each stage); with ``robustness``, ``robustness``:
-        one {'default': mse, 'paper': mse} per trajectory.
+        one {'output_error': mse, 'paper': mse} per trajectory.
     
     Raises
     ------

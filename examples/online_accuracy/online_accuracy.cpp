@@ -1,0 +1,399 @@
+// bonl_online_accuracy: how close the online estimate comes to offline identification.
+//
+// For each known system of tests/data/online_systems.json, one pass of the recursive estimator
+// (Estimator::update, default settings unless stated) and bonl::identify (offline: the recursive
+// estimate refined by Levenberg-Marquardt on the simulation error), each judged by free-run
+// simulation on a fresh input against the noise-free output (NRMSE = ||y - y_sim|| / ||y - mean y||):
+// - noise-free, 4000 samples, random levels held 5 samples and the paper's multi-sine: NRMSE of the
+//   online output-error, equation-error and paper methods and of identify(); P-H-W: |c - c_true| / c_true;
+// - white output noise of 2% and 10% of std(y), and AR(1) noise (pole 0.9) of 10%, random levels,
+//   10 seeds: the same four NRMSEs per seed;
+// - tracking: constant forgetting 0.995, noise-free, 8000 samples, the input gain +30% (and c doubled)
+//   at sample 4000: samples after the change until the online model's NRMSE against the new system
+//   is below 1% (checked every 50 samples).
+//
+//   bonl_online_accuracy [--systems FILE] [--json FILE] [--markdown FILE] [--quick] [--check FILE]
+//     --quick       noise-free and tracking figures, and the noisy figures of seed 1 only
+//     --check FILE  compare what was computed with a results file written by --json (relative 2%,
+//                   values below 1e-9 count as equal); exit status 1 when one differs
+//
+// The committed results are docs/results/online_accuracy.json and .md (scripts/online_accuracy.sh);
+// ctest runs --quick --check against them.
+
+#include <bonl/bonl.hpp>
+#include <bonl/io.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <variant>
+#include <vector>
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Eigen::VectorXd;
+
+constexpr Eigen::Index kSamples = 4000;
+constexpr int kSeeds = 10;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+struct Noise {
+  const char* key;
+  const char* label;
+  double level;  // standard deviation as a fraction of std(y)
+  double pole;   // AR(1) pole; 0: white
+};
+constexpr Noise kNoises[] = {{"white_2", "2% white", 0.02, 0.0},
+                             {"white_10", "10% white", 0.10, 0.0},
+                             {"ar1_10", "10% AR(1), pole 0.9", 0.10, 0.9}};
+constexpr bonl::Method kMethods[] = {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper};
+
+double standard_deviation(const VectorXd& y) { return std::sqrt((y.array() - y.mean()).square().mean()); }
+
+/// NRMSE of `model` simulating `u` against `y`; infinity when the simulation diverges.
+template <class Model>
+double nrmse(const Model& model, const VectorXd& u, const VectorXd& y) {
+  VectorXd simulated;
+  if (!model.try_simulate(u, simulated)) return kInfinity;
+  const double value = bonl::metrics::nrmse(y, simulated);
+  return std::isfinite(value) ? value : kInfinity;
+}
+
+template <class Model>
+Model online(const Model& structure, const VectorXd& u, const VectorXd& y, bonl::EstimatorOptions options) {
+  bonl::Estimator<Model> estimator(structure, options);
+  for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
+  return estimator.model();
+}
+
+/// Output noise of standard deviation `level * std(y)`: white, or AR(1) with pole `pole`.
+VectorXd output_noise(const VectorXd& y, const Noise& noise, std::uint64_t seed) {
+  VectorXd e = bonl::signals::white_noise(y.size(), 1.0, seed);
+  for (Eigen::Index k = 1; k < e.size(); ++k) e[k] += noise.pole * e[k - 1];
+  return e * (noise.level * standard_deviation(y) / standard_deviation(e));
+}
+
+/// The relative change the tracking test makes: input gain +30% (f and p, or ARX's b) and c doubled.
+template <class Model>
+Model changed(const Model& model) {
+  Model out = model;
+  typename Model::Params theta = model.theta();
+  if constexpr (Model::kHasInternalVariables) {
+    theta.head(2 * (model.r() + 1)) *= 1.3;
+  } else {
+    theta.head(model.nb() + 1) *= 1.3;
+  }
+  if constexpr (std::is_same_v<Model, bonl::PseudoHammersteinWienerd>) theta[theta.size() - 1] *= 2.0;
+  out.set_theta(theta);
+  return out;
+}
+
+/// The plant of the tracking test: `before` up to `change`, then `after`, one free run (the
+/// output-error terms with fixed parameters are the model's simulation, sample by sample).
+template <class Model>
+VectorXd switched_response(const Model& before, const Model& after, const VectorXd& u, Eigen::Index change) {
+  typename Model::OutputErrorTerms simulation(before);
+  typename Model::Params psi = Model::Params::Zero(before.num_params());
+  VectorXd y(u.size());
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    y[k] = simulation.predict(k < change ? before.theta() : after.theta(), u[k], psi);
+    simulation.commit(psi, y[k]);
+  }
+  return y;
+}
+
+Json number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+
+struct Inputs {
+  VectorXd u, u_validation;
+};
+Inputs random_levels(std::uint64_t seed, std::uint64_t validation_seed) {
+  return {bonl::signals::random_levels(kSamples, 5, 1.0, seed),
+          bonl::signals::random_levels(kSamples, 5, 1.0, validation_seed)};
+}
+Inputs multisine() {
+  const VectorXd phases = bonl::signals::random_levels(5, 1, 3.14159, 303);
+  return {bonl::signals::paper_multisine(kSamples, 0.01, 0.4),
+          bonl::signals::multisine(kSamples, 0.01, bonl::signals::paper_tones(), 0.4, phases)};
+}
+
+/// The four NRMSEs of one record (online by each method, identify()) and, for P-H-W, the online
+/// output-error estimate's relative c error.
+template <class Model>
+Json measure(const Model& truth, const Inputs& inputs, const VectorXd& y) {
+  const VectorXd y_validation = truth.simulate(inputs.u_validation);
+  Json out = Json::object();
+  for (bonl::Method method : kMethods) {
+    bonl::EstimatorOptions options;
+    options.method = method;
+    try {
+      const Model estimate = online(truth, inputs.u, y, options);
+      out[bonl::to_string(method)] = number(nrmse(estimate, inputs.u_validation, y_validation));
+      if constexpr (std::is_same_v<Model, bonl::PseudoHammersteinWienerd>) {
+        if (method == bonl::Method::OutputError) {
+          out["c_relative_error"] = number(std::abs(estimate.c() - truth.c()) / truth.c());
+        }
+      }
+    } catch (const std::exception&) {
+      out[bonl::to_string(method)] = nullptr;
+    }
+  }
+  try {
+    out["identify"] = number(nrmse(bonl::identify(truth, inputs.u, y), inputs.u_validation, y_validation));
+  } catch (const bonl::NumericalError&) {
+    out["identify"] = nullptr;
+  }
+  return out;
+}
+
+template <class Model>
+Json tracking(const Model& truth) {
+  const Eigen::Index samples = 2 * kSamples, change = kSamples;
+  const VectorXd u = bonl::signals::random_levels(samples, 5, 1.0, 404);
+  const VectorXd u_validation = bonl::signals::random_levels(kSamples, 5, 1.0, 405);
+  const Model after = changed(truth);
+  const VectorXd y = switched_response(truth, after, u, change);
+  const VectorXd y_validation = after.simulate(u_validation);
+  bonl::EstimatorOptions options;
+  options.forgetting = bonl::ForgettingSchedule::constant(0.995);
+  bonl::Estimator<Model> estimator(truth, options);
+  Json recovered = nullptr;
+  for (Eigen::Index k = 0; k < samples; ++k) {
+    estimator.update(u[k], y[k]);
+    const Eigen::Index since = k + 1 - change;
+    if (since > 0 && since % 50 == 0 && recovered.is_null() && nrmse(estimator.model(), u_validation, y_validation) < 0.01) {
+      recovered = since;
+    }
+  }
+  Json out;
+  out["samples_to_1_percent"] = recovered;
+  out["final"] = number(nrmse(estimator.model(), u_validation, y_validation));
+  return out;
+}
+
+template <class Model>
+Json evaluate(const Model& truth, bool quick) {
+  Json result;
+  {
+    const Inputs levels = random_levels(101, 202);
+    const Inputs sines = multisine();
+    result["noise_free"]["random_levels"] = measure(truth, levels, truth.simulate(levels.u));
+    result["noise_free"]["multisine"] = measure(truth, sines, truth.simulate(sines.u));
+  }
+  for (const Noise& noise : kNoises) {
+    Json seeds = Json::array();
+    for (int seed = 1; seed <= (quick ? 1 : kSeeds); ++seed) {
+      const Inputs levels = random_levels(1000 + seed, 2000 + seed);
+      const VectorXd clean = truth.simulate(levels.u);
+      seeds.push_back(measure(truth, levels, clean + output_noise(clean, noise, 3000 + seed)));
+    }
+    result["noisy"][noise.key] = seeds;
+  }
+  result["tracking"] = tracking(truth);
+  return result;
+}
+
+struct System {
+  std::string name, set;
+  bonl::io::AnyModel model;
+};
+
+std::vector<System> load_systems(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  const Json document = Json::parse(in);
+  std::vector<System> systems;
+  for (const Json& entry : document.at("systems")) {
+    systems.push_back({entry.at("name").get<std::string>(), entry.at("set").get<std::string>(),
+                       bonl::io::load_model(entry.at("model").dump())});
+  }
+  return systems;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double as_number(const Json& value) { return value.is_null() ? kInfinity : value.get<double>(); }
+
+/// Median over seeds of one estimator's NRMSE.
+double median_of(const Json& seeds, const char* key) {
+  std::vector<double> values;
+  for (const Json& seed : seeds) values.push_back(as_number(seed.at(key)));
+  return median(values);
+}
+
+std::string format(double value, const char* spec = "%.2g") {
+  if (!std::isfinite(value)) return "diverged";
+  char text[32];
+  std::snprintf(text, sizeof text, spec, value);
+  return text;
+}
+
+/// The markdown tables of docs/results/online_accuracy.md.
+std::string markdown(const Json& results) {
+  std::ostringstream out;
+  out << "# Online against offline: measured figures\n\n"
+      << "Written by `bonl_online_accuracy` (examples/online_accuracy, `bash scripts/online_accuracy.sh`) from the\n"
+      << "known systems of `tests/data/online_systems.json`; the numbers are in `online_accuracy.json` beside this\n"
+      << "file, and ctest re-runs part of them (`examples/online_accuracy_quick`). NRMSE of free-run simulation on a\n"
+      << "fresh input against the noise-free output. \"online\": one pass of `Estimator::update` with its default\n"
+      << "settings; `identify()`: offline, the recursive estimate refined by Levenberg-Marquardt.\n\n";
+  out << "## Noise-free, 4000 samples\n\n"
+      << "| system | random levels: output_error | equation_error | paper | identify() | P-H-W c error |"
+         " multi-sine: output_error | equation_error | paper | identify() | P-H-W c error |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Json& system : results.at("systems")) {
+    out << "| " << system.at("name").get<std::string>();
+    for (const char* input : {"random_levels", "multisine"}) {
+      const Json& r = system.at("noise_free").at(input);
+      for (const char* key : {"output_error", "equation_error", "paper", "identify"}) out << " | " << format(as_number(r.at(key)));
+      out << " | " << (r.contains("c_relative_error") ? format(as_number(r.at("c_relative_error"))) : "");
+    }
+    out << " |\n";
+  }
+  out << "\n## Output noise, random levels, 4000 samples, " << kSeeds << " seeds: median NRMSE\n\n"
+      << "The ratio is the online output-error median over identify()'s.\n\n"
+      << "| system | noise | online output_error | online equation_error | online paper | identify() | ratio |\n"
+      << "|---|---|---|---|---|---|---|\n";
+  for (const Json& system : results.at("systems")) {
+    for (const Noise& noise : kNoises) {
+      const Json& seeds = system.at("noisy").at(noise.key);
+      const double ours = median_of(seeds, "output_error"), offline = median_of(seeds, "identify");
+      out << "| " << system.at("name").get<std::string>() << " | " << noise.label << " | " << format(ours) << " | "
+          << format(median_of(seeds, "equation_error")) << " | " << format(median_of(seeds, "paper")) << " | "
+          << format(offline) << " | " << format(ours / offline, "%.2f") << " |\n";
+    }
+  }
+  out << "\n## Tracking: constant forgetting 0.995, input gain +30% (P-H-W: and c doubled) at sample 4000\n\n"
+      << "| system | samples until NRMSE < 1% | NRMSE at the end (4000 samples after) |\n|---|---|---|\n";
+  for (const Json& system : results.at("systems")) {
+    const Json& t = system.at("tracking");
+    out << "| " << system.at("name").get<std::string>() << " | "
+        << (t.at("samples_to_1_percent").is_null() ? std::string("not within 4000")
+                                                     : std::to_string(t.at("samples_to_1_percent").get<long>()))
+        << " | " << format(as_number(t.at("final"))) << " |\n";
+  }
+  return out.str();
+}
+
+/// Every number in `computed` against the same place in `committed`. Returns the mismatches.
+void compare(const Json& computed, const Json& committed, const std::string& where, std::vector<std::string>& out) {
+  if (computed.is_object()) {
+    for (const auto& [key, value] : computed.items()) {
+      if (!committed.is_object() || !committed.contains(key)) {
+        out.push_back(where + "/" + key + ": not in the committed results");
+      } else {
+        compare(value, committed.at(key), where + "/" + key, out);
+      }
+    }
+  } else if (computed.is_array()) {
+    for (std::size_t i = 0; i < computed.size(); ++i) {
+      if (!committed.is_array() || i >= committed.size()) {
+        out.push_back(where + "/" + std::to_string(i) + ": not in the committed results");
+      } else {
+        compare(computed[i], committed[i], where + "/" + std::to_string(i), out);
+      }
+    }
+  } else if (computed.is_number() || committed.is_number() || computed.is_null() || committed.is_null()) {
+    const double a = as_number(computed), b = as_number(committed);
+    const bool same = (a == b) || (std::abs(a) <= 1e-9 && std::abs(b) <= 1e-9) ||
+                      std::abs(a - b) <= 0.02 * std::max(std::abs(a), std::abs(b));
+    if (!same) out.push_back(where + ": computed " + format(a, "%.6g") + ", committed " + format(b, "%.6g"));
+  } else if (computed != committed) {
+    out.push_back(where + ": computed " + computed.dump() + ", committed " + committed.dump());
+  }
+}
+
+[[noreturn]] void usage(const std::string& problem) {
+  std::cerr << "bonl_online_accuracy: " << problem
+            << "\nusage: bonl_online_accuracy [--systems FILE] [--json FILE] [--markdown FILE] [--quick] [--check FILE]\n";
+  std::exit(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string systems_path = BONL_ONLINE_SYSTEMS, json_path, markdown_path, check_path;
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) usage(arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "--systems") systems_path = value();
+    else if (arg == "--json") json_path = value();
+    else if (arg == "--markdown") markdown_path = value();
+    else if (arg == "--check") check_path = value();
+    else if (arg == "--quick") quick = true;
+    else usage("unknown argument '" + arg + "'");
+  }
+  try {
+    const std::vector<System> systems = load_systems(systems_path);
+    std::vector<Json> evaluated(systems.size());
+    // The systems are independent: spread them over the cores, each result in its own slot.
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+      for (std::size_t i = next++; i < systems.size(); i = next++) {
+        evaluated[i] = std::visit([&](const auto& model) { return evaluate(model, quick); }, systems[i].model);
+        std::fprintf(stderr, "%s done\n", systems[i].name.c_str());
+      }
+    };
+    std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()));
+    for (auto& thread : threads) thread = std::thread(work);
+    for (auto& thread : threads) thread.join();
+
+    Json results;
+    results["generated_by"] = "bonl_online_accuracy";
+    results["samples"] = kSamples;
+    results["seeds"] = quick ? 1 : kSeeds;
+    results["systems"] = Json::array();
+    for (std::size_t i = 0; i < systems.size(); ++i) {
+      Json entry;
+      entry["name"] = systems[i].name;
+      entry["set"] = systems[i].set;
+      entry.update(evaluated[i]);
+      results["systems"].push_back(entry);
+    }
+    if (!json_path.empty()) {
+      std::ofstream out(json_path);
+      out << results.dump(1) << "\n";
+      if (!out) throw std::runtime_error("cannot write " + json_path);
+    }
+    if (!markdown_path.empty()) {
+      std::ofstream out(markdown_path);
+      out << markdown(results);
+      if (!out) throw std::runtime_error("cannot write " + markdown_path);
+    }
+    if (json_path.empty() && markdown_path.empty() && check_path.empty()) std::cout << markdown(results);
+    if (!check_path.empty()) {
+      std::ifstream in(check_path);
+      if (!in) throw std::runtime_error("cannot read " + check_path);
+      Json committed = Json::parse(in);
+      Json computed = results;
+      computed.erase("seeds");  // --quick computes seed 1 of each; compared position by position
+      std::vector<std::string> mismatches;
+      compare(computed, committed, "", mismatches);
+      for (const std::string& m : mismatches) std::cerr << "mismatch " << m << "\n";
+      std::cerr << "checked against " << check_path << ": " << mismatches.size() << " mismatches\n";
+      return mismatches.empty() ? 0 : 1;
+    }
+    return 0;
+  } catch (const std::exception& error) {
+    std::cerr << "bonl_online_accuracy: " << error.what() << "\n";
+    return 1;
+  }
+}

@@ -132,13 +132,19 @@ TEST_CASE("run-time sizes identify the same model as compile-time sizes", "[iden
   dynamic_truth.set_theta(truth.theta());
   const Eigen::VectorXd u = identification_input(Input::RandomLevels);
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 9);
+  // The two paths vectorise the same arithmetic in a different order. The output-error recursion
+  // keeps that round-off small (measured 4e-13 in theta after one pass; the equation-error recursion,
+  // started from P(0) = 1e6 I, amplified it to 1.2e-9).
+  bonl::IdentifyOptions recursive;
+  recursive.refine_iterations = 0;
+  CHECK(near(bonl::identify(dynamic_truth, u, y, recursive).theta(), bonl::identify(truth, u, y, recursive).theta(), 1e-10));
+  // The refinement stops when a step improves the cost by less than a relative 1e-10, which the two
+  // paths can reach one iteration apart: measured 4.9e-7 in theta and 9.5e-9 in the outputs (of a
+  // spread of about 0.5).
   const auto fixed = bonl::identify(truth, u, y);
   const auto dynamic = bonl::identify(dynamic_truth, u, y);
-  // The two paths vectorise the same arithmetic in a different order; the recursion, started from
-  // P(0) = 1e6 I, amplifies that round-off in theta (measured 1.2e-9), while the models' outputs
-  // agree to 3e-11 of an output spread of about 0.5.
-  CHECK(near(dynamic.theta(), fixed.theta(), 1e-7));
-  CHECK(near(dynamic.simulate(u), fixed.simulate(u), 1e-9));
+  CHECK(near(dynamic.theta(), fixed.theta(), 1e-5));
+  CHECK(near(dynamic.simulate(u), fixed.simulate(u), 1e-7));
 }
 
 TEST_CASE("more passes of the recursive stage still recover the noise-free system", "[identify]") {

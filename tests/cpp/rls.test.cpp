@@ -158,3 +158,30 @@ TEMPLATE_TEST_CASE("an update whose new theta would overflow is refused", "[rls]
   CHECK(rls.update(phi, 1.0, 1.0));  // and a sane update still goes through
   CHECK(rls.theta()[3] == Approx(500.0).epsilon(1e-12));  // 1e6 * 1e-3 / (1 + 1e6 * 1e-6) * error 1
 }
+
+TEST_CASE("process noise adds q I to P after each update, within the trace ceiling", "[rls]") {
+  // Oracle: the textbook update with an explicit P, then P + q I, then the forgetting.
+  const Problem problem = random_problem(200, 6, 0.1, 7);
+  const double q = 1e-3, lambda = 0.98, p0 = 10.0;
+  bonl::Rls<double> rls(6, p0);
+  rls.set_process_noise(q);
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero(6);
+  Eigen::MatrixXd p = p0 * Eigen::MatrixXd::Identity(6, 6);
+  for (Eigen::Index k = 0; k < problem.phi.rows(); ++k) {
+    const Eigen::VectorXd phi = problem.phi.row(k).transpose();
+    REQUIRE(rls.update(phi, problem.y[k], lambda));
+    const Eigen::VectorXd g = p * phi;
+    const double denominator = lambda + phi.dot(g);
+    theta += g * (problem.y[k] - phi.dot(theta)) / denominator;
+    p = ((p - g * g.transpose() / denominator) + q * Eigen::MatrixXd::Identity(6, 6)) / lambda;
+  }
+  CHECK(relative_difference(rls.theta(), theta) <= 1e-12);
+  CHECK((rls.covariance() - p).cwiseAbs().maxCoeff() <= 1e-12 * p.cwiseAbs().maxCoeff());
+
+  // Without excitation P grows by forgetting and by q until the ceiling, which then holds both.
+  const double ceiling = 2.0 * 6 * p0;
+  for (int k = 0; k < 2000; ++k) REQUIRE(rls.update(Eigen::VectorXd::Zero(6), 0.0, lambda, ceiling));
+  CHECK(rls.covariance().trace() <= ceiling * (1.0 + 1e-12));
+  CHECK(rls.forgetting_limited());
+  CHECK_THROWS_WITH(rls.set_process_noise(-1.0), Catch::Contains("process noise must be finite and >= 0"));
+}

@@ -3,6 +3,7 @@
 // build the key-term regressor and estimate the internal variables, Rls does the update.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -61,7 +62,7 @@ struct EstimatorOptions {
   }
   double resolved_p0() const { return p0 ? *p0 : (method == Method::OutputError ? 10.0 : 1e6); }
   double resolved_trace_ceiling() const {
-    return trace_ceiling ? *trace_ceiling : (method == Method::OutputError ? 100.0 : 1.0);
+    return trace_ceiling ? *trace_ceiling : (method == Method::OutputError ? 10.0 : 1.0);
   }
 
   void validate() const {
@@ -140,6 +141,7 @@ class Estimator {
         m_rls(structure.num_params(), Scalar(options.resolved_p0())),
         m_phi(Params::Zero(structure.num_params())), m_theta_internal(m_phi), m_step(m_phi), m_options(options),
         m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
+    if (options.method == Method::OutputError) m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
     reset();
   }
 
@@ -305,6 +307,7 @@ class Estimator {
     m_terms.reset();
     m_outputs.reset();
     m_memory.reset(m_forgetting);
+    m_error_scale = Scalar(0);
     m_theta_internal = m_rls.theta();
     m_since_refresh = 0;
   }
@@ -338,9 +341,19 @@ class Estimator {
     if (m_sample < m_options.backlash_hold) m_outputs.hold(m_phi);
     const Scalar error = y - prediction;
     const Scalar lambda = forgetting_factor(y, error);
+    // A Huber-type bound on the error that drives the step: beyond kOutlierBound times the running
+    // mean absolute error a sample is taken at that size. One output outlier of 20 standard
+    // deviations would otherwise throw the estimate far into the non-convex criterion, from where
+    // the simulation takes thousands of samples to come back (the soak's outliers did).
+    // The mean follows the unclipped error: an isolated outlier raises it by about half, while a
+    // genuine change of the error level (the plant changed) opens the bound within a sample or two.
+    const Scalar bound = Scalar(kOutlierBound) * m_error_scale;
+    const Scalar used = m_error_scale > Scalar(0) ? std::clamp(error, -bound, bound) : error;
+    m_error_scale = m_error_scale > Scalar(0) ? m_error_scale + (std::abs(error) - m_error_scale) / Scalar(kErrorWindow)
+                                               : std::abs(error);
     m_step = m_rls.theta();
     UpdateStatus status = UpdateStatus::Updated;
-    if (m_rls.update_with_error(m_phi, error, lambda, m_max_trace)) {
+    if (m_rls.update_with_error(m_phi, used, lambda, m_max_trace)) {
       Params& theta = m_rls.mutable_theta();
       m_outputs.constrain(theta);
       m_step = theta - m_step;  // the step taken; theta = previous + m_step from here on
@@ -411,6 +424,16 @@ class Estimator {
     return status;
   }
 
+  /// The output-error method's process noise, relative to p0 (Rls::set_process_noise): far above
+  /// the downdates' round-off (about 1e-16 of the largest entry of P, at most ceiling x p0 here),
+  /// far below what moves an estimate (over 1e8 samples it lets a never-excited direction's
+  /// variance grow by 1% of p0).
+  static constexpr double kProcessNoise = 1e-10;
+  /// The output-error method's outlier bound, in running mean absolute errors (5: about 4 standard
+  /// deviations of Gaussian noise), and that mean's time constant in samples.
+  static constexpr double kOutlierBound = 5.0;
+  static constexpr double kErrorWindow = 50.0;
+
   Model m_model;
   typename Model::KeyTerms m_terms;           // equation_error and paper
   typename Model::OutputErrorTerms m_outputs; // output_error
@@ -422,6 +445,7 @@ class Estimator {
   ForgettingSchedule m_forgetting;  // resolved from the options
   double m_p0;                      // resolved from the options
   detail::AdaptiveMemory m_memory;
+  Scalar m_error_scale = Scalar(0);  // output_error: running mean absolute prediction error (0: none yet)
   Eigen::Index m_since_refresh = 0;
   Eigen::Index m_sample = 0;
   Eigen::Index m_total_samples = 0;

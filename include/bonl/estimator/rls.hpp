@@ -100,6 +100,15 @@ class Rls {
     return dispatch<true>(phi, error, lambda, max_trace);
   }
 
+  /// Process noise: every accepted update adds q I to P (a random walk of the parameters). A small q
+  /// keeps P's smallest eigenvalue above the round-off of the rank-1 downdates, which otherwise
+  /// drives a P whose condition number passes 1 / epsilon indefinite. q >= 0 and finite; 0 (the
+  /// default) is the algorithm as written.
+  void set_process_noise(Scalar q) {
+    detail::require(std::isfinite(q) && q >= Scalar(0), "process noise must be finite and >= 0");
+    m_process_noise = q;
+  }
+
   /// True when the last accepted update had its forgetting reduced by the trace ceiling.
   bool forgetting_limited() const noexcept { return m_forgetting_limited; }
 
@@ -181,18 +190,27 @@ class Rls {
     // M_ji - gain (g_j g_i), the same number because multiplication is commutative.
     for (Eigen::Index j = 0; j < n; ++j) m_M.col(j) -= gain * (work * work[j]);
     m_forgetting_limited = false;
-    if (lambda != Scalar(1)) {
+    if (lambda != Scalar(1) || m_process_noise > Scalar(0)) {
       // The ceiling is applied to the trace after the downdate as computed, not as
       // trace(P) - gain |g|^2, which cancels when the downdate removes most of P (a tiny lambda
       // overshot the ceiling).
+      Scalar trace = m_scale * m_M.diagonal().template head<N_>(n).sum();
+      if (m_process_noise > Scalar(0)) {
+        m_M.diagonal().template head<N_>(n).array() += m_process_noise / m_scale;
+        trace += Scalar(n) * m_process_noise;
+      }
       Scalar growth = inverse_lambda;
-      const Scalar trace = m_scale * m_M.diagonal().template head<N_>(n).sum();
       if (trace * growth > max_trace) {
-        growth = std::max(Scalar(1), max_trace / trace);
+        // Never grow P beyond the ceiling by forgetting; the process noise alone may take the trace
+        // a hair above it (n q), which this shrinks back by as little (1 - n q / trace).
+        growth = max_trace / trace;
+        if (m_process_noise == Scalar(0)) growth = std::max(Scalar(1), growth);
         m_forgetting_limited = true;
       }
-      m_scale *= growth;
-      if (m_scale > Scalar(1) / std::numeric_limits<Scalar>::epsilon()) fold_scale();
+      if (growth != Scalar(1)) {
+        m_scale *= growth;
+        if (m_scale > Scalar(1) / std::numeric_limits<Scalar>::epsilon()) fold_scale();
+      }
     }
     return true;
   }
@@ -209,6 +227,7 @@ class Rls {
   Vector m_next;          // scratch for run-time sizes
   StorageVector m_scratch;  // scratch for run-time sizes
   bool m_forgetting_limited = false;
+  Scalar m_process_noise = Scalar(0);
 };
 
 }  // namespace bonl

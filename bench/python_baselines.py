@@ -123,12 +123,12 @@ def bonl_bindings(quick: bool) -> dict:
     cases = {
         # The key python_identify_5000_ms: the recursive estimator alone.
         "paper": dict(method="paper"),
-        "default_refine0": dict(method="default", refine_iterations=0),
-        "default": dict(method="default"),
+        "output_error_refine0": dict(method="output_error", refine_iterations=0),
+        "output_error": dict(method="output_error"),
     }
     for name, kwargs in cases.items():
         bonl.identify(structure, u, y, **kwargs)  # warm-up
-        repeats = (2 if quick else 5) if name == "default" else (5 if quick else 30)
+        repeats = (2 if quick else 5) if name == "output_error" else (5 if quick else 30)
         seconds = best_of(repeats, lambda: bonl.identify(structure, u, y, **kwargs))
         out[f"identify_{name}_5000_ms"] = seconds * 1e3
 

@@ -21,8 +21,11 @@ import subprocess
 import sys
 
 PHW_PARAMS = 14
+# The keys of issue 5's --json are the equation-error update (the default method then); the
+# output-error method (the default since issue 16) adds <model>_update_output_error_ns.
 MODELS = (("arx", "ARX", "arx_update_ns"), ("hammerstein", "Hammerstein", "hammerstein_update_ns"),
           ("hw", "H-W", "hw_update_ns"), ("phw", "P-H-W", "phw_update_ns"))
+METHODS = (("", "output_error"), ("/equation_error", "equation_error"), ("/paper", "paper"))
 
 
 def load_gbench(path: str) -> tuple[dict, dict]:
@@ -134,7 +137,7 @@ def main() -> int:
     for sizes in ("fixed", "dynamic"):
         for scalar in ("double", "float"):
             for key, label, json_key in MODELS:
-                for suffix, method in (("", "default"), ("/paper", "paper")):
+                for suffix, method in METHODS:
                     name = f"update/{key}/{sizes}/{scalar}{suffix}"
                     if name not in cpp:
                         continue
@@ -145,9 +148,11 @@ def main() -> int:
                     rows.append([f"{label} update, {sizes}, {scalar}, {method} method", str(n), fmt_ns(value),
                                  fmt_ratio(textbook.get(n), value), fmt_ratio(padasip.get(n), value),
                                  f"{updated:.2f}"])
-                    flat[f"{key}_update_{sizes}_{scalar}{'_paper' if method == 'paper' else ''}_ns"] = value
-                    if sizes == "fixed" and scalar == "double" and method == "default":
+                    flat[f"{key}_update_{sizes}_{scalar}_{method}_ns"] = value
+                    if sizes == "fixed" and scalar == "double" and method == "equation_error":
                         flat[json_key] = value
+                    if sizes == "fixed" and scalar == "double" and method == "output_error":
+                        flat[f"{key}_update_output_error_ns"] = value
                     if updated < 0.5:
                         notes.append(f"{name}: only {updated:.0%} of the samples ran the RLS step; its time is "
                                      "mostly that of a refused update.")
@@ -174,44 +179,46 @@ def main() -> int:
     flat["rls_core_fixed_14_ns"] = cpp_ns(f"rls/fixed/{PHW_PARAMS}")
     flat["rls_core_dynamic_14_ns"] = cpp_ns(f"rls/dynamic/{PHW_PARAMS}")
     flat["python_identify_5000_ms"] = bonl_py["identify_paper_5000_ms"]
-    flat["python_identify_recursive_default_5000_ms"] = bonl_py["identify_default_refine0_5000_ms"]
-    flat["python_identify_default_5000_ms"] = bonl_py["identify_default_5000_ms"]
+    flat["python_identify_recursive_output_error_5000_ms"] = bonl_py["identify_output_error_refine0_5000_ms"]
+    flat["python_identify_output_error_5000_ms"] = bonl_py["identify_output_error_5000_ms"]
     flat["python_estimator_update_call_ns"] = bonl_py["estimator_update_call_ns"]
     flat["python_estimator_update_call_numpy_scalars_ns"] = bonl_py["estimator_update_call_numpy_scalars_ns"]
     phw = flat.get("phw_update_ns")
+    phw_output_error = flat.get("phw_update_output_error_ns")
     tb, pa = flat["naive_rls_ns"], flat["padasip_rls_ns"]
 
     def row(label: str, value: float | None, vs: bool = True) -> list[str]:
         return [label, fmt_ns(value), fmt_ratio(tb, value) if vs else "-", fmt_ratio(pa, value) if vs else "-"]
 
     rows = [
-        row("P-H-W update (bonl, fixed, double, default method)", phw),
+        row("P-H-W update (bonl, fixed, double, output_error method)", phw_output_error),
+        row("P-H-W update (bonl, fixed, double, equation_error method)", phw),
         row("bonl::Rls<double, 14> alone (fixed size)", flat["rls_core_fixed_14_ns"]),
         row("bonl::Rls<double> alone (run-time size 14)", flat["rls_core_dynamic_14_ns"]),
         row("textbook RLS in Eigen, dynamic, O(n^2) P update", tb),
         row("textbook RLS in Eigen, literal `P - K*phi'*P` (O(n^3))", flat["naive_rls_literal_ns"]),
         row("padasip FilterRLS.run (Python)", pa),
         row("numpy RLS loop (Python)", flat["numpy_rls_ns"]),
-        row("bonl.Estimator.update from a Python loop, per call (Python floats)",
+        row("bonl.Estimator.update (output_error) from a Python loop, per call (Python floats)",
             flat["python_estimator_update_call_ns"]),
-        row("bonl.Estimator.update from a Python loop, per call (numpy scalars)",
+        row("bonl.Estimator.update (output_error) from a Python loop, per call (numpy scalars)",
             flat["python_estimator_update_call_numpy_scalars_ns"]),
         row("bonl.identify, recursive (paper method / refine_iterations=0), per sample",
             flat["python_identify_5000_ms"] * 1e6 / 5000),
-        row("bonl.identify, recursive (default method, refine_iterations=0), per sample",
-            flat["python_identify_recursive_default_5000_ms"] * 1e6 / 5000),
-        row("bonl.identify, default (recursive + Levenberg-Marquardt), per sample",
-            flat["python_identify_default_5000_ms"] * 1e6 / 5000),
+        row("bonl.identify, recursive (output_error method, refine_iterations=0), per sample",
+            flat["python_identify_recursive_output_error_5000_ms"] * 1e6 / 5000),
+        row("bonl.identify, output_error (recursive + Levenberg-Marquardt), per sample",
+            flat["python_identify_output_error_5000_ms"] * 1e6 / 5000),
     ]
     baseline_table = table([f"at {PHW_PARAMS} parameters (P-H-W)", "ns/sample", "vs textbook RLS", "vs padasip"], rows)
 
     whole = [
         ["bonl.identify, P-H-W, 5000 samples, recursive (paper method / refine_iterations=0)",
          f"{flat['python_identify_5000_ms']:.3f} ms"],
-        ["bonl.identify, P-H-W, 5000 samples, recursive (default method, refine_iterations=0)",
-         f"{flat['python_identify_recursive_default_5000_ms']:.3f} ms"],
-        ["bonl.identify, P-H-W, 5000 samples, default (recursive + LM refinement)",
-         f"{flat['python_identify_default_5000_ms']:.1f} ms"],
+        ["bonl.identify, P-H-W, 5000 samples, recursive (output_error method, refine_iterations=0)",
+         f"{flat['python_identify_recursive_output_error_5000_ms']:.3f} ms"],
+        ["bonl.identify, P-H-W, 5000 samples, output_error (recursive + LM refinement)",
+         f"{flat['python_identify_output_error_5000_ms']:.1f} ms"],
     ]
     plant_entry = next(iter(plant.values()))
     rtf = plant_entry.get("realtime_factor")
@@ -242,7 +249,12 @@ def main() -> int:
     flat["phw_vs_padasip"] = speedup
     flat["phw_vs_textbook"] = tb / phw if (tb and phw) else None
     targets = [
-        ("P-H-W update (fixed, double)", phw, "<= 60 ns", phw is not None and phw <= 60, f"{phw:.1f} ns"),
+        ("P-H-W update, equation_error (fixed, double; issue 5)", phw, "<= 60 ns", phw is not None and phw <= 60,
+         f"{phw:.1f} ns"),
+        ("P-H-W update, output_error, as a multiple of equation_error (issue 16)",
+         phw_output_error / phw if (phw and phw_output_error) else None, "<= 2x",
+         phw is not None and phw_output_error is not None and phw_output_error <= 2 * phw,
+         f"{phw_output_error / phw:.2f}x ({phw_output_error:.1f} ns)" if (phw and phw_output_error) else "-"),
         ("P-H-W update vs padasip at 14 parameters", speedup, ">= 200x", speedup is not None and speedup >= 200,
          f"{speedup:,.0f}x" if speedup else "-"),
         ("Python identify, 5000 samples (paper method)", flat["python_identify_5000_ms"], "<= 2 ms",
@@ -276,9 +288,9 @@ def main() -> int:
     legend = (
         "`vs textbook RLS` and `vs padasip`: the baseline's time divided by this row's time, at the same "
         "parameter count (how many times faster this row is). `updated`: fraction of the samples that ran the "
-        "RLS step (the P-H-W default method skips samples inside the backlash gap). C++: CPU time per sample "
+        "RLS step (the P-H-W equation_error method skips samples inside the backlash gap; output_error updates on every sample). C++: CPU time per sample "
         "(fastest of 5 repetitions); Python: best wall time of several repeats. Same random regressors, "
-        f"forgetting factor 0.99 and P(0) = 1e3 I for every RLS baseline; float estimators use P(0) = 1e4 I."
+        f"forgetting factor 0.99 and P(0) = 1e3 I for every RLS baseline; float equation_error and paper estimators use P(0) = 1e4 I."
     )
     text = "\n\n".join(f"### {title}\n\n{body}" for title, body in sections) + "\n\n" + legend + "\n"
     if notes:

@@ -20,3 +20,13 @@ step "run bonl_online_accuracy"
 ./build/examples/examples/online_accuracy/bonl_online_accuracy \
   --json docs/results/online_accuracy.json --markdown docs/results/online_accuracy.md "$@"
 step "wrote docs/results/online_accuracy.json and docs/results/online_accuracy.md"
+
+# The summary table, spliced into every page that quotes it (between the online_accuracy_summary
+# markers); tests/python/test_published_figures.py checks that the copies match.
+for page in README.md docs/algorithm.md; do
+  awk -v summary=docs/results/online_accuracy_summary.md '
+    /<!-- online_accuracy_summary: begin/ { print; while ((getline line < summary) > 0) print line; skip = 1; next }
+    /<!-- online_accuracy_summary: end/ { skip = 0 }
+    !skip { print }' "$page" > "$page.tmp" && mv "$page.tmp" "$page"
+done
+step "updated the summary in README.md and docs/algorithm.md"

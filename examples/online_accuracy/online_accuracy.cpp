@@ -17,8 +17,8 @@
 //     --check FILE  compare what was computed with a results file written by --json (relative 2%,
 //                   values below 1e-9 count as equal); exit status 1 when one differs
 //
-// The committed results are docs/results/online_accuracy.json and .md (scripts/online_accuracy.sh);
-// ctest runs --quick --check against them.
+// The committed results are docs/results/online_accuracy.json, .md and _summary.md (the README's
+// table; scripts/online_accuracy.sh writes all three); ctest runs --quick --check against the JSON.
 
 #include <bonl/bonl.hpp>
 #include <bonl/io.hpp>
@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -242,6 +243,44 @@ std::string format(double value, const char* spec = "%.2g") {
   return text;
 }
 
+/// The summary in the layout of issue 16's table: for each condition and estimator, the range over
+/// the block-model systems (ARX apart) of the NRMSE (noise-free) or of its median over the seeds.
+std::string summary(const Json& results) {
+  const auto range = [&](bool arx, const std::function<double(const Json&)>& value) {
+    double low = kInfinity, high = 0.0;
+    for (const Json& system : results.at("systems")) {
+      const bool is_arx = system.at("name").get<std::string>().rfind("ARX", 0) == 0;
+      if (is_arx != arx) continue;
+      const double v = value(system);
+      low = std::min(low, v);
+      high = std::max(high, v);
+    }
+    return format(low) + " to " + format(high);
+  };
+  const char* estimators[] = {"output_error", "equation_error", "paper", "identify"};
+  std::ostringstream out;
+  out << "| models | condition | online output_error | online equation_error | online paper | identify() |\n"
+      << "|---|---|---|---|---|---|\n";
+  for (bool arx : {false, true}) {
+    const char* models = arx ? "ARX" : "block models";
+    for (const char* input : {"random_levels", "multisine"}) {
+      out << "| " << models << " | noise-free, " << (std::string(input) == "multisine" ? "multi-sine" : "random levels");
+      for (const char* key : estimators) {
+        out << " | " << range(arx, [&](const Json& s) { return as_number(s.at("noise_free").at(input).at(key)); });
+      }
+      out << " |\n";
+    }
+    for (const Noise& noise : kNoises) {
+      out << "| " << models << " | " << noise.label;
+      for (const char* key : estimators) {
+        out << " | " << range(arx, [&](const Json& s) { return median_of(s.at("noisy").at(noise.key), key); });
+      }
+      out << " |\n";
+    }
+  }
+  return out.str();
+}
+
 /// The markdown tables of docs/results/online_accuracy.md.
 std::string markdown(const Json& results) {
   std::ostringstream out;
@@ -251,6 +290,11 @@ std::string markdown(const Json& results) {
       << "file, and ctest re-runs part of them (`examples/online_accuracy_quick`). NRMSE of free-run simulation on a\n"
       << "fresh input against the noise-free output. \"online\": one pass of `Estimator::update` with its default\n"
       << "settings; `identify()`: offline, the recursive estimate refined by Levenberg-Marquardt.\n\n";
+  out << "## Summary\n\n"
+      << "Ranges over the systems of each kind (12 block models: 4 Hammerstein, 4 H-W, 4 P-H-W; 4 ARX) of the\n"
+      << "NRMSE, for noisy records of its median over the seeds. This table is also in the README\n"
+      << "(`online_accuracy_summary.md`).\n\n"
+      << summary(results) << "\n";
   out << "## Noise-free, 4000 samples\n\n"
       << "| system | random levels: output_error | equation_error | paper | identify() | P-H-W c error |"
          " multi-sine: output_error | equation_error | paper | identify() | P-H-W c error |\n"
@@ -377,6 +421,11 @@ int main(int argc, char** argv) {
       std::ofstream out(markdown_path);
       out << markdown(results);
       if (!out) throw std::runtime_error("cannot write " + markdown_path);
+      // The summary alone, beside it (the README includes it verbatim).
+      const std::string summary_path = markdown_path.substr(0, markdown_path.rfind(".md")) + "_summary.md";
+      std::ofstream summary_out(summary_path);
+      summary_out << summary(results);
+      if (!summary_out) throw std::runtime_error("cannot write " + summary_path);
     }
     if (json_path.empty() && markdown_path.empty() && check_path.empty()) std::cout << markdown(results);
     if (!check_path.empty()) {

@@ -139,8 +139,8 @@ TEMPLATE_TEST_CASE("the output-error terms simulate like simulate() and their se
 
 TEST_CASE("noise-free records of the known online systems are recovered exactly", "[output_error]") {
   // One pass of 4000 samples of random levels (held 5 samples), default settings. Measured: 15 of the
-  // 16 systems below 1e-12 and c within 1e-13; P-H-W slow 1 converges slower, 1.3e-3 and c within
-  // 0.4% at the end of the pass (docs/results/online_accuracy.md).
+  // 16 systems at 3.6e-7 or below and c within 1.3e-9; P-H-W slow 1 converges slower, 1.2e-3 and c
+  // within 0.34% at the end of the pass (docs/results/online_accuracy.md).
   const Eigen::VectorXd u = bonl::signals::random_levels(4000, 5, 1.0, 101);
   const Eigen::VectorXd u_validation = bonl::signals::random_levels(4000, 5, 1.0, 202);
   for (const auto& [name, any] : online_systems()) {

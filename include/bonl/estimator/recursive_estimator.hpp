@@ -308,6 +308,7 @@ class Estimator {
     m_outputs.reset();
     m_memory.reset(m_forgetting);
     m_error_scale = Scalar(0);
+    m_last_outlier = false;
     m_theta_internal = m_rls.theta();
     m_since_refresh = 0;
   }
@@ -341,14 +342,18 @@ class Estimator {
     if (m_sample < m_options.backlash_hold) m_outputs.hold(m_phi);
     const Scalar error = y - prediction;
     const Scalar lambda = forgetting_factor(y, error);
-    // A Huber-type bound on the error that drives the step: beyond kOutlierBound times the running
-    // mean absolute error a sample is taken at that size. One output outlier of 20 standard
-    // deviations would otherwise throw the estimate far into the non-convex criterion, from where
-    // the simulation takes thousands of samples to come back (the soak's outliers did).
-    // The mean follows the unclipped error: an isolated outlier raises it by about half, while a
-    // genuine change of the error level (the plant changed) opens the bound within a sample or two.
+    // An outlier bound: an error beyond kOutlierBound times the running mean absolute error, after
+    // a sample that was within it, drives the step at that size (Huber-type). One output outlier of
+    // 20 standard deviations would otherwise throw the estimate far into the non-convex criterion,
+    // from where the simulation takes thousands of samples to come back (the soak's outliers did).
+    // Only an isolated sample is bounded: a real change (the plant changed) gives a run of large
+    // errors, which passes from its second sample on; bounding every sample of it, against a mean
+    // that lags behind, shortened the steps until a tracking estimate settled in another basin.
+    // The mean follows the unclipped error.
     const Scalar bound = Scalar(kOutlierBound) * m_error_scale;
-    const Scalar used = m_error_scale > Scalar(0) ? std::clamp(error, -bound, bound) : error;
+    const bool outlier = m_error_scale > Scalar(0) && std::abs(error) > bound && !m_last_outlier;
+    const Scalar used = outlier ? std::clamp(error, -bound, bound) : error;
+    m_last_outlier = outlier;
     m_error_scale = m_error_scale > Scalar(0) ? m_error_scale + (std::abs(error) - m_error_scale) / Scalar(kErrorWindow)
                                                : std::abs(error);
     m_step = m_rls.theta();
@@ -446,6 +451,7 @@ class Estimator {
   double m_p0;                      // resolved from the options
   detail::AdaptiveMemory m_memory;
   Scalar m_error_scale = Scalar(0);  // output_error: running mean absolute prediction error (0: none yet)
+  bool m_last_outlier = false;       // output_error: the last sample's error was bounded
   Eigen::Index m_since_refresh = 0;
   Eigen::Index m_sample = 0;
   Eigen::Index m_total_samples = 0;

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The paper's experiment's published figures: runs bonl_demo (as scripts/demo.sh does) and writes
+# docs/results/plant_experiment.json (every MSE and parameter) and plant_experiment_summary.md (the
+# README's table), then splices the table into the README between its markers.
+# tests/python/test_published_figures.py recomputes the figures and checks both.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source scripts/deps.sh
+bonl_ensure_deps
+
+step "configure and build bonl_demo (build/demo)"
+cmake -S . -B build/demo -G Ninja -DCMAKE_BUILD_TYPE=Release -DBONL_BUILD_TESTS=OFF -DBONL_BUILD_BENCH=OFF
+cmake --build build/demo -j2 --target bonl_demo
+
+mkdir -p docs/results
+step "run bonl_demo"
+./build/demo/examples/demo/bonl_demo --json docs/results/plant_experiment.json \
+  --markdown docs/results/plant_experiment_summary.md > /dev/null
+awk -v summary=docs/results/plant_experiment_summary.md '
+  /<!-- plant_experiment_summary: begin/ { print; while ((getline line < summary) > 0) print line; skip = 1; next }
+  /<!-- plant_experiment_summary: end/ { skip = 0 }
+  !skip { print }' README.md > README.md.tmp && mv README.md.tmp README.md
+step "wrote docs/results/plant_experiment.json and plant_experiment_summary.md, updated README.md"

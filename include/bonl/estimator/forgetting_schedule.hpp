@@ -89,6 +89,9 @@ class AdaptiveMemory {
   void reset(const ForgettingSchedule& schedule) noexcept {
     m_memory = schedule.initial_memory;
     m_recent = m_reference = -1.0;  // set by the first sample
+    // The windows as rates, once: per sample they would be divisions on the update's path.
+    m_recent_rate = 1.0 / schedule.short_window;
+    m_reference_rate = 1.0 / schedule.long_window;
   }
 
   /// The forgetting factor for a sample with output y and a-priori prediction error `error` (both finite).
@@ -99,10 +102,10 @@ class AdaptiveMemory {
       m_mean = y;
       m_variance = 0.0;
     }
-    m_recent += (square - m_recent) / schedule.short_window;
-    m_reference += (square - m_reference) / schedule.long_window;
-    m_mean += (y - m_mean) / schedule.long_window;
-    m_variance += ((y - m_mean) * (y - m_mean) - m_variance) / schedule.long_window;
+    m_recent += (square - m_recent) * m_recent_rate;
+    m_reference += (square - m_reference) * m_reference_rate;
+    m_mean += (y - m_mean) * m_reference_rate;
+    m_variance += ((y - m_mean) * (y - m_mean) - m_variance) * m_reference_rate;
     const double ratio = schedule.change_ratio;
     const bool changing = ratio * m_recent < m_reference || m_recent > ratio * m_reference ||
                           m_recent > schedule.poor_fit * m_variance;
@@ -119,6 +122,8 @@ class AdaptiveMemory {
   double m_reference = -1.0;
   double m_mean = 0.0;
   double m_variance = 0.0;
+  double m_recent_rate = 1.0;
+  double m_reference_rate = 1.0;
 };
 
 }  // namespace detail

@@ -354,7 +354,7 @@ class Estimator {
     const bool outlier = m_error_scale > Scalar(0) && std::abs(error) > bound && !m_last_outlier;
     const Scalar used = outlier ? std::clamp(error, -bound, bound) : error;
     m_last_outlier = outlier;
-    m_error_scale = m_error_scale > Scalar(0) ? m_error_scale + (std::abs(error) - m_error_scale) / Scalar(kErrorWindow)
+    m_error_scale = m_error_scale > Scalar(0) ? m_error_scale + (std::abs(error) - m_error_scale) * Scalar(kErrorRate)
                                                : std::abs(error);
     m_step = m_rls.theta();
     UpdateStatus status = UpdateStatus::Updated;
@@ -435,9 +435,9 @@ class Estimator {
   /// variance grow by 1% of p0).
   static constexpr double kProcessNoise = 1e-10;
   /// The output-error method's outlier bound, in running mean absolute errors (5: about 4 standard
-  /// deviations of Gaussian noise), and that mean's time constant in samples.
+  /// deviations of Gaussian noise), and that mean's rate (a time constant of 50 samples).
   static constexpr double kOutlierBound = 5.0;
-  static constexpr double kErrorWindow = 50.0;
+  static constexpr double kErrorRate = 1.0 / 50.0;
 
   Model m_model;
   typename Model::KeyTerms m_terms;           // equation_error and paper

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds and runs every C++ test, installs bonl and builds examples/consumer against it, then
+# Builds and runs every C++ test, installs bonl and builds examples/consumer against it (core
+# alone with Eigen only, then the io and plant components), then
 # builds the Python package into build/venv and runs pytest.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -17,14 +18,10 @@ step "ctest"
 status=0
 ctest --test-dir build/ci --output-on-failure --no-tests=error || status=1
 
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 step "install to a temporary prefix, build and run examples/consumer against it"
-cmake --install build/ci --prefix "$tmp/prefix"
-cmake -S examples/consumer -B "$tmp/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$tmp/prefix"
-cmake --build "$tmp/consumer" -j2
-"$tmp/consumer/consumer"
+# bonl::bonl with SUNDIALS and nlohmann_json disabled (Eigen only); COMPONENTS io plant; and
+# COMPONENTS plant without SUNDIALS, which must fail to configure with a clear message.
+bash examples/consumer/check.sh build/ci
 
 step "Python: build and install the package in a virtual environment (build/venv)"
 [[ -x build/venv/bin/python ]] || python3 -m venv build/venv

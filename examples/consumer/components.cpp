@@ -1,0 +1,20 @@
+// Links bonl's components from its installed CMake package:
+// find_package(bonl CONFIG REQUIRED COMPONENTS io plant) + bonl::io and bonl::plant.
+#include <bonl/bonl.hpp>
+#include <bonl/io.hpp>
+#include <bonl/plant/excitation.hpp>
+#include <bonl/plant/simulator.hpp>
+#include <iostream>
+int main() {
+  // bonl::plant: one second of the plant after a step of the command (compiled, CVODE).
+  bonl::plant::SimulationOptions options;
+  options.duration = 1.0;
+  const bonl::plant::Trajectory run =
+      bonl::plant::simulate(bonl::plant::Parameters{}, bonl::plant::excitation::step(3.0), options);
+  // bonl::io: a model through its JSON file and back (header-only, nlohmann_json).
+  bonl::Hammersteind model(2, 1, 1, 2);
+  model.set_a((Eigen::Vector2d() << -1.2, 0.5).finished());
+  const bonl::Hammersteind back = bonl::io::model_from_json<bonl::Hammersteind>(bonl::io::to_json(model));
+  std::cout << "plant samples " << run.time.size() << ", json round trip " << (back.a() == model.a()) << '\n';
+  return run.time.size() > 50 && back.a() == model.a() ? 0 : 1;
+}

@@ -94,7 +94,7 @@ const char* kIdentifyDoc = R"doc(Identify a model's parameters from an input/out
 
 Parameters
 ----------
-model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+model : one of bonl.MODELS
     Gives the structure (orders); its parameter values are not used.
 u, y : array_like, shape (n,)
     Input and measured output.
@@ -148,11 +148,10 @@ void def_identify(py::module_& m) {
       py::arg("c0") = 0.01, py::arg("refine_iterations") = 100, kIdentifyDoc);
 }
 
-/// One Python class over the four estimators.
+/// One Python class over the estimators of every model of bonl::Models.
 class AnyEstimator {
  public:
-  using Variant = std::variant<bonl::Estimator<bonl::ARXd>, bonl::Estimator<bonl::Hammersteind>,
-                               bonl::Estimator<bonl::HammersteinWienerd>, bonl::Estimator<bonl::PseudoHammersteinWienerd>>;
+  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::Models, bonl::Estimator>::type, std::variant>::type;
 
   template <class Model>
   AnyEstimator(const Model& model, const bonl::EstimatorOptions& options)
@@ -273,16 +272,13 @@ void bind_estimation(py::module_& m) {
                ", projections=" + std::to_string(h.projections) + ")";
       });
 
-  def_identify<bonl::ARXd>(m);
-  def_identify<bonl::Hammersteind>(m);
-  def_identify<bonl::HammersteinWienerd>(m);
-  def_identify<bonl::PseudoHammersteinWienerd>(m);
+  bonl::for_each_model(bonl::Models{}, [&m](auto tag) { def_identify<typename decltype(tag)::type>(m); });
 
   py::class_<AnyEstimator> estimator(m, "Estimator", R"doc(Online recursive estimator for one model.
 
 Parameters
 ----------
-model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+model : one of bonl.MODELS
     Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
     c = 0 for output_error).
 method : {'output_error', 'equation_error', 'paper'}
@@ -305,10 +301,7 @@ stability_radius : float, default 0.999
 backlash_hold : int, default 200
     output_error, P-H-W: c is held at 0 for this many samples from the start.
 )doc");
-  def_estimator_init<bonl::ARXd>(estimator);
-  def_estimator_init<bonl::Hammersteind>(estimator);
-  def_estimator_init<bonl::HammersteinWienerd>(estimator);
-  def_estimator_init<bonl::PseudoHammersteinWienerd>(estimator);
+  bonl::for_each_model(bonl::Models{}, [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
   estimator
       .def("update", &AnyEstimator::update, py::arg("u"), py::arg("y"), R"doc(Process one sample.
 

@@ -23,7 +23,7 @@ text : str
 
 Returns
 -------
-ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+One of bonl.MODELS
 
 Raises
 ------

@@ -1,3 +1,5 @@
+#include <string>
+
 #include "bindings.hpp"
 
 PYBIND11_MODULE(_bonl, m) {
@@ -8,4 +10,14 @@ PYBIND11_MODULE(_bonl, m) {
   bonl_python::bind_metrics(m);
   bonl_python::bind_io(m);
   bonl_python::bind_plant(m);
+  // What `from bonl._bonl import *` (python/bonl/__init__.py) takes: every public name, so that a model
+  // added to bonl::Models reaches the bonl namespace with no edit on the Python side.
+  namespace py = pybind11;
+  py::list names;
+  for (const auto& item : m.attr("__dict__").cast<py::dict>()) {
+    const std::string name = py::str(item.first);
+    if (!name.empty() && name[0] != '_') names.append(name);
+  }
+  names.attr("sort")();
+  m.attr("__all__") = names;
 }

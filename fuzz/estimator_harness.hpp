@@ -1,19 +1,22 @@
 #pragma once
 // The estimator fuzz target's harness (see fuzz_estimator_update.cpp for what it checks), in a header
-// so that the twelve model types compile in two translation units, one per core.
+// so that the model types compile in two translation units, one per core.
 
 #include <bonl/estimator.hpp>
 #include <bonl/models.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 #include "fuzz_common.hpp"
@@ -21,44 +24,59 @@
 namespace bonl_fuzz {
 
 
-struct Orders {
-  Eigen::Index na, nb, nk, r, r1;
-};
-
-/// Per model: how to build it from orders, and whether its constructor must accept them (the
-/// documented minimums, r1 <= 32, and the compile-time orders when fixed).
+/// Everything model-specific comes from the model's description (bonl/models/model_description.hpp):
+/// which orders it takes, their documented ranges and compile-time values, and whether it has a
+/// backlash half-width c (the only constrained parameter, started at c0).
 template <class Model>
-struct ModelInfo;
-template <typename S, int Na, int Nb>
-struct ModelInfo<bonl::ARX<S, Na, Nb>> {
-  static constexpr bool kUsesC0 = false;
-  static bonl::ARX<S, Na, Nb> make(const Orders& o) { return {o.na, o.nb, o.nk}; }
-  static bool valid(const Orders& o) {
-    return o.na >= 1 && o.nb >= 0 && o.nk >= 0 && (Na < 0 || o.na == Na) && (Nb < 0 || o.nb == Nb);
+constexpr std::size_t kNumOrders = Model::kDescription.orders.size();
+template <class Model>
+using Orders = std::array<Eigen::Index, kNumOrders<Model>>;
+
+template <class Model>
+constexpr bool uses_c0() {
+  for (const auto& block : Model::kDescription.parameters) {
+    if (block.non_negative) return true;
   }
-};
-template <typename S, int Na, int Nb, int R>
-struct ModelInfo<bonl::Hammerstein<S, Na, Nb, R>> {
-  static constexpr bool kUsesC0 = false;
-  static bonl::Hammerstein<S, Na, Nb, R> make(const Orders& o) { return {o.na, o.nb, o.nk, o.r}; }
-  static bool valid(const Orders& o) {
-    return ModelInfo<bonl::ARX<S, Na, Nb>>::valid(o) && o.r >= 1 && (R < 0 || o.r == R);
+  return false;
+}
+
+/// Orders for Model from the input: run-time orders small (a step below the minimum now and then),
+/// compile-time ones at their value, now and then one more (a mismatch the constructor must refuse).
+template <class Model>
+Orders<Model> decode_orders(FuzzedDataProvider& in) {
+  Orders<Model> orders{};
+  for (std::size_t i = 0; i < orders.size(); ++i) {
+    const bonl::OrderDescription& order = Model::kDescription.orders[i];
+    if (order.fixed != Eigen::Dynamic) {
+      orders[i] = order.fixed + (in.ConsumeIntegral<std::uint8_t>() < 8 ? 1 : 0);
+    } else if (std::string(order.name) == "nk") {
+      orders[i] = in.ConsumeIntegralInRange<Eigen::Index>(-1, 10);
+    } else {
+      orders[i] = in.ConsumeIntegralInRange<Eigen::Index>(order.minimum - 1, order.minimum + 3);
+    }
   }
-};
-template <typename S, int Na, int Nb, int R, int R1>
-struct ModelInfo<bonl::HammersteinWiener<S, Na, Nb, R, R1>> {
-  static constexpr bool kUsesC0 = false;
-  static bonl::HammersteinWiener<S, Na, Nb, R, R1> make(const Orders& o) { return {o.na, o.nb, o.nk, o.r, o.r1}; }
-  static bool valid(const Orders& o) {
-    return ModelInfo<bonl::Hammerstein<S, Na, Nb, R>>::valid(o) && o.r1 >= 2 && o.r1 <= 32 && (R1 < 0 || o.r1 == R1);
+  return orders;
+}
+
+/// Whether the constructor must accept the orders: the description's ranges and compile-time values.
+template <class Model>
+bool orders_valid(const Orders<Model>& orders) {
+  for (std::size_t i = 0; i < orders.size(); ++i) {
+    const bonl::OrderDescription& order = Model::kDescription.orders[i];
+    if (orders[i] < order.minimum || orders[i] > order.maximum) return false;
+    if (order.fixed != Eigen::Dynamic && orders[i] != order.fixed) return false;
   }
-};
-template <typename S, int Na, int Nb, int R>
-struct ModelInfo<bonl::PseudoHammersteinWiener<S, Na, Nb, R>> {
-  static constexpr bool kUsesC0 = true;  // and the only model with a constrained parameter (c >= 0)
-  static bonl::PseudoHammersteinWiener<S, Na, Nb, R> make(const Orders& o) { return {o.na, o.nb, o.nk, o.r}; }
-  static bool valid(const Orders& o) { return ModelInfo<bonl::Hammerstein<S, Na, Nb, R>>::valid(o); }
-};
+  return true;
+}
+
+template <class Model>
+void print_orders(const Orders<Model>& orders) {
+  std::fprintf(stderr, "model %s, orders", Model::kName);
+  for (std::size_t i = 0; i < orders.size(); ++i) {
+    std::fprintf(stderr, " %s %ld", Model::kDescription.orders[i].name, long(orders[i]));
+  }
+  std::fprintf(stderr, "\n");
+}
 
 /// double -> Scalar, out-of-range magnitudes to +-inf explicitly (IEEE rounding, without relying on
 /// the conversion of an out-of-range double to float).
@@ -171,7 +189,7 @@ bool options_valid(const bonl::EstimatorOptions& o) {
   const bool c0 = std::isfinite(o.c0) && o.c0 >= 0.0;
   // In Scalar: P(0) = p0 I must be finite and positive, and (P-H-W) c(0) = c0 finite.
   const bool p0_scalar = p0 && std::isfinite(to_scalar<Scalar>(p0_value)) && to_scalar<Scalar>(p0_value) > Scalar(0);
-  const bool c0_scalar = !ModelInfo<Model>::kUsesC0 || (c0 && std::isfinite(to_scalar<Scalar>(o.c0)));
+  const bool c0_scalar = !uses_c0<Model>() || (c0 && std::isfinite(to_scalar<Scalar>(o.c0)));
   const bool safeguards = o.resolved_trace_ceiling() >= 1.0 && o.recover_after >= 0;  // the ceiling may be +inf
   return schedule && p0 && c0 && o.internal_refresh >= 1 && p0_scalar && c0_scalar && safeguards;
 }
@@ -226,7 +244,7 @@ class Harness {
         // method becomes 0); nothing else changes.
         const Model model = m_est.model();
         Params expected = m_est.theta();
-        if (ModelInfo<Model>::kUsesC0 && expected[m_n - 1] < Scalar(0)) expected[m_n - 1] = Scalar(0);
+        if (uses_c0<Model>() && expected[m_n - 1] < Scalar(0)) expected[m_n - 1] = Scalar(0);
         FUZZ_CHECK(same(model.theta(), expected));
       }
       check_invariants();
@@ -382,16 +400,18 @@ class Harness {
 };
 
 template <class Model>
-void fuzz(FuzzedDataProvider& in, const Orders& orders) {
+void fuzz(FuzzedDataProvider& in) {
+  const Orders<Model> orders = decode_orders<Model>(in);
+  if (verbose()) print_orders<Model>(orders);
   std::optional<Model> structure;
   try {
-    structure.emplace(ModelInfo<Model>::make(orders));
+    structure.emplace(bonl::make_model<Model>(orders));
   } catch (const std::invalid_argument&) {
-    FUZZ_CHECK(!ModelInfo<Model>::valid(orders));
+    FUZZ_CHECK(!orders_valid<Model>(orders));
     ++outcomes.bad_orders;
     return;
   }
-  FUZZ_CHECK(ModelInfo<Model>::valid(orders));
+  FUZZ_CHECK(orders_valid<Model>(orders));
 
   const bonl::EstimatorOptions options = decode_options(in);
   print(options);
@@ -409,8 +429,9 @@ void fuzz(FuzzedDataProvider& in, const Orders& orders) {
   harness->run(in);
 }
 
-/// Kinds 0-5 (run-time orders, paper orders in double for ARX and Hammerstein) are instantiated in
-/// fuzz_estimator_update.cpp; kinds 6-11 (paper H-W and P-H-W, the four in float) here.
-void fuzz_kinds_6_to_11(int kind, FuzzedDataProvider& in, const Orders& orders);
+/// The kinds after the run-time models of bonl::Models: the paper's fixed orders, in double and in
+/// float (instantiated in fuzz_estimator_update_more.cpp, to split the compile).
+inline constexpr int kFixedKinds = 8;
+void fuzz_fixed_kind(int kind, FuzzedDataProvider& in);
 
 }  // namespace bonl_fuzz

@@ -1,8 +1,8 @@
 // libFuzzer target: bytes -> bonl::Estimator<Model> fed a stream of (u, y) with NaN, inf, huge,
 // tiny and denormal values among ordinary ones (bonl/estimator/recursive_estimator.hpp).
 //
-// The input picks a model (ARX, Hammerstein, H-W, P-H-W; run-time orders from 1 to 4, or the
-// paper's fixed orders in double and in float), its orders (some invalid), the method, the
+// The input picks a model (every model of bonl::Models at small run-time orders, or the paper's
+// fixed orders in double and in float), its orders (some invalid), the method, the
 // forgetting schedule, p0, c0, internal_refresh, trace_ceiling and recover_after (some invalid),
 // then a stream of operations: mostly update(u, y), sometimes reset(), reset(theta0), start_pass(),
 // recover(), start_recording(), model().
@@ -36,32 +36,16 @@ using namespace bonl_fuzz;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider in(data, size);
-  const int kind = in.ConsumeIntegralInRange<int>(0, 11);
-  Orders o{};
-  if (kind < 4) {  // run-time orders, small, a few invalid
-    o.na = in.ConsumeIntegralInRange<Eigen::Index>(0, 4);
-    o.nb = in.ConsumeIntegralInRange<Eigen::Index>(-1, 3);
-    o.nk = in.ConsumeIntegralInRange<Eigen::Index>(-1, 10);
-    o.r = in.ConsumeIntegralInRange<Eigen::Index>(0, 4);
-    o.r1 = in.ConsumeIntegralInRange<Eigen::Index>(1, 4);
-  } else {  // the paper's orders (na 3, nb 2, r = r1 = 3), nk 8 in the paper; now and then a mismatch
-    const bool mismatch = in.ConsumeIntegral<std::uint8_t>() < 8;
-    o = {3, 2, in.ConsumeIntegralInRange<Eigen::Index>(-1, 10), 3, 3};
-    if (mismatch) o.na = 4;
-  }
-  if (verbose()) {
-    std::fprintf(stderr, "model %d, orders na %ld nb %ld nk %ld r %ld r1 %ld\n", kind, long(o.na), long(o.nb),
-                 long(o.nk), long(o.r), long(o.r1));
-  }
+  constexpr int kRunTimeKinds = static_cast<int>(bonl::Models::size);
+  const int kind = in.ConsumeIntegralInRange<int>(0, kRunTimeKinds + kFixedKinds - 1);
   try {
-    switch (kind) {
-      case 0: fuzz<bonl::ARXd>(in, o); break;
-      case 1: fuzz<bonl::Hammersteind>(in, o); break;
-      case 2: fuzz<bonl::HammersteinWienerd>(in, o); break;
-      case 3: fuzz<bonl::PseudoHammersteinWienerd>(in, o); break;
-      case 4: fuzz<bonl::PaperARX>(in, o); break;
-      case 5: fuzz<bonl::PaperHammerstein>(in, o); break;
-      default: fuzz_kinds_6_to_11(kind, in, o); break;
+    if (kind < kRunTimeKinds) {  // every model of bonl::Models at small run-time orders, a few invalid
+      int index = 0;
+      bonl::for_each_model(bonl::Models{}, [&](auto tag) {
+        if (index++ == kind) fuzz<typename decltype(tag)::type>(in);
+      });
+    } else {
+      fuzz_fixed_kind(kind - kRunTimeKinds, in);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "unexpected exception: %s\n", e.what());

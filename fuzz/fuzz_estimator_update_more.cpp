@@ -1,17 +1,19 @@
-// Second translation unit of fuzz_estimator_update: model kinds 6-11 (see estimator_harness.hpp).
+// Second translation unit of fuzz_estimator_update: the fixed-order kinds (see estimator_harness.hpp).
 
 #include "estimator_harness.hpp"
 
 namespace bonl_fuzz {
 
-void fuzz_kinds_6_to_11(int kind, FuzzedDataProvider& in, const Orders& o) {
+void fuzz_fixed_kind(int kind, FuzzedDataProvider& in) {
   switch (kind) {
-    case 6: fuzz<bonl::PaperHammersteinWiener>(in, o); break;
-    case 7: fuzz<bonl::PaperPseudoHammersteinWiener>(in, o); break;
-    case 8: fuzz<bonl::ARX<float, 3, 2>>(in, o); break;
-    case 9: fuzz<bonl::Hammerstein<float, 3, 2, 3>>(in, o); break;
-    case 10: fuzz<bonl::HammersteinWiener<float, 3, 2, 3, 3>>(in, o); break;
-    default: fuzz<bonl::PseudoHammersteinWiener<float, 3, 2, 3>>(in, o); break;
+    case 0: fuzz<bonl::PaperARX>(in); break;
+    case 1: fuzz<bonl::PaperHammerstein>(in); break;
+    case 2: fuzz<bonl::PaperHammersteinWiener>(in); break;
+    case 3: fuzz<bonl::PaperPseudoHammersteinWiener>(in); break;
+    case 4: fuzz<bonl::ARX<float, 3, 2>>(in); break;
+    case 5: fuzz<bonl::Hammerstein<float, 3, 2, 3>>(in); break;
+    case 6: fuzz<bonl::HammersteinWiener<float, 3, 2, 3, 3>>(in); break;
+    default: fuzz<bonl::PseudoHammersteinWiener<float, 3, 2, 3>>(in); break;
   }
 }
 

@@ -8,15 +8,20 @@
 //   arrays of finite numbers of the right lengths, b_0 = 1, q_1 = 1, c >= 0; and the loaded
 //   model's numbers are those of the file, bit for bit.
 // - The typed readers agree with load_model: model_from_json<K> (run-time orders) succeeds exactly
-//   when load_model returned kind K, with bit-identical parameters; the fixed-order (paper) type
-//   succeeds exactly when the orders match too; the float type exactly when every number fits in
-//   a float, giving the parameters rounded to float; another kind always fails.
+//   when load_model returned kind K, with bit-identical parameters; for the paper's four models the
+//   fixed-order (paper) type succeeds exactly when the orders match too, the float type exactly when
+//   every number fits in a float, giving the parameters rounded to float; another kind always fails.
+//   The format's rules come from each model's description (bonl/models/model_description.hpp), so
+//   every model of bonl::Models is covered.
 // - A loaded model round-trips: to_json (compact and indented) reads back to the same kind, orders
 //   and bit-identical parameters, and writing that again gives the same text.
 
 #include <bonl/io/model_json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cfloat>
+#include <cstddef>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -38,55 +43,45 @@ constexpr const char* kPrefix = "bonl: model JSON: ";
 
 bool has_prefix(const char* message) { return std::string(message).rfind(kPrefix, 0) == 0; }
 
+/// The fixed-order (paper) and float variants of the paper's four models, whose typed readers must
+/// agree with load_model too. A model without an entry here (the Wiener model) is checked at run-time
+/// orders in double only: everything else about it comes from its description.
 template <class M>
-struct Kinds;
-template <typename S, int A, int B>
-struct Kinds<bonl::ARX<S, A, B>> {
-  using Dynamic = bonl::ARXd;
+struct Variants {
+  static constexpr bool kListed = false;
+};
+template <>
+struct Variants<bonl::ARXd> {
+  static constexpr bool kListed = true;
   using Paper = bonl::PaperARX;
   using Float = bonl::ARX<float>;
 };
-template <typename S, int A, int B, int R>
-struct Kinds<bonl::Hammerstein<S, A, B, R>> {
-  using Dynamic = bonl::Hammersteind;
+template <>
+struct Variants<bonl::Hammersteind> {
+  static constexpr bool kListed = true;
   using Paper = bonl::PaperHammerstein;
   using Float = bonl::Hammerstein<float>;
 };
-template <typename S, int A, int B, int R, int R1>
-struct Kinds<bonl::HammersteinWiener<S, A, B, R, R1>> {
-  using Dynamic = bonl::HammersteinWienerd;
+template <>
+struct Variants<bonl::HammersteinWienerd> {
+  static constexpr bool kListed = true;
   using Paper = bonl::PaperHammersteinWiener;
   using Float = bonl::HammersteinWiener<float>;
 };
-template <typename S, int A, int B, int R>
-struct Kinds<bonl::PseudoHammersteinWiener<S, A, B, R>> {
-  using Dynamic = bonl::PseudoHammersteinWienerd;
+template <>
+struct Variants<bonl::PseudoHammersteinWienerd> {
+  static constexpr bool kListed = true;
   using Paper = bonl::PaperPseudoHammersteinWiener;
   using Float = bonl::PseudoHammersteinWiener<float>;
 };
 
-template <class M>
-constexpr bool kBlock = !std::is_same_v<M, bonl::ARXd>;
-/// The index of a run-time-order model type in AnyModel.
-template <class M>
-constexpr int kIndex = std::is_same_v<M, bonl::ARXd>                 ? 0
-                       : std::is_same_v<M, bonl::Hammersteind>       ? 1
-                       : std::is_same_v<M, bonl::HammersteinWienerd> ? 2
-                                                                     : 3;
-template <class M>
-constexpr bool kHw = std::is_same_v<M, bonl::HammersteinWienerd>;
-
-/// Same orders (na, nb, nk, and r, r1 where the kind has them).
+/// Same kind and orders.
 template <class A, class B>
 bool same_orders(const A& a, const B& b) {
-  if (a.na() != b.na() || a.nb() != b.nb() || a.nk() != b.nk()) return false;
-  if constexpr (kBlock<typename Kinds<A>::Dynamic>) {
-    if (a.r() != b.r()) return false;
-  }
-  if constexpr (kHw<typename Kinds<A>::Dynamic>) {
-    if (a.r1() != b.r1()) return false;
-  }
-  return true;
+  if (std::string(A::kName) != B::kName) return false;
+  const auto x = a.orders();
+  const auto y = b.orders();
+  return x.size() == y.size() && std::equal(x.begin(), x.end(), y.begin());
 }
 
 template <class A, class B>
@@ -112,34 +107,37 @@ std::optional<Target> typed_read(const std::string& text) {
   return std::nullopt;
 }
 
-/// One of the twelve typed readers (4 kinds x {run-time orders, paper orders, float}); must fail.
+/// One of the typed readers (every model of bonl::Models at run-time orders, then the paper's four at
+/// paper orders and in float); must fail.
 void typed_read_must_fail(const std::string& text, unsigned which) {
+  constexpr unsigned kRunTime = bonl::Models::size;
+  const unsigned kind = which % (kRunTime + 8);
   bool loaded = false;
-  switch (which % 12) {
-    case 0: loaded = typed_read<bonl::ARXd>(text).has_value(); break;
-    case 1: loaded = typed_read<bonl::Hammersteind>(text).has_value(); break;
-    case 2: loaded = typed_read<bonl::HammersteinWienerd>(text).has_value(); break;
-    case 3: loaded = typed_read<bonl::PseudoHammersteinWienerd>(text).has_value(); break;
-    case 4: loaded = typed_read<bonl::PaperARX>(text).has_value(); break;
-    case 5: loaded = typed_read<bonl::PaperHammerstein>(text).has_value(); break;
-    case 6: loaded = typed_read<bonl::PaperHammersteinWiener>(text).has_value(); break;
-    case 7: loaded = typed_read<bonl::PaperPseudoHammersteinWiener>(text).has_value(); break;
-    case 8: loaded = typed_read<bonl::ARX<float>>(text).has_value(); break;
-    case 9: loaded = typed_read<bonl::Hammerstein<float>>(text).has_value(); break;
-    case 10: loaded = typed_read<bonl::HammersteinWiener<float>>(text).has_value(); break;
-    default: loaded = typed_read<bonl::PseudoHammersteinWiener<float>>(text).has_value(); break;
+  unsigned index = 0;
+  bonl::for_each_model(bonl::Models{}, [&](auto tag) {
+    if (index++ == kind) loaded = typed_read<typename decltype(tag)::type>(text).has_value();
+  });
+  switch (kind < kRunTime ? 8 : kind - kRunTime) {
+    case 0: loaded = typed_read<bonl::PaperARX>(text).has_value(); break;
+    case 1: loaded = typed_read<bonl::PaperHammerstein>(text).has_value(); break;
+    case 2: loaded = typed_read<bonl::PaperHammersteinWiener>(text).has_value(); break;
+    case 3: loaded = typed_read<bonl::PaperPseudoHammersteinWiener>(text).has_value(); break;
+    case 4: loaded = typed_read<bonl::ARX<float>>(text).has_value(); break;
+    case 5: loaded = typed_read<bonl::Hammerstein<float>>(text).has_value(); break;
+    case 6: loaded = typed_read<bonl::HammersteinWiener<float>>(text).has_value(); break;
+    case 7: loaded = typed_read<bonl::PseudoHammersteinWiener<float>>(text).has_value(); break;
+    default: break;
   }
   FUZZ_CHECK(!loaded);
 }
 
-template <class M>
-bool paper_orders(const M& m) {
-  if (m.na() != 3 || m.nb() != 2) return false;
-  if constexpr (kBlock<M>) {
-    if (m.r() != 3) return false;
-  }
-  if constexpr (kHw<M>) {
-    if (m.r1() != 3) return false;
+/// The orders match Fixed's compile-time orders (where Fixed fixes them).
+template <class Fixed, class M>
+bool fits_fixed_orders(const M& m) {
+  const auto orders = m.orders();
+  for (std::size_t i = 0; i < orders.size(); ++i) {
+    const int fixed = Fixed::kDescription.orders[i].fixed;
+    if (fixed != Eigen::Dynamic && orders[i] != fixed) return false;
   }
   return true;
 }
@@ -172,61 +170,57 @@ bool numbers_ok(const nlohmann::json& value, const Vector& expected) {
   return true;
 }
 
+template <class Entry, std::size_t N>
+bool exact_keys(const nlohmann::json& object, const std::array<Entry, N>& entries) {
+  if (!object.is_object() || object.size() != N) return false;
+  for (const Entry& entry : entries) {
+    if (!object.contains(entry.name)) return false;
+  }
+  return true;
+}
+
+/// The format's rules for M's description, on the plain parse of the text.
 template <class M>
 void check_format(const std::string& text, const M& model) {
-  constexpr std::int64_t kMax = bonl::io::kMaxModelOrder;
+  constexpr auto& description = M::kDescription;
   const nlohmann::json document = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   FUZZ_CHECK(!document.is_discarded());
   FUZZ_CHECK(exact_keys(document, {"format", "version", "model", "orders", "params"}));
   FUZZ_CHECK(document["format"] == "bonl-model");
   FUZZ_CHECK(document["version"].is_number_integer() && document["version"] == 1);
-  const char* names[] = {"ARX", "Hammerstein", "HammersteinWiener", "PseudoHammersteinWiener"};
-  FUZZ_CHECK(document["model"] == names[kIndex<M>]);
+  FUZZ_CHECK(document["model"] == description.name);
   const nlohmann::json& orders = document["orders"];
   const nlohmann::json& params = document["params"];
   // The keys first (operator[] on a const json needs them).
-  if constexpr (!kBlock<M>) {
-    FUZZ_CHECK(exact_keys(orders, {"na", "nb", "nk"}) && exact_keys(params, {"b", "a"}));
-  } else if constexpr (kHw<M>) {
-    FUZZ_CHECK(exact_keys(orders, {"na", "nb", "nk", "r", "r1"}) && exact_keys(params, {"b", "a", "f", "p", "q"}));
-  } else if constexpr (std::is_same_v<M, bonl::PseudoHammersteinWienerd>) {
-    FUZZ_CHECK(exact_keys(orders, {"na", "nb", "nk", "r"}) && exact_keys(params, {"b", "a", "f", "p", "c"}));
-  } else {
-    FUZZ_CHECK(exact_keys(orders, {"na", "nb", "nk", "r"}) && exact_keys(params, {"b", "a", "f", "p"}));
+  FUZZ_CHECK(exact_keys(orders, description.orders) && exact_keys(params, description.parameters));
+  const auto order_values = model.orders();
+  for (std::size_t i = 0; i < description.orders.size(); ++i) {
+    const bonl::OrderDescription& order = description.orders[i];
+    FUZZ_CHECK(order_ok(orders[order.name], order.minimum, order.maximum, order_values[i]));
   }
-  FUZZ_CHECK(order_ok(orders["na"], 1, kMax, model.na()));
-  FUZZ_CHECK(order_ok(orders["nb"], 0, kMax, model.nb()));
-  FUZZ_CHECK(order_ok(orders["nk"], 0, kMax, model.nk()));
-  FUZZ_CHECK(numbers_ok(params["b"], model.b()) && numbers_ok(params["a"], model.a()));
-  if constexpr (kBlock<M>) {
-    FUZZ_CHECK(order_ok(orders["r"], 1, kMax, model.r()));
-    FUZZ_CHECK(params["b"][0] == 1.0);  // b_0 = 1
-    FUZZ_CHECK(numbers_ok(params["f"], model.f()) && numbers_ok(params["p"], model.p()));
-  }
-  if constexpr (kHw<M>) {
-    FUZZ_CHECK(order_ok(orders["r1"], 2, 32, model.r1()));
-    FUZZ_CHECK(numbers_ok(params["q"], model.q()) && params["q"][0] == 1.0);  // q_1 = 1
-  }
-  if constexpr (std::is_same_v<M, bonl::PseudoHammersteinWienerd>) {
-    const nlohmann::json& c = params["c"];
-    FUZZ_CHECK(c.is_number() && std::isfinite(c.get<double>()) && c.get<double>() >= 0.0);
-    const double value = c.get<double>(), expected = model.c();
-    FUZZ_CHECK(same_bits(&value, &expected, 1));
+  for (std::size_t i = 0; i < description.parameters.size(); ++i) {
+    const bonl::ParameterDescription& parameter = description.parameters[i];
+    const nlohmann::json& value = params[parameter.name];
+    const Eigen::VectorXd expected = model.parameter(i);
+    if (parameter.shape == bonl::ParameterShape::Number) {
+      FUZZ_CHECK(value.is_number() && std::isfinite(value.get<double>()));
+      const double x = value.get<double>();
+      FUZZ_CHECK(same_bits(&x, &expected[0], 1));
+      if (parameter.non_negative) FUZZ_CHECK(x >= 0.0);  // c >= 0
+    } else {
+      FUZZ_CHECK(numbers_ok(value, expected));
+      if (parameter.normalised != nullptr) FUZZ_CHECK(value[0] == 1.0);  // b_0 = 1, q_1 = 1
+    }
   }
 }
 
+/// The paper-order and float typed readers of one of the paper's four models agree with load_model.
 template <class M>
-void check_loaded(const std::string& text, const M& model, unsigned salt) {
-  using K = Kinds<M>;
-  check_format(text, model);
-
-  // Run-time orders: the same model, bit for bit.
-  const auto dynamic = typed_read<typename K::Dynamic>(text);
-  FUZZ_CHECK(dynamic.has_value() && same_model(*dynamic, model));
-
+void check_variants(const std::string& text, const M& model) {
+  using K = Variants<M>;
   // Paper (fixed) orders: loads exactly when the file has them.
   const auto paper = typed_read<typename K::Paper>(text);
-  FUZZ_CHECK(paper.has_value() == paper_orders(model));
+  FUZZ_CHECK(paper.has_value() == fits_fixed_orders<typename K::Paper>(model));
   if (paper) FUZZ_CHECK(same_model(*paper, model));
 
   // float: loads exactly when every parameter fits in a float; then the parameters are rounded.
@@ -241,9 +235,20 @@ void check_loaded(const std::string& text, const M& model, unsigned salt) {
     const auto single_again = typed_read<typename K::Float>(bonl::io::to_json(*single));
     FUZZ_CHECK(single_again.has_value() && same_model(*single_again, *single));
   }
+}
+
+template <class M>
+void check_loaded(const std::string& text, const M& model, std::size_t index, unsigned salt) {
+  check_format(text, model);
+
+  // Run-time orders: the same model, bit for bit.
+  const auto dynamic = typed_read<M>(text);
+  FUZZ_CHECK(dynamic.has_value() && same_model(*dynamic, model));
+  if constexpr (Variants<M>::kListed) check_variants(text, model);
 
   // Another kind never loads it.
-  typed_read_must_fail(text, static_cast<unsigned>((kIndex<M> + 1 + salt % 3) % 4 + 4 * (salt / 3 % 3)));
+  constexpr unsigned kRunTime = bonl::Models::size;
+  typed_read_must_fail(text, static_cast<unsigned>((index + 1 + salt % (kRunTime - 1)) % kRunTime));
 
   // Round trip, compact and indented.
   for (const int indent : {-1, 2}) {
@@ -256,7 +261,7 @@ void check_loaded(const std::string& text, const M& model, unsigned salt) {
       FUZZ_CHECK(false);
     }
     const AnyModel& again = *loaded_again;
-    FUZZ_CHECK(again.index() == static_cast<std::size_t>(kIndex<M>));
+    FUZZ_CHECK(again.index() == index);
     const M& back = std::get<M>(again);
     FUZZ_CHECK(same_model(back, model));
     FUZZ_CHECK(bonl::io::to_json(back, indent) == written);
@@ -287,6 +292,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     typed_read_must_fail(text, salt);  // every typed reader is at least as strict as load_model
     return 0;
   }
-  std::visit([&](const auto& model) { check_loaded(text, model, salt); }, *loaded);
+  std::visit([&](const auto& model) { check_loaded(text, model, loaded->index(), salt); }, *loaded);
   return 0;
 }

@@ -25,6 +25,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "parameter_step.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -84,20 +86,6 @@ VectorXd output_noise(const VectorXd& y, const Noise& noise, std::uint64_t seed)
   return e * (noise.level * standard_deviation(y) / standard_deviation(e));
 }
 
-/// The relative change the tracking test makes: input gain +30% (f and p, or ARX's b) and c doubled.
-template <class Model>
-Model changed(const Model& model) {
-  Model out = model;
-  typename Model::Params theta = model.theta();
-  if constexpr (Model::kHasInternalVariables) {
-    theta.head(2 * (model.r() + 1)) *= 1.3;
-  } else {
-    theta.head(model.nb() + 1) *= 1.3;
-  }
-  if constexpr (std::is_same_v<Model, bonl::PseudoHammersteinWienerd>) theta[theta.size() - 1] *= 2.0;
-  out.set_theta(theta);
-  return out;
-}
 
 /// The plant of the tracking test: `before` up to `change`, then `after`, one free run (the
 /// output-error terms with fixed parameters are the model's simulation, sample by sample).
@@ -162,7 +150,7 @@ Json tracking(const Model& truth) {
   const Eigen::Index samples = 2 * kSamples, change = kSamples;
   const VectorXd u = bonl::signals::random_levels(samples, 5, 1.0, 404);
   const VectorXd u_validation = bonl::signals::random_levels(kSamples, 5, 1.0, 405);
-  const Model after = changed(truth);
+  const Model after = bonl_test::with_parameter_step(truth);
   const VectorXd y = switched_response(truth, after, u, change);
   const VectorXd y_validation = after.simulate(u_validation);
   bonl::EstimatorOptions options;

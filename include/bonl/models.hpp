@@ -1,5 +1,5 @@
 #pragma once
-// The four models of the paper. Each one simulates free-run from rest (simulate), predicts one
+// The models: the four of the paper and the Wiener model. Each one simulates free-run from rest (simulate), predicts one
 // step ahead from measured data (predict), exposes its parameters as the eq. (19) vector (theta)
 // and by name, and carries its key-term-separated regressor (KeyTerms) for bonl::Estimator.
 //
@@ -7,13 +7,18 @@
 //   Scalar, kNumParams (or Eigen::Dynamic), Params, VectorX, kHasInternalVariables, kName;
 //   num_params(), theta(), set_theta(), try_simulate(u, y), initial_estimate(c0);
 //   KeyTerms(model) with reset(), begin(), predicted_output(), regress(), end(), constrain().
+// and describes itself (kDescription, orders(), parameter(i), set_parameter(i, v): model_description.hpp),
+// which is all the JSON format, the Python bindings, the fuzz harness and the tests need: adding a
+// model is its header and one entry in bonl::Models below.
 
 #include <Eigen/Core>
 
 #include "models/arx.hpp"
 #include "models/hammerstein.hpp"
 #include "models/hammerstein_wiener.hpp"
+#include "models/model_description.hpp"
 #include "models/pseudo_hammerstein_wiener.hpp"
+#include "models/wiener.hpp"
 
 namespace bonl {
 
@@ -23,11 +28,17 @@ using PaperARX = ARX<double, 3, 2>;
 using PaperHammerstein = Hammerstein<double, 3, 2, 3>;
 using PaperHammersteinWiener = HammersteinWiener<double, 3, 2, 3, 3>;
 using PaperPseudoHammersteinWiener = PseudoHammersteinWiener<double, 3, 2, 3>;
+using PaperWiener = Wiener<double, 3, 2, 3>;
 
 /// Run-time orders throughout.
 using ARXd = ARX<double>;
 using Hammersteind = Hammerstein<double>;
 using HammersteinWienerd = HammersteinWiener<double>;
 using PseudoHammersteinWienerd = PseudoHammersteinWiener<double>;
+using Wienerd = Wiener<double>;
+
+/// Every model, at run-time orders in double: what a model file can hold, what Python binds, what
+/// the property suites run over. A new model is one entry here.
+using Models = ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd>;
 
 }  // namespace bonl

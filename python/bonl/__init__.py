@@ -1,38 +1,18 @@
 """bonl: identification of block-oriented nonlinear models of electro-hydraulic machines.
 
-Models (after Yan et al., the excavator-arm paper): :class:`ARX`, :class:`Hammerstein`,
-:class:`HammersteinWiener` and :class:`PseudoHammersteinWiener`; whole-record identification with
-:func:`identify`, online estimation with :class:`Estimator`; :mod:`bonl.metrics`; the simulated
-excavator dipper joint in :mod:`bonl.plant`, and :func:`experiment`, the paper's experiment on it.
+Models (after Yan et al., the excavator-arm paper, and the Wiener model): every class of
+:data:`MODELS` (:class:`ARX`, :class:`Hammerstein`, :class:`HammersteinWiener`,
+:class:`PseudoHammersteinWiener`, :class:`Wiener`); whole-record identification with :func:`identify`,
+online estimation with :class:`Estimator`; :mod:`bonl.metrics`; the simulated excavator dipper joint
+in :mod:`bonl.plant`, and :func:`experiment`, the paper's experiment on it.
 """
 
-from ._bonl import (
-    ARX,
-    Estimator,
-    Hammerstein,
-    HammersteinWiener,
-    NumericalError,
-    PseudoHammersteinWiener,
-    UpdateStatus,
-    __version__,
-    identify,
-    load_model,
-)
+# Every public name of the C++ core: the model classes (one per entry of C++'s bonl::Models, so a
+# new model needs no edit here), MODELS, identify, Estimator, load_model, ...
+from ._bonl import *  # noqa: F401,F403
+from ._bonl import __all__ as _core_names
+from ._bonl import __version__
 from . import metrics, plant
 from .plant import experiment
 
-__all__ = [
-    "ARX",
-    "Estimator",
-    "Hammerstein",
-    "HammersteinWiener",
-    "NumericalError",
-    "PseudoHammersteinWiener",
-    "UpdateStatus",
-    "__version__",
-    "experiment",
-    "identify",
-    "load_model",
-    "metrics",
-    "plant",
-]
+__all__ = sorted({*_core_names, "__version__", "experiment", "metrics", "plant"})

@@ -52,36 +52,18 @@ void check_updates_allocate_nothing(const Model& structure, const std::optional<
     CHECK(p == p.transpose());
   }
 }
-
-/// A run-time-size copy of a known (fixed-size) system.
-template <class Dynamic, class Fixed>
-Dynamic with_theta_of(Dynamic model, const Fixed& known) {
-  model.set_theta(known.theta());
-  return model;
-}
 }  // namespace
 
 TEMPLATE_TEST_CASE("fixed-size updates allocate nothing", "[allocation]", bonl::PaperARX, bonl::PaperHammerstein,
-                   bonl::PaperHammersteinWiener, bonl::PaperPseudoHammersteinWiener) {
+                   bonl::PaperHammersteinWiener, bonl::PaperPseudoHammersteinWiener, bonl::PaperWiener) {
   static_assert(noexcept(std::declval<bonl::Estimator<TestType>&>().update(0.0, 0.0)));
-  TestType structure = [] {
-    if constexpr (std::is_same_v<TestType, bonl::PaperARX>) return known_arx();
-    else if constexpr (std::is_same_v<TestType, bonl::PaperHammerstein>) return known_hammerstein();
-    else if constexpr (std::is_same_v<TestType, bonl::PaperHammersteinWiener>) return known_hammerstein_wiener();
-    else return known_phw();
-  }();
-  check_updates_allocate_nothing(structure, bonl::EstimatorOptions{}.forgetting);
+  check_updates_allocate_nothing(known_system<TestType>(), bonl::EstimatorOptions{}.forgetting);
 }
 
 // Run-time (Eigen::Dynamic) sizes allocate once, when the estimator is built; the updates reuse that.
 // Forgetting 0.98 throughout, so that the trace ceiling and the scale fold run too.
-TEST_CASE("run-time-size updates allocate nothing after construction", "[allocation]") {
-  const auto forgetting = bonl::ForgettingSchedule::constant(0.98);
-  check_updates_allocate_nothing(with_theta_of(bonl::ARXd(3, 2, kNk), known_arx()), forgetting);
-  check_updates_allocate_nothing(with_theta_of(bonl::Hammersteind(3, 2, kNk, 3), known_hammerstein()), forgetting);
-  check_updates_allocate_nothing(with_theta_of(bonl::HammersteinWienerd(3, 2, kNk, 3, 3), known_hammerstein_wiener()),
-                                 forgetting);
-  check_updates_allocate_nothing(with_theta_of(bonl::PseudoHammersteinWienerd(3, 2, kNk, 3), known_phw()), forgetting);
+TEMPLATE_LIST_TEST_CASE("run-time-size updates allocate nothing after construction", "[allocation]", bonl::Models) {
+  check_updates_allocate_nothing(known_system<TestType>(), bonl::ForgettingSchedule::constant(0.98));
 }
 
 TEST_CASE("updates with recording on, the trace ceiling acting and automatic recovery allocate nothing",

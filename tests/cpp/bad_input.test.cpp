@@ -668,12 +668,14 @@ TEST_CASE("J1-J5 the reader rejects what is not a bonl model file of this versio
        "version 18446744073709551615 is newer than this bonl reads"},
       {"J4 version 0", [] { bonl::io::load_model(phw_with([](Json& d) { d["version"] = 0; })); }, "version must be 1, got 0"},
       {"J4 version -1", [] { bonl::io::load_model(phw_with([](Json& d) { d["version"] = -1; })); }, "version must be 1, got -1"},
-      {"J5 unknown model", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = "Wiener"; })); },
-       "model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", \"PseudoHammersteinWiener\", got \"Wiener\""},
+      {"J5 unknown model", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = "Volterra"; })); },
+       "model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", \"PseudoHammersteinWiener\", \"Wiener\", "
+       "got \"Volterra\""},
       {"J5 model with a hyphen", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = "Pseudo-Hammerstein-Wiener"; })); },
        "model must be one of"},
       {"J5 model null", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = nullptr; })); },
-       "model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", \"PseudoHammersteinWiener\", got null"},
+       "model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", \"PseudoHammersteinWiener\", \"Wiener\", "
+       "got null"},
   };
   check_cases<std::invalid_argument>(cases);
   // Every message is printable ASCII, whatever bytes the file held.

@@ -1,10 +1,22 @@
 #pragma once
-// The known systems the C++ tests, the soak test and the model tool identify. No test framework
-// here, so that programs outside Catch2 can use them.
+// The known systems the C++ tests, the soak test and the model tool identify: one per model of
+// bonl::Models, read from tests/data/known_systems.json, the file the Python tests read too. No test
+// framework here, so that programs outside Catch2 can use them.
 
 #include <bonl/bonl.hpp>
+#include <bonl/io.hpp>
 
+#include <nlohmann/json.hpp>
+
+#include <fstream>
 #include <initializer_list>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#ifndef BONL_TEST_DATA_DIR
+#error "BONL_TEST_DATA_DIR must name tests/data (tests/CMakeLists.txt defines it)"
+#endif
 
 namespace bonl_test {
 
@@ -15,42 +27,40 @@ inline Eigen::VectorXd vec(std::initializer_list<double> values) {
   return v;
 }
 
-// The known systems, at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3). The linear block
-// has poles 0.7 and 0.5 +- 0.3i (a damped, slow response like a hydraulic drive sampled fast); the
-// input block is asymmetric (different slopes and curvature for u < 0), with small offsets; the
-// output polynomial is monotone; the backlash half-width is about 10% of the output's spread.
+/// The paper_orders set is at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3), so the fixed-order
+/// Paper* types read it; the small set (na = 2, nb = 1, nk = 2, r = 2) is for the bad-input tests.
 inline constexpr Eigen::Index kNk = 8;
 
-template <class Model>
-void set_known_front(Model& model) {
-  model.set_f(vec({0.002, 0.06, 0.02, -0.01}));
-  model.set_p(vec({-0.003, -0.02, -0.03, 0.015}));
-  model.set_b(vec({1.0, 0.5, 0.2}));
-  model.set_a(vec({-1.7, 1.04, -0.238}));
+inline const nlohmann::json& known_systems_file() {
+  static const nlohmann::json file = [] {
+    const std::string path = std::string(BONL_TEST_DATA_DIR) + "/known_systems.json";
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot read " + path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return nlohmann::json::parse(text.str());
+  }();
+  return file;
 }
 
-inline bonl::PaperARX known_arx() {
-  bonl::PaperARX model(3, 2, kNk);
-  model.set_b(vec({0.05, 0.03, 0.02}));
-  model.set_a(vec({-1.7, 1.04, -0.238}));
-  return model;
+/// The known system of Model's kind from `set` ("paper_orders" or "small"), as a Model.
+template <class Model>
+Model known_system(const char* set = "paper_orders") {
+  return bonl::io::model_from_json<Model>(known_systems_file().at(set).at(Model::kName).dump());
 }
-inline bonl::PaperHammerstein known_hammerstein() {
-  bonl::PaperHammerstein model(3, 2, kNk, 3);
-  set_known_front(model);
-  return model;
+
+/// Models with a backlash: a parameter block called c.
+template <class Model>
+constexpr bool has_backlash() {
+  for (const auto& block : Model::kDescription.parameters) {
+    if (block.name[0] == 'c' && block.name[1] == '\0') return true;
+  }
+  return false;
 }
-inline bonl::PaperHammersteinWiener known_hammerstein_wiener() {
-  bonl::PaperHammersteinWiener model(3, 2, kNk, 3, 3);
-  set_known_front(model);
-  model.set_q(vec({1.0, 0.2, 0.05}));
-  return model;
-}
-inline bonl::PaperPseudoHammersteinWiener known_phw() {
-  bonl::PaperPseudoHammersteinWiener model(3, 2, kNk, 3);
-  set_known_front(model);
-  model.set_c(0.1);
-  return model;
-}
+
+inline bonl::PaperARX known_arx() { return known_system<bonl::PaperARX>(); }
+inline bonl::PaperHammerstein known_hammerstein() { return known_system<bonl::PaperHammerstein>(); }
+inline bonl::PaperHammersteinWiener known_hammerstein_wiener() { return known_system<bonl::PaperHammersteinWiener>(); }
+inline bonl::PaperPseudoHammersteinWiener known_phw() { return known_system<bonl::PaperPseudoHammersteinWiener>(); }
 
 }  // namespace bonl_test

@@ -1,26 +1,21 @@
-"""Shared fixtures: the known systems of the C++ tests (tests/cpp/test_support.hpp), fixed seeds."""
+"""Shared fixtures: the known systems (tests/data/known_systems.json, as the C++ tests), fixed seeds."""
+
+import json
+import pathlib
 
 import numpy as np
 import pytest
 
 import bonl
 
-FRONT = dict(
-    f=[0.002, 0.06, 0.02, -0.01],
-    p=[-0.003, -0.02, -0.03, 0.015],
-    b=[1.0, 0.5, 0.2],
-    a=[-1.7, 1.04, -0.238],
-)
+KNOWN_SYSTEMS = pathlib.Path(__file__).resolve().parents[1] / "data" / "known_systems.json"
 
 
-def known_models():
-    """The four known systems at the paper's orders (na=3, nb=2, nk=8, r=r1=3)."""
-    return {
-        "ARX": bonl.ARX(3, 2, 8, b=[0.05, 0.03, 0.02], a=FRONT["a"]),
-        "Hammerstein": bonl.Hammerstein(3, 2, 8, 3, **FRONT),
-        "HammersteinWiener": bonl.HammersteinWiener(3, 2, 8, 3, 3, q=[1.0, 0.2, 0.05], **FRONT),
-        "PseudoHammersteinWiener": bonl.PseudoHammersteinWiener(3, 2, 8, 3, c=0.1, **FRONT),
-    }
+def known_models(set_name="paper_orders"):
+    """The known systems of tests/data/known_systems.json (shared with the C++ tests), one per model of
+    bonl.MODELS: 'paper_orders' (na=3, nb=2, nk=8, r=r1=3) or 'small' (na=2, nb=1, nk=2, r=2, r1=3)."""
+    systems = json.loads(KNOWN_SYSTEMS.read_text())[set_name]
+    return {name: bonl.load_model(json.dumps(document)) for name, document in systems.items()}
 
 
 def random_levels(n, hold, amplitude, seed):

@@ -5,17 +5,35 @@
 // sensitivities for the output-error method. Users never name this header.
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
+#include <cstddef>
 
 #include "../blocks/linear_block.hpp"
 #include "../blocks/two_segment_polynomial.hpp"
 #include "../estimator/method.hpp"
+#include "../models/model_description.hpp"
 #include "history.hpp"
 #include "simulated_lags.hpp"
 #include "stability.hpp"
 #include "validate.hpp"
 
 namespace bonl::detail {
+
+/// The front's orders and parameter blocks, as the block models describe them.
+template <int Na, int Nb, int R>
+constexpr std::array<OrderDescription, 4> front_orders() {
+  return {{{"na", 1, kMaxOrder, Na, "poles of the linear block (na >= 1)"},
+           {"nb", 0, kMaxOrder, Nb, "B has nb + 1 coefficients b_0..b_nb, b_0 = 1"},
+           {"nk", 0, kMaxOrder, Eigen::Dynamic, "pure delay in samples"},
+           {"r", 1, kMaxOrder, R, "degree of the input polynomials (r >= 1)"}}};
+}
+inline constexpr const char* kFrontNormalisation = "block models are normalised so that b_0 = 1";
+inline constexpr std::array<ParameterDescription, 4> kFrontParameters{
+    {{"b", ParameterShape::Vector, "b_0..b_nb with b_0 = 1", kFrontNormalisation, false},
+     {"a", ParameterShape::Vector, "a_1..a_na", nullptr, false},
+     {"f", ParameterShape::Vector, "f_0..f_r, the input polynomial for u >= 0", nullptr, false},
+     {"p", ParameterShape::Vector, "p_0..p_r, its change for u < 0 (p_l = g_l - f_l)", nullptr, false}}};
 
 /// Parameter count of the front: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na.
 constexpr int front_params(int na, int nb, int r) {
@@ -79,6 +97,25 @@ class HammersteinFront {
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     assign_checked(m_theta.segment(2 * (m_r + 1) + m_nb, m_na), a, "a");
+  }
+
+  /// The front's parameter blocks in the order the block models describe them: b, a, f, p.
+  static constexpr std::size_t kFrontBlocks = 4;
+  VectorX front_parameter(std::size_t i) const {
+    switch (i) {
+      case 0: return b();
+      case 1: return a();
+      case 2: return f();
+      default: return p();
+    }
+  }
+  void set_front_parameter(std::size_t i, const VectorX& value) {
+    switch (i) {
+      case 0: return set_b(value);
+      case 1: return set_a(value);
+      case 2: return set_f(value);
+      default: return set_p(value);
+    }
   }
 
   InputBlock input_block() const { return InputBlock(f(), p()); }

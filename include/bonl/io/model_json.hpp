@@ -4,11 +4,14 @@
 //
 // Format, version 1 (keys written in this order; readers are strict: no missing or unknown keys):
 //   {"format": "bonl-model", "version": 1,
-//    "model": "ARX" | "Hammerstein" | "HammersteinWiener" | "PseudoHammersteinWiener",
-//    "orders": {"na": .., "nb": .., "nk": .., "r": .. (block models), "r1": .. (H-W only)},
-//    "params": {"b": [b_0..b_nb], "a": [a_1..a_na], "f": [f_0..f_r], "p": [p_0..p_r] (block models),
-//               "q": [q_1..q_r1] (H-W), "c": number (P-H-W)}}
-// Parameters follow README.md's conventions: b_0 = 1 for the block models, q_1 = 1 for H-W, c >= 0.
+//    "model": the model's name (kDescription.name: "ARX", "Hammerstein", ...),
+//    "orders": {one integer per order of kDescription.orders: "na": .., "nb": .., ...},
+//    "params": {one entry per block of kDescription.parameters: an array ("b": [b_0..b_nb], ...), or a
+//               number for a one-number block ("c")}}
+// Everything model-specific comes from the model's description (models/model_description.hpp): the
+// keys, their order, the ranges of the orders, which first entries are fixed to 1 (b_0 of the block
+// models, q_1), which values must be >= 0 (c). Version 1 files written before the descriptions existed
+// have the same keys in the same order.
 // Numbers are written so that they read back bit for bit (nlohmann_json prints the shortest decimal
 // that round-trips a double).
 //
@@ -16,9 +19,12 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -39,66 +45,9 @@ inline constexpr int kModelFormatVersion = 1;
 inline constexpr std::int64_t kMaxModelOrder = bonl::detail::kMaxOrder;
 
 /// Any model a file can hold, at run-time orders (what load_model returns).
-using AnyModel = std::variant<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd>;
+using AnyModel = ApplyModels<Models, std::variant>::type;
 
 namespace detail {
-
-enum class ModelKind { ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener };
-
-/// Which of the four model templates a type is, its name in the file, and its compile-time orders.
-template <class Model>
-struct ModelTraits {
-  static constexpr bool kSupported = false;
-};
-template <typename Scalar, int Na, int Nb>
-struct ModelTraits<ARX<Scalar, Na, Nb>> {
-  static constexpr bool kSupported = true;
-  static constexpr ModelKind kKind = ModelKind::ARX;
-  static constexpr const char* kFormatName = "ARX";
-  static constexpr int kNa = Na, kNb = Nb, kR = Eigen::Dynamic, kR1 = Eigen::Dynamic;
-};
-template <typename Scalar, int Na, int Nb, int R>
-struct ModelTraits<Hammerstein<Scalar, Na, Nb, R>> {
-  static constexpr bool kSupported = true;
-  static constexpr ModelKind kKind = ModelKind::Hammerstein;
-  static constexpr const char* kFormatName = "Hammerstein";
-  static constexpr int kNa = Na, kNb = Nb, kR = R, kR1 = Eigen::Dynamic;
-};
-template <typename Scalar, int Na, int Nb, int R, int R1>
-struct ModelTraits<HammersteinWiener<Scalar, Na, Nb, R, R1>> {
-  static constexpr bool kSupported = true;
-  static constexpr ModelKind kKind = ModelKind::HammersteinWiener;
-  static constexpr const char* kFormatName = "HammersteinWiener";
-  static constexpr int kNa = Na, kNb = Nb, kR = R, kR1 = R1;
-};
-template <typename Scalar, int Na, int Nb, int R>
-struct ModelTraits<PseudoHammersteinWiener<Scalar, Na, Nb, R>> {
-  static constexpr bool kSupported = true;
-  static constexpr ModelKind kKind = ModelKind::PseudoHammersteinWiener;
-  static constexpr const char* kFormatName = "PseudoHammersteinWiener";
-  static constexpr int kNa = Na, kNb = Nb, kR = R, kR1 = Eigen::Dynamic;
-};
-
-/// The file's name of a model is its kName without the hyphens ("Hammerstein-Wiener" ->
-/// "HammersteinWiener"); checked at compile time so that the two cannot drift apart.
-constexpr bool same_without_hyphens(const char* name, const char* format_name) {
-  while (true) {
-    while (*name == '-') ++name;
-    if (*name != *format_name) return false;
-    if (*name == '\0') return true;
-    ++name;
-    ++format_name;
-  }
-}
-
-template <class Model>
-constexpr void check_model_type() {
-  static_assert(ModelTraits<Model>::kSupported,
-                "bonl::io reads and writes bonl::ARX, Hammerstein, HammersteinWiener and "
-                "PseudoHammersteinWiener (any Scalar, fixed or Eigen::Dynamic orders) only");
-  static_assert(same_without_hyphens(Model::kName, ModelTraits<Model>::kFormatName),
-                "bonl::io: the model file name must be the model's kName without hyphens");
-}
 
 inline constexpr const char* kPrefix = "bonl: model JSON: ";
 
@@ -192,7 +141,8 @@ inline Json parse(const std::string& text) {
 }
 
 /// Fails on a key that is missing from, or not allowed in, the object at `where` ("" = top level).
-inline void require_keys(const Json& object, const std::string& where, std::initializer_list<const char*> allowed) {
+template <class Keys>
+void require_keys(const Json& object, const std::string& where, const Keys& allowed) {
   const std::string path = where.empty() ? "" : where + ".";
   std::string listed;
   for (const char* key : allowed) listed += (listed.empty() ? "" : ", ") + std::string(key);
@@ -208,10 +158,22 @@ inline void require_keys(const Json& object, const std::string& where, std::init
     }
   }
 }
+inline void require_keys(const Json& object, const std::string& where, std::initializer_list<const char*> allowed) {
+  require_keys<std::initializer_list<const char*>>(object, where, allowed);
+}
+
+/// The names of every model a file can hold, for messages: "\"ARX\", \"Hammerstein\", ...".
+inline std::string model_names() {
+  std::string names;
+  for_each_model(Models{}, [&names](auto tag) {
+    names += (names.empty() ? "\"" : ", \"") + std::string(decltype(tag)::type::kName) + "\"";
+  });
+  return names;
+}
 
 /// Checks everything before "orders" and "params": a JSON object, format, version, the top-level
-/// keys and the model name. Returns the model's kind.
-inline ModelKind read_header(const Json& document) {
+/// keys and that the model name is one of bonl::Models. Returns the name.
+inline std::string read_header(const Json& document) {
   if (!document.is_object()) fail(std::string("the document must be a JSON object, got ") + document.type_name());
   if (!document.contains("format")) fail("missing key format");
   const Json& format = document["format"];
@@ -232,15 +194,14 @@ inline ModelKind read_header(const Json& document) {
   }
   require_keys(document, "", {"format", "version", "model", "orders", "params"});
   const Json& model = document["model"];
+  bool known = false;
   if (model.is_string()) {
-    const std::string& name = model.get_ref<const std::string&>();
-    if (name == "ARX") return ModelKind::ARX;
-    if (name == "Hammerstein") return ModelKind::Hammerstein;
-    if (name == "HammersteinWiener") return ModelKind::HammersteinWiener;
-    if (name == "PseudoHammersteinWiener") return ModelKind::PseudoHammersteinWiener;
+    for_each_model(Models{}, [&](auto tag) {
+      known = known || model.get_ref<const std::string&>() == decltype(tag)::type::kName;
+    });
   }
-  fail("model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", \"PseudoHammersteinWiener\", got " +
-       show(model));
+  if (!known) fail("model must be one of " + model_names() + ", got " + show(model));
+  return model.get<std::string>();
 }
 
 /// orders.<name>: an integer in [minimum, maximum] that matches the compile-time order when fixed.
@@ -309,83 +270,57 @@ Json to_array(const Vector& v) {
   return array;
 }
 
+/// The names of a description's orders or parameter blocks, in order.
+template <class Entry, std::size_t N>
+std::array<const char*, N> names_of(const std::array<Entry, N>& entries) {
+  std::array<const char*, N> names{};
+  for (std::size_t i = 0; i < N; ++i) names[i] = entries[i].name;
+  return names;
+}
+
 /// Reads a parsed document into Model; read_header has not been run on it yet.
 template <class Model>
 Model model_from_document(const Json& document) {
-  using Traits = ModelTraits<Model>;
   using Scalar = typename Model::Scalar;
-  constexpr ModelKind kind = Traits::kKind;
-  constexpr bool block = kind != ModelKind::ARX;
-  constexpr bool hw = kind == ModelKind::HammersteinWiener;
-  constexpr bool phw = kind == ModelKind::PseudoHammersteinWiener;
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  constexpr auto& description = Model::kDescription;
 
-  if (read_header(document) != kind) {
-    fail("model is " + show(document["model"]) + ", but the model type asked for is \"" + Traits::kFormatName + "\"");
+  if (read_header(document) != description.name) {
+    fail("model is " + show(document["model"]) + ", but the model type asked for is \"" + description.name + "\"");
   }
 
   const Json& orders = document["orders"];
   if (!orders.is_object()) fail("orders must be an object, got " + show(orders));
-  if constexpr (hw) {
-    require_keys(orders, "orders", {"na", "nb", "nk", "r", "r1"});
-  } else if constexpr (block) {
-    require_keys(orders, "orders", {"na", "nb", "nk", "r"});
-  } else {
-    require_keys(orders, "orders", {"na", "nb", "nk"});
+  require_keys(orders, "orders", names_of(description.orders));
+  std::array<Eigen::Index, description.orders.size()> order_values{};
+  for (std::size_t i = 0; i < order_values.size(); ++i) {
+    const OrderDescription& order = description.orders[i];
+    order_values[i] = read_order(orders, order.name, order.minimum, order.maximum, order.fixed);
   }
-  const Eigen::Index na = read_order(orders, "na", 1, kMaxModelOrder, Traits::kNa);
-  const Eigen::Index nb = read_order(orders, "nb", 0, kMaxModelOrder, Traits::kNb);
-  const Eigen::Index nk = read_order(orders, "nk", 0, kMaxModelOrder, Eigen::Dynamic);
-  [[maybe_unused]] const Eigen::Index r = block ? read_order(orders, "r", 1, kMaxModelOrder, Traits::kR) : 0;
-  [[maybe_unused]] const Eigen::Index r1 = hw ? read_order(orders, "r1", 2, 32, Traits::kR1) : 0;
 
   const Json& params = document["params"];
   if (!params.is_object()) fail("params must be an object, got " + show(params));
-  if constexpr (hw) {
-    require_keys(params, "params", {"b", "a", "f", "p", "q"});
-  } else if constexpr (phw) {
-    require_keys(params, "params", {"b", "a", "f", "p", "c"});
-  } else if constexpr (block) {
-    require_keys(params, "params", {"b", "a", "f", "p"});
-  } else {
-    require_keys(params, "params", {"b", "a"});
-  }
-  const auto b = read_vector<Scalar>(params, "b", nb + 1);
-  const auto a = read_vector<Scalar>(params, "a", na);
-  if constexpr (block) require_leading_one(b, "params.b", "block models are normalised so that b_0 = 1");
+  require_keys(params, "params", names_of(description.parameters));
 
   return rethrow_as_json_error([&]() {
-    if constexpr (!block) {
-      Model model(na, nb, nk);
-      model.set_b(b);
-      model.set_a(a);
-      return model;
-    } else {
-      const auto f = read_vector<Scalar>(params, "f", r + 1);
-      const auto p = read_vector<Scalar>(params, "p", r + 1);
-      auto make = [&]() {
-        if constexpr (hw) {
-          return Model(na, nb, nk, r, r1);
-        } else {
-          return Model(na, nb, nk, r);
-        }
-      };
-      Model model = make();
-      model.set_f(f);
-      model.set_p(p);
-      model.set_b(b);
-      model.set_a(a);
-      if constexpr (hw) {
-        const auto q = read_vector<Scalar>(params, "q", r1);
-        require_leading_one(q, "params.q", "the H-W model is normalised so that q_1 = 1");
-        model.set_q(q);
+    Model model = make_model<Model>(order_values);
+    for (std::size_t i = 0; i < description.parameters.size(); ++i) {
+      const ParameterDescription& parameter = description.parameters[i];
+      const std::string key = std::string("params.") + parameter.name;
+      Vector value;
+      if (parameter.shape == ParameterShape::Number) {
+        value = Vector::Constant(1, static_cast<Scalar>(read_number<Scalar>(params[parameter.name], key)));
+      } else {
+        value = read_vector<Scalar>(params, parameter.name, model.parameter(i).size());
       }
-      if constexpr (phw) {
-        const double value = read_number<Scalar>(params["c"], "params.c");
-        if (!(value >= 0)) fail("params.c (backlash half-width) must be >= 0, got " + show_number(value));
-        model.set_c(static_cast<Scalar>(value));
+      if (parameter.normalised != nullptr) require_leading_one(value, key.c_str(), parameter.normalised);
+      if (parameter.non_negative && !(value.minCoeff() >= 0)) {
+        fail(key + " (" + parameter.meaning + ") must be >= 0, got " +
+             show_number(static_cast<double>(value.minCoeff())));
       }
-      return model;
+      model.set_parameter(i, value);
     }
+    return model;
   });
 }
 
@@ -402,39 +337,32 @@ auto guard(F&& f) -> decltype(f()) {
 }  // namespace detail
 
 /// The model as a bonl model file (format version 1). indent < 0: one line; otherwise pretty-printed
-/// with that many spaces per level. Works for all four models, any Scalar, fixed or dynamic orders.
+/// with that many spaces per level. Works for every model of bonl::Models, any Scalar, fixed or
+/// dynamic orders.
 template <class Model>
 std::string to_json(const Model& model, int indent = -1) {
-  detail::check_model_type<Model>();
-  using Traits = detail::ModelTraits<Model>;
   using detail::Json;
-  constexpr detail::ModelKind kind = Traits::kKind;
-  constexpr bool block = kind != detail::ModelKind::ARX;
-
+  constexpr auto& description = Model::kDescription;
   return detail::guard([&]() {
     Json orders = Json::object();
-    orders["na"] = static_cast<std::int64_t>(model.na());
-    orders["nb"] = static_cast<std::int64_t>(model.nb());
-    orders["nk"] = static_cast<std::int64_t>(model.nk());
+    const auto order_values = model.orders();
+    for (std::size_t i = 0; i < description.orders.size(); ++i) {
+      orders[description.orders[i].name] = static_cast<std::int64_t>(order_values[i]);
+    }
     Json params = Json::object();
-    params["b"] = detail::to_array(model.b());
-    params["a"] = detail::to_array(model.a());
-    if constexpr (block) {
-      orders["r"] = static_cast<std::int64_t>(model.r());
-      params["f"] = detail::to_array(model.f());
-      params["p"] = detail::to_array(model.p());
-    }
-    if constexpr (kind == detail::ModelKind::HammersteinWiener) {
-      orders["r1"] = static_cast<std::int64_t>(model.r1());
-      params["q"] = detail::to_array(model.q());
-    }
-    if constexpr (kind == detail::ModelKind::PseudoHammersteinWiener) {
-      params["c"] = static_cast<double>(model.c());
+    for (std::size_t i = 0; i < description.parameters.size(); ++i) {
+      const ParameterDescription& parameter = description.parameters[i];
+      const auto value = model.parameter(i);
+      if (parameter.shape == ParameterShape::Number) {
+        params[parameter.name] = static_cast<double>(value[0]);
+      } else {
+        params[parameter.name] = detail::to_array(value);
+      }
     }
     Json document = Json::object();
     document["format"] = "bonl-model";
     document["version"] = kModelFormatVersion;
-    document["model"] = Traits::kFormatName;
+    document["model"] = description.name;
     document["orders"] = std::move(orders);
     document["params"] = std::move(params);
     return document.dump(indent);
@@ -448,7 +376,6 @@ std::string to_json(const Model& model, int indent = -1) {
 /// type's compile-time orders, arrays of the wrong length, non-finite numbers, b_0 or q_1 not 1, c < 0.
 template <class Model>
 Model model_from_json(const std::string& text) {
-  detail::check_model_type<Model>();
   return detail::guard([&]() { return detail::model_from_document<Model>(detail::parse(text)); });
 }
 
@@ -457,17 +384,13 @@ Model model_from_json(const std::string& text) {
 inline AnyModel load_model(const std::string& text) {
   return detail::guard([&]() -> AnyModel {
     const detail::Json document = detail::parse(text);
-    switch (detail::read_header(document)) {
-      case detail::ModelKind::ARX:
-        return detail::model_from_document<ARXd>(document);
-      case detail::ModelKind::Hammerstein:
-        return detail::model_from_document<Hammersteind>(document);
-      case detail::ModelKind::HammersteinWiener:
-        return detail::model_from_document<HammersteinWienerd>(document);
-      case detail::ModelKind::PseudoHammersteinWiener:
-        return detail::model_from_document<PseudoHammersteinWienerd>(document);
-    }
-    detail::fail("unreachable model kind");
+    const std::string name = detail::read_header(document);
+    std::optional<AnyModel> model;
+    for_each_model(Models{}, [&](auto tag) {
+      using Model = typename decltype(tag)::type;
+      if (!model && name == Model::kName) model.emplace(detail::model_from_document<Model>(document));
+    });
+    return std::move(*model);  // read_header checked that the name is one of Models
   });
 }
 

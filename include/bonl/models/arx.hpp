@@ -13,6 +13,7 @@
 #include "../detail/stability.hpp"
 #include "../detail/validate.hpp"
 #include "../estimator/method.hpp"
+#include "model_description.hpp"
 
 namespace bonl {
 
@@ -24,6 +25,14 @@ class ARX {
   /// ARX has no unmeasured internal variable: its regressor is made of measured data only.
   static constexpr bool kHasInternalVariables = false;
   static constexpr const char* kName = "ARX";
+  static constexpr ModelDescription<3, 2> kDescription{
+      kName,
+      "ARX model y(k) = -sum a_j y(k-j) + sum_{i=0..nb} b_i u(k-nk-i).",
+      {{{"na", 1, detail::kMaxOrder, Na_, "poles of the linear block (na >= 1)"},
+        {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
+        {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"}}},
+      {{{"b", ParameterShape::Vector, "b_0..b_nb (b_0 is free for ARX)", nullptr, false},
+        {"a", ParameterShape::Vector, "a_1..a_na", nullptr, false}}}};
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
@@ -42,10 +51,23 @@ class ARX {
   Eigen::Index nk() const noexcept { return m_nk; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
 
+  std::array<Eigen::Index, 3> orders() const noexcept { return {m_na, m_nb, m_nk}; }
+
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
     detail::assign_checked(m_theta, theta, "theta");
+  }
+  /// The parameter block kDescription.parameters[i]: b, a.
+  VectorX parameter(std::size_t i) const {
+    if (i == 0) return b();
+    if (i == 1) return a();
+    detail::no_such_parameter(kName, i);
+  }
+  void set_parameter(std::size_t i, const VectorX& value) {
+    if (i == 0) return set_b(value);
+    if (i == 1) return set_a(value);
+    detail::no_such_parameter(kName, i);
   }
   VectorX b() const { return m_theta.head(m_nb + 1); }
   VectorX a() const { return m_theta.tail(m_na); }

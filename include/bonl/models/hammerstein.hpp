@@ -16,8 +16,25 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0> {
   using typename Front::Scalar;
   using typename Front::VectorX;
   static constexpr const char* kName = "Hammerstein";
+  static constexpr ModelDescription<4, 4> kDescription{
+      kName,
+      "Hammerstein model: two-segment input polynomial, then the linear block (b_0 = 1). "
+      "w = sum_l f_l u^l + h(u) sum_l p_l u^l (h(u) = 1 for u < 0), "
+      "x(k) = -sum a_j x(k-j) + sum b_i w(k-nk-i), y = x.",
+      detail::front_orders<Na_, Nb_, R_>(), detail::kFrontParameters};
 
   Hammerstein(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r) : Front(na, nb, nk, r, 0) {}
+
+  std::array<Eigen::Index, 4> orders() const noexcept { return {this->na(), this->nb(), this->nk(), this->r()}; }
+  /// The parameter block kDescription.parameters[i]: b, a, f, p.
+  VectorX parameter(std::size_t i) const {
+    if (i >= 4) detail::no_such_parameter(kName, i);
+    return this->front_parameter(i);
+  }
+  void set_parameter(std::size_t i, const VectorX& value) {
+    if (i >= 4) detail::no_such_parameter(kName, i);
+    this->set_front_parameter(i, value);
+  }
 
   /// Free-run simulation from rest. Throws NumericalError if the output leaves the finite numbers.
   template <typename U>

@@ -8,6 +8,7 @@
 #include "../blocks/output_polynomial.hpp"
 #include "../detail/hammerstein_front.hpp"
 #include "../detail/model_runs.hpp"
+#include "../detail/output_polynomial_terms.hpp"
 
 namespace bonl {
 
@@ -21,12 +22,34 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
   using typename Front::Scalar;
   using typename Front::VectorX;
   using OutputBlock = OutputPolynomial<Scalar, R1_>;
-  static constexpr const char* kName = "Hammerstein-Wiener";
+  static constexpr const char* kName = "HammersteinWiener";
+  static constexpr ModelDescription<5, 5> kDescription{
+      kName,
+      "Hammerstein-Wiener model: the Hammerstein model followed by y = sum_{m=1..r1} q_m x^m (q_1 = 1).",
+      detail::concat(detail::front_orders<Na_, Nb_, R_>(),
+                     std::array<OrderDescription, 1>{{{"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}}}),
+      detail::concat(detail::kFrontParameters,
+                     std::array<ParameterDescription, 1>{{{"q", ParameterShape::Vector, "q_1..q_r1 with q_1 = 1",
+                                                           "the H-W model is normalised so that q_1 = 1", false}}})};
 
   HammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index r1)
       : Front(na, nb, nk, r, checked_r1(r1) - 1), m_r1(r1) {}
 
   Eigen::Index r1() const noexcept { return m_r1; }
+  std::array<Eigen::Index, 5> orders() const noexcept {
+    return {this->na(), this->nb(), this->nk(), this->r(), m_r1};
+  }
+  /// The parameter block kDescription.parameters[i]: b, a, f, p, q.
+  VectorX parameter(std::size_t i) const {
+    if (i < Front::kFrontBlocks) return this->front_parameter(i);
+    if (i == Front::kFrontBlocks) return q();
+    detail::no_such_parameter(kName, i);
+  }
+  void set_parameter(std::size_t i, const VectorX& value) {
+    if (i < Front::kFrontBlocks) return this->set_front_parameter(i, value);
+    if (i == Front::kFrontBlocks) return set_q(value);
+    detail::no_such_parameter(kName, i);
+  }
 
   /// q_1..q_r1 with q_1 = 1.
   VectorX q() const {
@@ -72,52 +95,31 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
   class KeyTerms {
    public:
     explicit KeyTerms(const HammersteinWiener& model)
-        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_r1(model.r1()), m_n(model.num_params()) {}
+        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_output(model.r1(), model.num_params()) {}
     void reset() noexcept { m_front.reset(); }
     template <typename Phi>
     Scalar begin(const Params& theta, Scalar u, Method method, Phi& phi) noexcept {
       return m_front.begin(theta, u, method, phi);
     }
-    Scalar predicted_output(const Params& theta, Scalar x) const noexcept {
-      Scalar y = x;
-      Scalar power = x;
-      for (Eigen::Index m = 2; m <= m_r1; ++m) {
-        power *= x;
-        y += theta[m_n - m_r1 + m - 1] * power;
-      }
-      return y;
-    }
+    Scalar predicted_output(const Params& theta, Scalar x) const noexcept { return m_output.output(theta, x); }
     template <typename Phi>
     bool regress(const Params& /*theta*/, Scalar x, Scalar y, Method /*method*/, Phi& phi, Scalar& target) noexcept {
-      Scalar power = x;
-      for (Eigen::Index m = 2; m <= m_r1; ++m) {
-        power *= x;
-        phi[m_n - m_r1 + m - 1] = power;
-      }
+      m_output.regress(x, phi);
       target = y;
       return true;
     }
     template <typename Phi>
     void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
       const Scalar x_model = m_front.internal(theta, phi, method);
-      Scalar x_lag = x_model;
-      if (method == Method::EquationError) {
-        // q_1 = 1 sits outside theta: invert x + sum_{m>=2} q_m x^m = y.
-        Scalar q_buffer[32];
-        const Eigen::Index r1 = std::min<Eigen::Index>(m_r1, 32);
-        q_buffer[0] = Scalar(1);
-        for (Eigen::Index m = 2; m <= r1; ++m) q_buffer[m - 1] = theta[m_n - m_r1 + m - 1];
-        Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>> q(q_buffer, r1);
-        OutputBlock::invert(q, y, x_model, x_lag);
-      }
+      // Equation error: the x the measured y says (q inverted); paper: the model's own.
+      const Scalar x_lag = method == Method::EquationError ? m_output.invert(theta, y, x_model) : x_model;
       m_front.end(theta, u, x_lag, method);
     }
     void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
     detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
-    Eigen::Index m_r1;
-    Eigen::Index m_n;
+    detail::OutputPolynomialTerms<Scalar> m_output;
   };
 
   /// The output-error method's view (Method::OutputError): the front's free run with its
@@ -126,21 +128,13 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
   class OutputErrorTerms {
    public:
     explicit OutputErrorTerms(const HammersteinWiener& model)
-        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_r1(model.r1()), m_n(model.num_params()) {}
+        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_output(model.r1(), model.num_params()),
+          m_r1(model.r1()), m_n(model.num_params()) {}
     void reset() noexcept { m_front.reset(); }
     template <typename Psi>
     Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
-      const Scalar x = m_front.step(theta, u);
-      Scalar y = x;
-      Scalar slope = Scalar(1);
-      Scalar power = x;  // x^(m-1), then x^m
-      for (Eigen::Index m = 2; m <= m_r1; ++m) {
-        const Eigen::Index index = m_n - m_r1 + m - 1;
-        slope += Scalar(m) * theta[index] * power;
-        power *= x;
-        y += theta[index] * power;
-        psi[index] = power;
-      }
+      Scalar slope;
+      const Scalar y = m_output.output_and_sensitivity(theta, m_front.step(theta, u), psi, slope);
       psi.head(m_n - m_r1 + 1) = slope * m_front.sensitivity();
       return y;
     }
@@ -155,6 +149,7 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
 
    private:
     detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;
+    detail::OutputPolynomialTerms<Scalar> m_output;
     Eigen::Index m_r1;
     Eigen::Index m_n;
   };

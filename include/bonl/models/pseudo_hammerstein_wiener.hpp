@@ -21,9 +21,33 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   using typename Front::Params;
   using typename Front::Scalar;
   using typename Front::VectorX;
-  static constexpr const char* kName = "Pseudo-Hammerstein-Wiener";
+  static constexpr const char* kName = "PseudoHammersteinWiener";
+  static constexpr ModelDescription<4, 5> kDescription{
+      kName,
+      "Pseudo-Hammerstein-Wiener model: the Hammerstein model followed by a symmetric, unit-slope "
+      "backlash of half-width c. y(k) = x(k) - c if x(k) > y(k-1) + c; x(k) + c if x(k) < y(k-1) - c; "
+      "else y(k-1).",
+      detail::front_orders<Na_, Nb_, R_>(),
+      detail::concat(detail::kFrontParameters, std::array<ParameterDescription, 1>{
+                                                   {{"c", ParameterShape::Number, "backlash half-width", nullptr, true}}})};
 
   PseudoHammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r) : Front(na, nb, nk, r, 1) {}
+
+  std::array<Eigen::Index, 4> orders() const noexcept { return {this->na(), this->nb(), this->nk(), this->r()}; }
+  /// The parameter block kDescription.parameters[i]: b, a, f, p, c (one entry).
+  VectorX parameter(std::size_t i) const {
+    if (i < Front::kFrontBlocks) return this->front_parameter(i);
+    if (i == Front::kFrontBlocks) return VectorX::Constant(1, c());
+    detail::no_such_parameter(kName, i);
+  }
+  void set_parameter(std::size_t i, const VectorX& value) {
+    if (i < Front::kFrontBlocks) return this->set_front_parameter(i, value);
+    if (i == Front::kFrontBlocks) {
+      detail::require_size(value, 1, "c");
+      return set_c(value[0]);
+    }
+    detail::no_such_parameter(kName, i);
+  }
 
   /// Backlash half-width c (the model is valid for c >= 0).
   Scalar c() const noexcept { return this->m_theta[this->num_params() - 1]; }

@@ -7,7 +7,7 @@ import numpy.typing
 import typing
 from . import metrics
 from . import plant
-__all__: list[str] = ['ARX', 'Estimator', 'EstimatorHealth', 'Hammerstein', 'HammersteinWiener', 'NumericalError', 'PseudoHammersteinWiener', 'UpdateStatus', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'UpdateStatus', 'Wiener', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     pass
 class ARX:
@@ -16,8 +16,12 @@ class ARX:
     
     Parameters
     ----------
-    na, nb, nk : int
-        Orders: na >= 1 poles, nb >= 0 (b has nb + 1 entries), delay nk >= 0.
+    na : int
+        poles of the linear block (na >= 1).
+    nb : int
+        B has nb + 1 coefficients b_0..b_nb.
+    nk : int
+        pure delay in samples.
     b : array_like, optional
         b_0..b_nb (b_0 is free for ARX).
     a : array_like, optional
@@ -79,9 +83,25 @@ class ARX:
         str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
         """
     @property
+    def a(self) -> typing.Any:
+        """
+        numpy.ndarray: a_1..a_na.
+        """
+    @a.setter
+    def a(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def b(self) -> typing.Any:
+        """
+        numpy.ndarray: b_0..b_nb (b_0 is free for ARX).
+        """
+    @b.setter
+    def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
     def na(self) -> int:
         """
-        int: poles of the linear block.
+        int: poles of the linear block (na >= 1).
         """
     @property
     def nb(self) -> int:
@@ -101,7 +121,7 @@ class ARX:
     @property
     def params(self) -> dict:
         """
-        dict: {'b': b_0..b_nb, 'a': a_1..a_na} as numpy arrays.
+        dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
     @property
     def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
@@ -113,20 +133,26 @@ class ARX:
         ...
 class Hammerstein:
     """
-    Hammerstein model: two-segment input polynomial, then the linear block (b_0 = 1).
-    
-    w = sum_l f_l u^l + h(u) sum_l p_l u^l (h(u) = 1 for u < 0), x(k) = -sum a_j x(k-j) + sum b_i w(k-nk-i), y = x.
+    Hammerstein model: two-segment input polynomial, then the linear block (b_0 = 1). w = sum_l f_l u^l + h(u) sum_l p_l u^l (h(u) = 1 for u < 0), x(k) = -sum a_j x(k-j) + sum b_i w(k-nk-i), y = x.
     
     Parameters
     ----------
-    na, nb, nk, r : int
-        Orders; r >= 1 is the polynomials' degree.
-    f, p : array_like, optional
-        f_0..f_r and p_0..p_r (p_l = g_l - f_l, the change for u < 0).
+    na : int
+        poles of the linear block (na >= 1).
+    nb : int
+        B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
+    nk : int
+        pure delay in samples.
+    r : int
+        degree of the input polynomials (r >= 1).
     b : array_like, optional
         b_0..b_nb with b_0 = 1.
     a : array_like, optional
         a_1..a_na.
+    f : array_like, optional
+        f_0..f_r, the input polynomial for u >= 0.
+    p : array_like, optional
+        p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
     """
     def __copy__(self) -> Hammerstein:
         ...
@@ -134,7 +160,7 @@ class Hammerstein:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, *, f: typing.Any = None, p: typing.Any = None, b: typing.Any = None, a: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -184,14 +210,38 @@ class Hammerstein:
         str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
         """
     @property
+    def a(self) -> typing.Any:
+        """
+        numpy.ndarray: a_1..a_na.
+        """
+    @a.setter
+    def a(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def b(self) -> typing.Any:
+        """
+        numpy.ndarray: b_0..b_nb with b_0 = 1.
+        """
+    @b.setter
+    def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def f(self) -> typing.Any:
+        """
+        numpy.ndarray: f_0..f_r, the input polynomial for u >= 0.
+        """
+    @f.setter
+    def f(self, arg1: typing.Any) -> None:
+        ...
+    @property
     def na(self) -> int:
         """
-        int: poles of the linear block.
+        int: poles of the linear block (na >= 1).
         """
     @property
     def nb(self) -> int:
         """
-        int: B has nb + 1 coefficients b_0..b_nb.
+        int: B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
         """
     @property
     def nk(self) -> int:
@@ -204,14 +254,22 @@ class Hammerstein:
         int: number of identified parameters.
         """
     @property
+    def p(self) -> typing.Any:
+        """
+        numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
+        """
+    @p.setter
+    def p(self, arg1: typing.Any) -> None:
+        ...
+    @property
     def params(self) -> dict:
         """
-        dict: {'f', 'p', 'b', 'a'} as numpy arrays.
+        dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
     @property
     def r(self) -> int:
         """
-        int: degree of the input polynomials.
+        int: degree of the input polynomials (r >= 1).
         """
     @property
     def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
@@ -227,10 +285,24 @@ class HammersteinWiener:
     
     Parameters
     ----------
-    na, nb, nk, r, r1 : int
-        Orders; r1 >= 2 is the output polynomial's degree.
-    f, p, b, a : array_like, optional
-        As for Hammerstein.
+    na : int
+        poles of the linear block (na >= 1).
+    nb : int
+        B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
+    nk : int
+        pure delay in samples.
+    r : int
+        degree of the input polynomials (r >= 1).
+    r1 : int
+        degree of the output polynomial (2..32).
+    b : array_like, optional
+        b_0..b_nb with b_0 = 1.
+    a : array_like, optional
+        a_1..a_na.
+    f : array_like, optional
+        f_0..f_r, the input polynomial for u >= 0.
+    p : array_like, optional
+        p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
     q : array_like, optional
         q_1..q_r1 with q_1 = 1.
     """
@@ -240,7 +312,7 @@ class HammersteinWiener:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, *, f: typing.Any = None, p: typing.Any = None, b: typing.Any = None, a: typing.Any = None, q: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None, q: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -290,14 +362,38 @@ class HammersteinWiener:
         str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
         """
     @property
+    def a(self) -> typing.Any:
+        """
+        numpy.ndarray: a_1..a_na.
+        """
+    @a.setter
+    def a(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def b(self) -> typing.Any:
+        """
+        numpy.ndarray: b_0..b_nb with b_0 = 1.
+        """
+    @b.setter
+    def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def f(self) -> typing.Any:
+        """
+        numpy.ndarray: f_0..f_r, the input polynomial for u >= 0.
+        """
+    @f.setter
+    def f(self, arg1: typing.Any) -> None:
+        ...
+    @property
     def na(self) -> int:
         """
-        int: poles of the linear block.
+        int: poles of the linear block (na >= 1).
         """
     @property
     def nb(self) -> int:
         """
-        int: B has nb + 1 coefficients b_0..b_nb.
+        int: B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
         """
     @property
     def nk(self) -> int:
@@ -310,19 +406,35 @@ class HammersteinWiener:
         int: number of identified parameters.
         """
     @property
+    def p(self) -> typing.Any:
+        """
+        numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
+        """
+    @p.setter
+    def p(self, arg1: typing.Any) -> None:
+        ...
+    @property
     def params(self) -> dict:
         """
-        dict: {'f', 'p', 'b', 'a', 'q'} as numpy arrays.
+        dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
+    @property
+    def q(self) -> typing.Any:
+        """
+        numpy.ndarray: q_1..q_r1 with q_1 = 1.
+        """
+    @q.setter
+    def q(self, arg1: typing.Any) -> None:
+        ...
     @property
     def r(self) -> int:
         """
-        int: degree of the input polynomials.
+        int: degree of the input polynomials (r >= 1).
         """
     @property
     def r1(self) -> int:
         """
-        int: degree of the output polynomial.
+        int: degree of the output polynomial (2..32).
         """
     @property
     def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
@@ -334,18 +446,28 @@ class HammersteinWiener:
         ...
 class PseudoHammersteinWiener:
     """
-    Pseudo-Hammerstein-Wiener model: the Hammerstein model followed by a symmetric, unit-slope backlash of half-width c.
-    
-    y(k) = x(k) - c if x(k) > y(k-1) + c; x(k) + c if x(k) < y(k-1) - c; else y(k-1).
+    Pseudo-Hammerstein-Wiener model: the Hammerstein model followed by a symmetric, unit-slope backlash of half-width c. y(k) = x(k) - c if x(k) > y(k-1) + c; x(k) + c if x(k) < y(k-1) - c; else y(k-1).
     
     Parameters
     ----------
-    na, nb, nk, r : int
-        Orders, as for Hammerstein.
-    f, p, b, a : array_like, optional
-        As for Hammerstein.
+    na : int
+        poles of the linear block (na >= 1).
+    nb : int
+        B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
+    nk : int
+        pure delay in samples.
+    r : int
+        degree of the input polynomials (r >= 1).
+    b : array_like, optional
+        b_0..b_nb with b_0 = 1.
+    a : array_like, optional
+        a_1..a_na.
+    f : array_like, optional
+        f_0..f_r, the input polynomial for u >= 0.
+    p : array_like, optional
+        p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
     c : float, optional
-        Backlash half-width, c >= 0.
+        backlash half-width, >= 0.
     """
     def __copy__(self) -> PseudoHammersteinWiener:
         ...
@@ -353,7 +475,7 @@ class PseudoHammersteinWiener:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, *, f: typing.Any = None, p: typing.Any = None, b: typing.Any = None, a: typing.Any = None, c: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None, c: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -403,14 +525,179 @@ class PseudoHammersteinWiener:
         str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
         """
     @property
-    def c(self) -> float:
+    def a(self) -> typing.Any:
+        """
+        numpy.ndarray: a_1..a_na.
+        """
+    @a.setter
+    def a(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def b(self) -> typing.Any:
+        """
+        numpy.ndarray: b_0..b_nb with b_0 = 1.
+        """
+    @b.setter
+    def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def c(self) -> typing.Any:
         """
         float: backlash half-width.
         """
+    @c.setter
+    def c(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def f(self) -> typing.Any:
+        """
+        numpy.ndarray: f_0..f_r, the input polynomial for u >= 0.
+        """
+    @f.setter
+    def f(self, arg1: typing.Any) -> None:
+        ...
     @property
     def na(self) -> int:
         """
-        int: poles of the linear block.
+        int: poles of the linear block (na >= 1).
+        """
+    @property
+    def nb(self) -> int:
+        """
+        int: B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: pure delay in samples.
+        """
+    @property
+    def num_params(self) -> int:
+        """
+        int: number of identified parameters.
+        """
+    @property
+    def p(self) -> typing.Any:
+        """
+        numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
+        """
+    @p.setter
+    def p(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def params(self) -> dict:
+        """
+        dict: every parameter block by name, as the keyword arguments of the constructor take them.
+        """
+    @property
+    def r(self) -> int:
+        """
+        int: degree of the input polynomials (r >= 1).
+        """
+    @property
+    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: the parameter vector in the order of eq. (19).
+        """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
+class Wiener:
+    """
+    Wiener model: the linear block x(k) = -sum a_j x(k-j) + sum_{i=0..nb} b_i u(k-nk-i), then y = sum_{m=1..r1} q_m x^m (q_1 = 1).
+    
+    Parameters
+    ----------
+    na : int
+        poles of the linear block (na >= 1).
+    nb : int
+        B has nb + 1 coefficients b_0..b_nb.
+    nk : int
+        pure delay in samples.
+    r1 : int
+        degree of the output polynomial (2..32).
+    b : array_like, optional
+        b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain).
+    a : array_like, optional
+        a_1..a_na.
+    q : array_like, optional
+        q_1..q_r1 with q_1 = 1.
+    """
+    def __copy__(self) -> Wiener:
+        ...
+    def __deepcopy__(self, memo: dict) -> Wiener:
+        ...
+    def __getstate__(self) -> str:
+        ...
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, q: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: str) -> None:
+        ...
+    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        One-step-ahead prediction from measured data.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        y : array_like, shape (n,)
+            Measured output; y[k] is used to predict y[k + 1].
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
+            measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
+            backlash memory is the measured y[k - 1]).
+        """
+    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Free-run simulation from rest.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The model's output, driven by u alone (past inputs and outputs are zero).
+        
+        Raises
+        ------
+        ValueError
+            If u is not a finite 1-D array.
+        bonl.NumericalError
+            If the simulation leaves the finite numbers (an unstable model).
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
+        """
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        """
+    @property
+    def a(self) -> typing.Any:
+        """
+        numpy.ndarray: a_1..a_na.
+        """
+    @a.setter
+    def a(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def b(self) -> typing.Any:
+        """
+        numpy.ndarray: b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain).
+        """
+    @b.setter
+    def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def na(self) -> int:
+        """
+        int: poles of the linear block (na >= 1).
         """
     @property
     def nb(self) -> int:
@@ -430,12 +717,20 @@ class PseudoHammersteinWiener:
     @property
     def params(self) -> dict:
         """
-        dict: {'f', 'p', 'b', 'a'} as numpy arrays and 'c' as a float.
+        dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
     @property
-    def r(self) -> int:
+    def q(self) -> typing.Any:
         """
-        int: degree of the input polynomials.
+        numpy.ndarray: q_1..q_r1 with q_1 = 1.
+        """
+    @q.setter
+    def q(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def r1(self) -> int:
+        """
+        int: degree of the output polynomial (2..32).
         """
     @property
     def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
@@ -545,7 +840,7 @@ class Estimator:
     
     Parameters
     ----------
-    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    model : one of bonl.MODELS
         Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
         c = 0 for output_error).
     method : {'output_error', 'equation_error', 'paper'}
@@ -579,6 +874,9 @@ class Estimator:
         ...
     @typing.overload
     def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     def recover(self) -> None:
         """
@@ -681,7 +979,7 @@ def identify(model: ARX, u: typing.Any, y: typing.Any, *, passes: typing.Support
     
     Parameters
     ----------
-    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output.
@@ -722,7 +1020,7 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any, *, passes: typing
     
     Parameters
     ----------
-    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output.
@@ -763,7 +1061,7 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any, *, passes: 
     
     Parameters
     ----------
-    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output.
@@ -804,7 +1102,48 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any, *, pa
     
     Parameters
     ----------
-    model : ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    model : one of bonl.MODELS
+        Gives the structure (orders); its parameter values are not used.
+    u, y : array_like, shape (n,)
+        Input and measured output.
+    passes : int, default 1
+        Passes of the recursive estimator over the record (the paper's step 5).
+    method : {'output_error', 'equation_error', 'paper'}
+        The recursive stage. 'output_error' (default): recursive prediction-error method on the
+        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
+        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
+        recursive estimate is then refined by minimising the free-run simulation error.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
+    c0 : float, default 0.01
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
+    refine_iterations : int, default 100
+        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+    
+    Returns
+    -------
+    model
+        A new model of the same type with the identified parameters.
+    
+    Raises
+    ------
+    ValueError
+        Bad orders, settings, lengths or non-finite samples.
+    bonl.NumericalError
+        The estimator broke down numerically.
+    """
+@typing.overload
+def identify(model: Wiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Wiener:
+    """
+    Identify a model's parameters from an input/output record.
+    
+    Parameters
+    ----------
+    model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output.
@@ -849,11 +1188,12 @@ def load_model(text: str) -> typing.Any:
     
     Returns
     -------
-    ARX, Hammerstein, HammersteinWiener or PseudoHammersteinWiener
+    One of bonl.MODELS
     
     Raises
     ------
     ValueError
         The text is not valid JSON or not a valid bonl model (the message names the problem).
     """
+MODELS: tuple = (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, Wiener)
 __version__: str = '0.1.0'

@@ -1,0 +1,115 @@
+#pragma once
+// What a model says about itself, once, next to its code: its name, its orders (the constructor's
+// arguments) and its parameter blocks (what its setters, the JSON file and Python call them).
+// The JSON format, the Python classes, the fuzz harness and the tests are loops over these
+// descriptions and over bonl::Models (models.hpp), so a new model is one header and one list entry.
+//
+// A model type M provides, besides what the estimator needs (models.hpp):
+//   static constexpr ModelDescription<N, K> kDescription;
+//   M(order_0, ..., order_{N-1});                  // in kDescription.orders' order
+//   std::array<Eigen::Index, N> orders() const;
+//   VectorX parameter(std::size_t i) const;        // kDescription.parameters[i]; a number is 1 entry
+//   void set_parameter(std::size_t i, const VectorX& value);
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <tuple>
+#include <stdexcept>
+
+#include "../detail/validate.hpp"
+
+namespace bonl {
+
+/// One order of a model: an integer argument of its constructor.
+struct OrderDescription {
+  const char* name;      ///< "na"
+  Eigen::Index minimum;  ///< smallest value the model accepts
+  Eigen::Index maximum;  ///< largest value the model accepts
+  int fixed;             ///< the compile-time value of this model type, or Eigen::Dynamic
+  const char* meaning;   ///< one line for documentation: "poles of the linear block"
+};
+
+/// How a parameter block is stored in files and shown in Python.
+enum class ParameterShape {
+  Vector,  ///< an array of numbers
+  Number,  ///< a single number (stored as one entry by parameter())
+};
+
+/// One block of parameters, named as the model's setter (set_b) and accessor (b()) name it.
+struct ParameterDescription {
+  const char* name;        ///< "b"
+  ParameterShape shape;
+  const char* meaning;     ///< one line for documentation: "b_0..b_nb"
+  const char* normalised;  ///< not null: the first entry is fixed to 1, for this reason
+  bool non_negative;       ///< the value must be >= 0 (the backlash half-width)
+};
+
+template <std::size_t NumOrders, std::size_t NumParameters>
+struct ModelDescription {
+  const char* name;     ///< the model's one spelling: C++ kName, Python class, JSON "model", command line
+  const char* summary;  ///< its equations in one or two sentences
+  std::array<OrderDescription, NumOrders> orders;
+  std::array<ParameterDescription, NumParameters> parameters;
+};
+
+/// A list of model types (bonl::Models); Catch2's TEMPLATE_LIST_TEST_CASE accepts it as it is.
+template <class... Models>
+struct ModelList {
+  static constexpr std::size_t size = sizeof...(Models);
+};
+
+/// Stands for the type T where a value is needed: for_each_model hands one to its function.
+template <class T>
+struct TypeTag {
+  using type = T;
+};
+
+/// f(TypeTag<Model>{}) for every Model of the list, in order:
+///   for_each_model(Models{}, [](auto tag) { using Model = typename decltype(tag)::type; ... });
+template <class... Models, class F>
+void for_each_model(ModelList<Models...>, F&& f) {
+  (f(TypeTag<Models>{}), ...);
+}
+
+/// Apply<ModelList<A, B>, T>: T<A, B> (e.g. a std::variant of the models).
+template <class List, template <class...> class T>
+struct ApplyModels;
+template <class... Models, template <class...> class T>
+struct ApplyModels<ModelList<Models...>, T> {
+  using type = T<Models...>;
+};
+
+/// Map<ModelList<A, B>, F>: ModelList<F<A>, F<B>> (e.g. the estimators of the models).
+template <class List, template <class> class F>
+struct MapModels;
+template <class... Models, template <class> class F>
+struct MapModels<ModelList<Models...>, F> {
+  using type = ModelList<F<Models>...>;
+};
+
+/// A model of type Model at the given orders (its constructor, called with them in order).
+template <class Model>
+Model make_model(const std::array<Eigen::Index, Model::kDescription.orders.size()>& orders) {
+  return std::make_from_tuple<Model>(orders);
+}
+
+namespace detail {
+
+/// a followed by b, for descriptions that extend a shared part (the block models' front).
+template <class T, std::size_t N, std::size_t M>
+constexpr std::array<T, N + M> concat(const std::array<T, N>& a, const std::array<T, M>& b) {
+  std::array<T, N + M> out{};
+  for (std::size_t i = 0; i < N; ++i) out[i] = a[i];
+  for (std::size_t i = 0; i < M; ++i) out[N + i] = b[i];
+  return out;
+}
+
+[[noreturn]] inline void no_such_parameter(const char* model, std::size_t i) {
+  throw std::invalid_argument("bonl: " + std::string(model) + " has no parameter block " + std::to_string(i));
+}
+
+}  // namespace detail
+}  // namespace bonl

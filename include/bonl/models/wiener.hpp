@@ -1,0 +1,275 @@
+#pragma once
+// Wiener model: the linear block (with delay), then the output polynomial
+//   x(k) = -sum_{j=1..na} a_j x(k-j) + sum_{i=0..nb} b_i u(k-nk-i),   y(k) = sum_{m=1..r1} q_m x(k)^m,
+// normalised to q_1 = 1 (the gain lives in B, so b_0 is free).
+// Parameters: b_0..b_nb, a_1..a_na, q_2..q_r1. Key-term form as the H-W model without the input
+// polynomial: y(k) = x(k) + sum_{m>=2} q_m x(k)^m with x(k) = [u lags, -x lags] . [b, a].
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "../blocks/linear_block.hpp"
+#include "../blocks/output_polynomial.hpp"
+#include "../detail/history.hpp"
+#include "../detail/model_runs.hpp"
+#include "../detail/output_polynomial_terms.hpp"
+#include "../detail/simulated_lags.hpp"
+#include "../detail/stability.hpp"
+#include "../detail/validate.hpp"
+#include "../estimator/method.hpp"
+#include "model_description.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R1_ = Eigen::Dynamic>
+class Wiener {
+  static constexpr int kLinearParams = detail::add_sizes(detail::poly_size(Nb_), Na_);  // b_0..b_nb, a
+
+ public:
+  using Scalar = Scalar_;
+  static constexpr int kNumParams =
+      detail::add_sizes(kLinearParams, R1_ == Eigen::Dynamic ? Eigen::Dynamic : R1_ - 1);
+  static constexpr bool kHasInternalVariables = true;
+  static constexpr const char* kName = "Wiener";
+  static constexpr ModelDescription<4, 3> kDescription{
+      kName,
+      "Wiener model: the linear block x(k) = -sum a_j x(k-j) + sum_{i=0..nb} b_i u(k-nk-i), then "
+      "y = sum_{m=1..r1} q_m x^m (q_1 = 1).",
+      {{{"na", 1, detail::kMaxOrder, Na_, "poles of the linear block (na >= 1)"},
+        {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
+        {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"},
+        {"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}}},
+      {{{"b", ParameterShape::Vector, "b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain)", nullptr, false},
+        {"a", ParameterShape::Vector, "a_1..a_na", nullptr, false},
+        {"q", ParameterShape::Vector, "q_1..q_r1 with q_1 = 1", "the Wiener model is normalised so that q_1 = 1",
+         false}}}};
+  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Linear = LinearBlock<Scalar, Na_, Nb_>;
+  using OutputBlock = OutputPolynomial<Scalar, R1_>;
+
+  Wiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r1) : m_na(na), m_nb(nb), m_nk(nk), m_r1(r1) {
+    detail::require_order(na, 1, "na");
+    detail::require_order(nb, 0, "nb");
+    detail::require_order(nk, 0, "nk");
+    detail::require_order(r1, 2, "r1 (output polynomial degree)");
+    detail::require(r1 <= 32, "r1 (output polynomial degree) must be <= 32");
+    detail::require_matches_template(na, Na_, "na");
+    detail::require_matches_template(nb, Nb_, "nb");
+    detail::require_matches_template(r1, R1_, "r1");
+    m_theta = Params::Zero(nb + 1 + na + r1 - 1);
+  }
+
+  Eigen::Index na() const noexcept { return m_na; }
+  Eigen::Index nb() const noexcept { return m_nb; }
+  Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index r1() const noexcept { return m_r1; }
+  Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  std::array<Eigen::Index, 4> orders() const noexcept { return {m_na, m_nb, m_nk, m_r1}; }
+
+  const Params& theta() const noexcept { return m_theta; }
+  template <typename T>
+  void set_theta(const Eigen::MatrixBase<T>& theta) {
+    detail::assign_checked(m_theta, theta, "theta");
+  }
+
+  VectorX b() const { return m_theta.head(m_nb + 1); }
+  VectorX a() const { return m_theta.segment(m_nb + 1, m_na); }
+  /// q_1..q_r1 with q_1 = 1.
+  VectorX q() const {
+    VectorX q(m_r1);
+    q[0] = Scalar(1);
+    q.tail(m_r1 - 1) = m_theta.tail(m_r1 - 1);
+    return q;
+  }
+  template <typename T>
+  void set_b(const Eigen::MatrixBase<T>& b) {
+    detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
+  }
+  template <typename T>
+  void set_a(const Eigen::MatrixBase<T>& a) {
+    detail::assign_checked(m_theta.segment(m_nb + 1, m_na), a, "a");
+  }
+  template <typename T>
+  void set_q(const Eigen::MatrixBase<T>& q) {
+    detail::require_size(q, m_r1, "q");
+    detail::require_finite(q, "q");
+    detail::require(q[0] == Scalar(1), "q[0] (q_1) must be 1: the Wiener model is normalised so that q_1 = 1");
+    m_theta.tail(m_r1 - 1) = q.tail(m_r1 - 1);
+  }
+
+  /// The parameter block kDescription.parameters[i]: b, a, q.
+  VectorX parameter(std::size_t i) const {
+    if (i == 0) return b();
+    if (i == 1) return a();
+    if (i == 2) return q();
+    detail::no_such_parameter(kName, i);
+  }
+  void set_parameter(std::size_t i, const VectorX& value) {
+    if (i == 0) return set_b(value);
+    if (i == 1) return set_a(value);
+    if (i == 2) return set_q(value);
+    detail::no_such_parameter(kName, i);
+  }
+
+  Linear linear_block() const {
+    Linear block(m_na, m_nb, m_nk);
+    block.set_a(a());
+    block.set_b(b());
+    return block;
+  }
+  OutputBlock output_block() const {
+    OutputBlock block(m_r1);
+    block.set_q(q());
+    return block;
+  }
+
+  /// Free-run simulation from rest. Throws NumericalError if the output leaves the finite numbers.
+  template <typename U>
+  VectorX simulate(const Eigen::MatrixBase<U>& u) const {
+    return detail::simulate_checked(*this, u);
+  }
+  template <typename U>
+  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+    Linear linear = linear_block();
+    const VectorX qv = q();
+    y.resize(u.size());
+    for (Eigen::Index k = 0; k < u.size(); ++k) {
+      y[k] = OutputBlock::evaluate(qv, linear.step(u[k]));
+      if (!std::isfinite(y[k])) return false;
+    }
+    return true;
+  }
+
+  /// One-step-ahead prediction: past x are the measured outputs mapped back through q^-1 (the
+  /// branch nearest the model's own estimate); where q cannot be inverted, the model's estimate.
+  template <typename U, typename Y>
+  VectorX predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
+    return detail::predict_one_step(*this, u, y);
+  }
+
+  /// Where the recursive estimator starts (all zero).
+  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
+
+  /// Key-term form: regressor [u(k-nk..k-nk-nb), -x(k-1..k-na), x(k)^2..x(k)^r1], target y(k), with
+  /// x(k) the a-priori estimate [u lags, -x lags] . [b, a]. The past x: the equation-error method maps
+  /// the measured y back through q^-1, the paper's method keeps the model's estimates.
+  class KeyTerms {
+   public:
+    explicit KeyTerms(const Wiener& model)
+        : m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_output(model.r1(), model.num_params()),
+          m_u(model.nk() + model.nb() + 1), m_x(model.na()) {}
+    void reset() noexcept {
+      m_u.clear();
+      m_x.clear();
+      m_x_begin = Scalar(0);
+    }
+    template <typename Phi>
+    Scalar begin(const Params& theta, Scalar u, Method /*method*/, Phi& phi) noexcept {
+      m_u.push(u);
+      Scalar x = Scalar(0);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) {
+        phi[i] = m_u[m_nk + i];
+        x += theta[i] * phi[i];
+      }
+      for (Eigen::Index j = 1; j <= m_na; ++j) {
+        phi[m_nb + j] = -m_x[j - 1];
+        x -= theta[m_nb + j] * m_x[j - 1];
+      }
+      m_x_begin = x;
+      return x;
+    }
+    Scalar predicted_output(const Params& theta, Scalar x) const noexcept { return m_output.output(theta, x); }
+    template <typename Phi>
+    bool regress(const Params& /*theta*/, Scalar x, Scalar y, Method /*method*/, Phi& phi, Scalar& target) noexcept {
+      m_output.regress(x, phi);
+      target = y;
+      return true;
+    }
+    template <typename Phi>
+    void end(const Params& theta, const Phi& phi, Scalar /*u*/, Scalar y, Method method) noexcept {
+      // The paper's method re-evaluates x with the updated estimate (eq. 24); the equation-error
+      // method has the theta begin() had, so it keeps the x begin() returned.
+      Scalar x_model = m_x_begin;
+      if (method == Method::Paper) {
+        x_model = Scalar(0);
+        for (Eigen::Index i = 0; i < m_nb + 1 + m_na; ++i) x_model += phi[i] * theta[i];
+      }
+      m_x.push(method == Method::EquationError ? m_output.invert(theta, y, x_model) : x_model);
+    }
+    void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
+
+   private:
+    Eigen::Index m_na, m_nb, m_nk;
+    detail::OutputPolynomialTerms<Scalar> m_output;
+    detail::History<Scalar> m_u;
+    detail::History<Scalar, Na_> m_x;
+    Scalar m_x_begin = Scalar(0);
+  };
+
+  /// The output-error method's view (Method::OutputError): one step of the linear block's free run
+  /// with its sensitivities (as ARX's), then y = x + sum_{m>=2} q_m x^m, so
+  /// dy/d[b, a] = q'(x) dx/d[b, a] and dy/dq_m = x^m.
+  class OutputErrorTerms {
+   public:
+    using Sensitivity = Eigen::Matrix<Scalar, kLinearParams, 1>;
+
+    explicit OutputErrorTerms(const Wiener& model)
+        : m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_output(model.r1(), model.num_params()),
+          m_u(model.nk() + model.nb() + 1), m_lags(model.na(), model.nb() + 1 + model.na()),
+          m_dx(Sensitivity::Zero(model.nb() + 1 + model.na())), m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())) {}
+    void reset() noexcept {
+      m_u.clear();
+      m_lags.reset();
+      m_dx.setZero();
+      m_x = Scalar(0);
+    }
+    template <typename Psi>
+    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+      m_u.push(u);
+      const Eigen::Index linear = m_nb + 1 + m_na;
+      Scalar x = Scalar(0);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) {
+        m_dx[i] = m_u[m_nk + i];
+        x += theta[i] * m_dx[i];
+      }
+      x += m_lags.apply(theta.template segment<Na_>(m_nb + 1, m_na), m_dx, m_nb + 1);
+      m_x = x;
+      Scalar slope;
+      const Scalar y = m_output.output_and_sensitivity(theta, x, psi, slope);
+      psi.head(linear) = slope * m_dx;
+      return y;
+    }
+    template <typename Psi>
+    void commit(const Psi& /*psi*/, Scalar /*output*/) noexcept { m_lags.push(m_x, m_dx); }
+    void correct(const Params& delta) noexcept {
+      m_lags.correct(delta.template head<kLinearParams>(m_nb + 1 + m_na));
+    }
+    bool stable(const Params& theta, Scalar radius) noexcept {
+      return detail::roots_inside(theta.template segment<Na_>(m_nb + 1, m_na), radius, m_work);
+    }
+    void constrain(Params& /*theta*/) const noexcept {}
+    template <typename Psi>
+    void hold(Psi& /*psi*/) const noexcept {}
+    Scalar internal() const noexcept { return m_x; }
+
+   private:
+    Eigen::Index m_na, m_nb, m_nk;
+    detail::OutputPolynomialTerms<Scalar> m_output;
+    detail::History<Scalar> m_u;
+    detail::SimulatedLags<Scalar, Na_, kLinearParams> m_lags;
+    Sensitivity m_dx;
+    Eigen::Matrix<Scalar, Na_, 1> m_work;
+    Scalar m_x = Scalar(0);
+  };
+
+ private:
+  Params m_theta;
+  Eigen::Index m_na, m_nb, m_nk, m_r1;
+};
+
+}  // namespace bonl

@@ -7,10 +7,8 @@
 #include <cmath>
 
 #include "../blocks/linear_block.hpp"
-#include "../detail/history.hpp"
+#include "../detail/linear_terms.hpp"
 #include "../detail/model_runs.hpp"
-#include "../detail/simulated_lags.hpp"
-#include "../detail/stability.hpp"
 #include "../detail/validate.hpp"
 #include "../estimator/method.hpp"
 #include "model_description.hpp"
@@ -116,17 +114,11 @@ class ARX {
   /// Regressor [u(k-nk), ..., u(k-nk-nb), -y(k-1), ..., -y(k-na)]; target y(k). Both methods agree.
   class KeyTerms {
    public:
-    explicit KeyTerms(const ARX& model)
-        : m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_u(model.nk() + model.nb() + 1), m_y(model.na()) {}
-    void reset() noexcept {
-      m_u.clear();
-      m_y.clear();
-    }
+    explicit KeyTerms(const ARX& model) : m_linear(model.na(), model.nb(), model.nk()) {}
+    void reset() noexcept { m_linear.reset(); }
     template <typename Phi>
     Scalar begin(const Params& theta, Scalar u, Method /*method*/, Phi& phi) noexcept {
-      m_u.push(u);
-      for (Eigen::Index i = 0; i <= m_nb; ++i) phi[i] = m_u[m_nk + i];
-      for (Eigen::Index j = 1; j <= m_na; ++j) phi[m_nb + j] = -m_y[j - 1];
+      m_linear.begin(u, phi);
       return phi.dot(theta);
     }
     Scalar predicted_output(const Params& /*theta*/, Scalar x) const noexcept { return x; }
@@ -138,58 +130,37 @@ class ARX {
     }
     template <typename Phi>
     void end(const Params& /*theta*/, const Phi& /*phi*/, Scalar /*u*/, Scalar y, Method /*method*/) noexcept {
-      m_y.push(y);
+      m_linear.end(y);  // the lags are the measured outputs
     }
     void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
-    Eigen::Index m_na, m_nb, m_nk;
-    detail::History<Scalar> m_u, m_y;
+    detail::LinearKeyTerms<Scalar, Na_> m_linear;
   };
 
   /// The output-error method's view (Method::OutputError): ARX's parameters as the output-error
-  /// model y = z^-nk B / A u, the way simulate() runs it. One step of the free run,
-  /// x(k) = sum_i b_i u(k-nk-i) - sum_j a_j x(k-j), with dx/db_i = u(k-nk-i) and dx/da_j = -x(k-j)
-  /// filtered by 1 / A (detail::SimulatedLags).
+  /// model y = z^-nk B / A u, the way simulate() runs it: one step of the linear block's free run,
+  /// whose sensitivities are all of psi (detail::LinearOutputError).
   class OutputErrorTerms {
    public:
     explicit OutputErrorTerms(const ARX& model)
-        : m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_u(model.nk() + model.nb() + 1),
-          m_lags(model.na(), model.num_params()), m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())) {}
-    void reset() noexcept {
-      m_u.clear();
-      m_lags.reset();
-      m_x = Scalar(0);
-    }
+        : m_linear(model.na(), model.nb(), model.nk(), model.num_params()) {}
+    void reset() noexcept { m_linear.reset(); }
     template <typename Psi>
     Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
-      m_u.push(u);
-      Scalar x = Scalar(0);
-      for (Eigen::Index i = 0; i <= m_nb; ++i) {
-        psi[i] = m_u[m_nk + i];
-        x += theta[i] * psi[i];
-      }
-      x += m_lags.apply(theta.template segment<Na_>(m_nb + 1, m_na), psi, m_nb + 1);
-      m_x = x;
-      return x;
+      return m_linear.step(theta, u, psi);
     }
     template <typename Psi>
-    void commit(const Psi& psi, Scalar /*output*/) noexcept { m_lags.push(m_x, psi); }
-    void correct(const Params& delta) noexcept { m_lags.correct(delta); }
-    bool stable(const Params& theta, Scalar radius) noexcept {
-      return detail::roots_inside(theta.template segment<Na_>(m_nb + 1, m_na), radius, m_work);
-    }
+    void commit(const Psi& psi, Scalar /*output*/) noexcept { m_linear.commit(psi); }
+    void correct(const Params& delta) noexcept { m_linear.correct(delta); }
+    bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }
     void constrain(Params& /*theta*/) const noexcept {}
     template <typename Psi>
     void hold(Psi& /*psi*/) const noexcept {}
-    Scalar internal() const noexcept { return m_x; }
+    Scalar internal() const noexcept { return m_linear.x(); }
 
    private:
-    Eigen::Index m_na, m_nb, m_nk;
-    detail::History<Scalar> m_u;
-    detail::SimulatedLags<Scalar, Na_, kNumParams> m_lags;
-    Eigen::Matrix<Scalar, Na_, 1> m_work;
-    Scalar m_x = Scalar(0);
+    detail::LinearOutputError<Scalar, Na_, kNumParams> m_linear;
   };
 
  private:

@@ -7,18 +7,15 @@
 
 #include <Eigen/Core>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 
 #include "../blocks/linear_block.hpp"
 #include "../blocks/output_polynomial.hpp"
-#include "../detail/history.hpp"
+#include "../detail/linear_terms.hpp"
 #include "../detail/model_runs.hpp"
 #include "../detail/output_polynomial_terms.hpp"
-#include "../detail/simulated_lags.hpp"
-#include "../detail/stability.hpp"
 #include "../detail/validate.hpp"
 #include "../estimator/method.hpp"
 #include "model_description.hpp"
@@ -161,27 +158,17 @@ class Wiener {
   class KeyTerms {
    public:
     explicit KeyTerms(const Wiener& model)
-        : m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_output(model.r1(), model.num_params()),
-          m_u(model.nk() + model.nb() + 1), m_x(model.na()) {}
+        : m_linear(model.na(), model.nb(), model.nk()), m_output(model.r1(), model.num_params()),
+          m_linear_size(model.nb() + 1 + model.na()) {}
     void reset() noexcept {
-      m_u.clear();
-      m_x.clear();
+      m_linear.reset();
       m_x_begin = Scalar(0);
     }
     template <typename Phi>
     Scalar begin(const Params& theta, Scalar u, Method /*method*/, Phi& phi) noexcept {
-      m_u.push(u);
-      Scalar x = Scalar(0);
-      for (Eigen::Index i = 0; i <= m_nb; ++i) {
-        phi[i] = m_u[m_nk + i];
-        x += theta[i] * phi[i];
-      }
-      for (Eigen::Index j = 1; j <= m_na; ++j) {
-        phi[m_nb + j] = -m_x[j - 1];
-        x -= theta[m_nb + j] * m_x[j - 1];
-      }
-      m_x_begin = x;
-      return x;
+      m_linear.begin(u, phi);
+      m_x_begin = linear_part(theta, phi);
+      return m_x_begin;
     }
     Scalar predicted_output(const Params& theta, Scalar x) const noexcept { return m_output.output(theta, x); }
     template <typename Phi>
@@ -193,78 +180,60 @@ class Wiener {
     template <typename Phi>
     void end(const Params& theta, const Phi& phi, Scalar /*u*/, Scalar y, Method method) noexcept {
       // The paper's method re-evaluates x with the updated estimate (eq. 24); the equation-error
-      // method has the theta begin() had, so it keeps the x begin() returned.
-      Scalar x_model = m_x_begin;
-      if (method == Method::Paper) {
-        x_model = Scalar(0);
-        for (Eigen::Index i = 0; i < m_nb + 1 + m_na; ++i) x_model += phi[i] * theta[i];
-      }
-      m_x.push(method == Method::EquationError ? m_output.invert(theta, y, x_model) : x_model);
+      // method has the theta begin() had, so it keeps the x begin() returned, and stores the x the
+      // measured y says (q inverted).
+      const Scalar x_model = method == Method::Paper ? linear_part(theta, phi) : m_x_begin;
+      m_linear.end(method == Method::EquationError ? m_output.invert(theta, y, x_model) : x_model);
     }
     void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
-    Eigen::Index m_na, m_nb, m_nk;
+    /// x(k) = [u lags, -x lags] . [b, a].
+    template <typename Phi>
+    Scalar linear_part(const Params& theta, const Phi& phi) const noexcept {
+      return phi.template head<kLinearParams>(m_linear_size).dot(theta.template head<kLinearParams>(m_linear_size));
+    }
+
+    detail::LinearKeyTerms<Scalar, Na_> m_linear;
     detail::OutputPolynomialTerms<Scalar> m_output;
-    detail::History<Scalar> m_u;
-    detail::History<Scalar, Na_> m_x;
+    Eigen::Index m_linear_size;
     Scalar m_x_begin = Scalar(0);
   };
 
   /// The output-error method's view (Method::OutputError): one step of the linear block's free run
-  /// with its sensitivities (as ARX's), then y = x + sum_{m>=2} q_m x^m, so
+  /// with its sensitivities (detail::LinearOutputError, as ARX's), then y = x + sum_{m>=2} q_m x^m, so
   /// dy/d[b, a] = q'(x) dx/d[b, a] and dy/dq_m = x^m.
   class OutputErrorTerms {
    public:
     using Sensitivity = Eigen::Matrix<Scalar, kLinearParams, 1>;
 
     explicit OutputErrorTerms(const Wiener& model)
-        : m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_output(model.r1(), model.num_params()),
-          m_u(model.nk() + model.nb() + 1), m_lags(model.na(), model.nb() + 1 + model.na()),
-          m_dx(Sensitivity::Zero(model.nb() + 1 + model.na())), m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())) {}
+        : m_linear(model.na(), model.nb(), model.nk(), model.nb() + 1 + model.na()),
+          m_output(model.r1(), model.num_params()), m_dx(Sensitivity::Zero(model.nb() + 1 + model.na())) {}
     void reset() noexcept {
-      m_u.clear();
-      m_lags.reset();
+      m_linear.reset();
       m_dx.setZero();
-      m_x = Scalar(0);
     }
     template <typename Psi>
     Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
-      m_u.push(u);
-      const Eigen::Index linear = m_nb + 1 + m_na;
-      Scalar x = Scalar(0);
-      for (Eigen::Index i = 0; i <= m_nb; ++i) {
-        m_dx[i] = m_u[m_nk + i];
-        x += theta[i] * m_dx[i];
-      }
-      x += m_lags.apply(theta.template segment<Na_>(m_nb + 1, m_na), m_dx, m_nb + 1);
-      m_x = x;
       Scalar slope;
-      const Scalar y = m_output.output_and_sensitivity(theta, x, psi, slope);
-      psi.head(linear) = slope * m_dx;
+      const Scalar y = m_output.output_and_sensitivity(theta, m_linear.step(theta, u, m_dx), psi, slope);
+      psi.head(m_dx.size()) = slope * m_dx;
       return y;
     }
     template <typename Psi>
-    void commit(const Psi& /*psi*/, Scalar /*output*/) noexcept { m_lags.push(m_x, m_dx); }
-    void correct(const Params& delta) noexcept {
-      m_lags.correct(delta.template head<kLinearParams>(m_nb + 1 + m_na));
-    }
-    bool stable(const Params& theta, Scalar radius) noexcept {
-      return detail::roots_inside(theta.template segment<Na_>(m_nb + 1, m_na), radius, m_work);
-    }
+    void commit(const Psi& /*psi*/, Scalar /*output*/) noexcept { m_linear.commit(m_dx); }
+    void correct(const Params& delta) noexcept { m_linear.correct(delta.template head<kLinearParams>(m_dx.size())); }
+    bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }
     void constrain(Params& /*theta*/) const noexcept {}
     template <typename Psi>
     void hold(Psi& /*psi*/) const noexcept {}
-    Scalar internal() const noexcept { return m_x; }
+    Scalar internal() const noexcept { return m_linear.x(); }
 
    private:
-    Eigen::Index m_na, m_nb, m_nk;
+    detail::LinearOutputError<Scalar, Na_, kLinearParams> m_linear;
     detail::OutputPolynomialTerms<Scalar> m_output;
-    detail::History<Scalar> m_u;
-    detail::SimulatedLags<Scalar, Na_, kLinearParams> m_lags;
     Sensitivity m_dx;
-    Eigen::Matrix<Scalar, Na_, 1> m_work;
-    Scalar m_x = Scalar(0);
   };
 
  private:

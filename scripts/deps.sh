@@ -51,3 +51,27 @@ bonl_ensure_fuzz_deps() {
     "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
   fi
 }
+
+# Configures build/examples (Release, examples only) and builds one example target, for the scripts
+# that run an example: bonl_build_example TARGET.
+bonl_build_example() {
+  step "configure (build/examples)"
+  cmake -S . -B build/examples -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DBONL_BUILD_TESTS=OFF -DBONL_BUILD_BENCH=OFF -DBONL_BUILD_DEMO=OFF -DBONL_BUILD_EXAMPLES=ON
+  step "build $1"
+  cmake --build build/examples -j2 --target "$1"
+}
+
+# Replaces what stands between the NAME markers of PAGE (<!-- NAME: begin ... --> and
+# <!-- NAME: end -->) with the contents of FILE: bonl_splice_summary NAME FILE PAGE...
+# tests/python/test_published_figures.py checks that the copies match their results file.
+bonl_splice_summary() {
+  local name=$1 file=$2 page
+  shift 2
+  for page in "$@"; do
+    awk -v summary="$file" -v name="$name" '
+      index($0, "<!-- " name ": begin") { print; while ((getline line < summary) > 0) print line; close(summary); skip = 1; next }
+      index($0, "<!-- " name ": end") { skip = 0 }
+      !skip { print }' "$page" > "$page.tmp" && mv "$page.tmp" "$page"
+  done
+}

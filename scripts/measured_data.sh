@@ -8,12 +8,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh
 bonl_ensure_deps
 
-step "configure (build/examples)"
-cmake -S . -B build/examples -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DBONL_BUILD_TESTS=OFF -DBONL_BUILD_BENCH=OFF -DBONL_BUILD_DEMO=OFF -DBONL_BUILD_EXAMPLES=ON
-
-step "build bonl_measured_data"
-cmake --build build/examples -j2 --target bonl_measured_data
+bonl_build_example bonl_measured_data
 
 mkdir -p out/measured_data
 step "run bonl_measured_data"

@@ -16,8 +16,5 @@ mkdir -p docs/results
 step "run bonl_demo"
 ./build/demo/examples/demo/bonl_demo --json docs/results/plant_experiment.json \
   --markdown docs/results/plant_experiment_summary.md > /dev/null
-awk -v summary=docs/results/plant_experiment_summary.md '
-  /<!-- plant_experiment_summary: begin/ { print; while ((getline line < summary) > 0) print line; skip = 1; next }
-  /<!-- plant_experiment_summary: end/ { skip = 0 }
-  !skip { print }' README.md > README.md.tmp && mv README.md.tmp README.md
+bonl_splice_summary plant_experiment_summary docs/results/plant_experiment_summary.md README.md
 step "wrote docs/results/plant_experiment.json and plant_experiment_summary.md, updated README.md"

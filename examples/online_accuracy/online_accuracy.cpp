@@ -92,11 +92,11 @@ VectorXd output_noise(const VectorXd& y, const Noise& noise, std::uint64_t seed)
 template <class Model>
 VectorXd switched_response(const Model& before, const Model& after, const VectorXd& u, Eigen::Index change) {
   typename Model::OutputErrorTerms simulation(before);
-  typename Model::Params psi = Model::Params::Zero(before.num_params());
+  const typename Model::Params unchanged = Model::Params::Zero(before.num_params());
   VectorXd y(u.size());
   for (Eigen::Index k = 0; k < u.size(); ++k) {
-    y[k] = simulation.predict(k < change ? before.theta() : after.theta(), u[k], psi);
-    simulation.commit(psi, y[k]);
+    y[k] = simulation.step(k < change ? before.theta() : after.theta(), u[k]).output;
+    simulation.accept(unchanged);
   }
   return y;
 }

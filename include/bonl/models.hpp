@@ -5,8 +5,9 @@
 //
 // Model concept (what Estimator<Model> needs):
 //   Scalar, kNumParams (or Eigen::Dynamic), Params, VectorX, kHasInternalVariables, kName;
-//   num_params(), theta(), set_theta(), try_simulate(u, y), initial_estimate(c0);
-//   KeyTerms(model) with reset(), begin(), predicted_output(), regress(), end(), constrain().
+//   num_params(), theta(), set_theta(), try_simulate(u, y), initial_estimate(c0), constrain(theta);
+//   KeyTerms(model, KeyTermMethod) and OutputErrorTerms(model, hold), each with reset() and one
+//   step() per sample (models/model_steps.hpp);
 // and describes itself (kDescription, orders(), parameter(i), set_parameter(i, v): model_description.hpp),
 // which is all the JSON format, the Python bindings, the fuzz harness and the tests need: adding a
 // model is its header and one entry in bonl::Models below.
@@ -17,6 +18,7 @@
 #include "models/hammerstein.hpp"
 #include "models/hammerstein_wiener.hpp"
 #include "models/model_description.hpp"
+#include "models/model_steps.hpp"
 #include "models/pseudo_hammerstein_wiener.hpp"
 #include "models/wiener.hpp"
 

@@ -7,7 +7,7 @@
 //   front phi(k) = [1, u(k), h, h u(k), w(k-1), -x(k-1)],  h = 1 if u(k) < 0,
 //   theta = [f0, f1, p0, p1, b1, a1] (Hammerstein), plus c (P-H-W).
 // The library's conventions for the paper's method (models/pseudo_hammerstein_wiener.hpp,
-// detail/hammerstein_front.hpp): everything starts at rest (past u, w, x = 0, y(-1) = 0); the
+// models/detail/hammerstein_front.hpp): everything starts at rest (past u, w, x = 0, y(-1) = 0); the
 // regressor is built with theta(k-1) and the STORED w, x; after the update x(k) and w(k) are stored
 // a posteriori, with theta(k).
 

@@ -2,12 +2,11 @@
 // BONL_FLATTEN: inline every call inside the marked function, recursively (GCC and Clang; nothing
 // elsewhere). For per-sample kernels written in Eigen expressions: past a certain function size GCC 12
 // stops inlining Eigen's small helpers and calls them out of line (in the RLS update, the copy of the
-// 14-entry theta), and the update cost up to a tenth more at the paper's sizes (H-W, AVX-512).
+// 14-entry theta), which costs time on every sample (docs/performance.md).
 
 // BONL_COLD: keeps a rarely taken path (the RLS scale fold, a pass over the whole matrix) out of
 // line, also inside a flattened function: inlined, it made GCC spill registers across the whole
-// update (at 13 parameters with AVX2: 4x the stack accesses, and the Hammerstein update 73 ns
-// against 63).
+// update (docs/performance.md).
 
 #if defined(__GNUC__) || defined(__clang__)
 #define BONL_FLATTEN __attribute__((flatten))

@@ -15,7 +15,6 @@
 #include <string>
 
 #include "../detail/validate.hpp"
-#include "method.hpp"
 
 namespace bonl {
 
@@ -51,7 +50,6 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
 
   Model best = start;
   Model trial = start;
-  typename Model::KeyTerms constraint(start);
   VectorX simulated;
   double cost = detail::simulation_cost(best, u, y, simulated);
   RefinementReport local;
@@ -74,11 +72,11 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
       // Projected like every candidate: at a bound (c = 0) the difference becomes one-sided, with
       // the same simulations as before (a model with c < 0 simulates as c = 0).
       shifted[i] = theta[i] + step;
-      constraint.constrain(shifted, Method::EquationError);
+      start.constrain(shifted);
       trial.set_theta(shifted);
       const bool ok_plus = trial.try_simulate(u, plus);
       shifted[i] = theta[i] - step;
-      constraint.constrain(shifted, Method::EquationError);
+      start.constrain(shifted);
       trial.set_theta(shifted);
       const bool ok_minus = trial.try_simulate(u, minus);
       if (ok_plus && ok_minus) {
@@ -98,7 +96,7 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
       damped.diagonal() += Scalar(damping) * scale;
       const VectorX delta = damped.ldlt().solve(gradient);
       typename Model::Params candidate = theta + delta;
-      constraint.constrain(candidate, Method::EquationError);
+      start.constrain(candidate);
       if (candidate.allFinite()) {
         trial.set_theta(candidate);
         new_cost = detail::simulation_cost(trial, u, y, plus);

@@ -1,6 +1,8 @@
 #pragma once
-// The generic recursive estimator (the paper's MRLSA), templated on the model: the model's KeyTerms
-// build the key-term regressor and estimate the internal variables, Rls does the update.
+// The generic recursive estimator (the paper's MRLSA), templated on the model. Per sample the model
+// gives one step of the view the method chooses (models/model_steps.hpp): its key-term regression
+// (equation_error, paper) or one step of its free run with the output's sensitivities (output_error);
+// Rls does the update.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "../detail/validate.hpp"
+#include "../models/model_steps.hpp"
 #include "forgetting_schedule.hpp"
 #include "method.hpp"
 #include "rls.hpp"
@@ -52,7 +55,8 @@ struct EstimatorOptions {
   /// move one outside is shortened (halved up to 10 times, else not taken), counted in
   /// health().projections. In (0, 1]; 0.999 admits time constants up to about 1000 samples.
   double stability_radius = 0.999;
-  /// P-H-W: c is held at 0 for this many samples from the start (see the model's OutputErrorTerms).
+  /// P-H-W: c is held at 0 for this many samples after each start from rest (the model's
+  /// OutputErrorTerms).
   Eigen::Index backlash_hold = 200;
 
   /// The forgetting schedule, p0 and trace ceiling in force: the ones set, or the method's defaults.
@@ -120,14 +124,16 @@ struct is_model<M, std::void_t<typename M::Scalar, typename M::Params, typename 
                                typename M::OutputErrorTerms, typename M::VectorX,
                                decltype(M::kNumParams), decltype(M::kHasInternalVariables),
                                decltype(std::declval<const M&>().theta()),
-                               decltype(std::declval<const M&>().num_params())>> : std::true_type {};
+                               decltype(std::declval<const M&>().num_params()),
+                               decltype(std::declval<const M&>().constrain(std::declval<typename M::Params&>()))>>
+    : std::true_type {};
 }  // namespace detail
 
 template <class Model>
 class Estimator {
   static_assert(detail::is_model<Model>::value,
                 "bonl::Estimator<Model>: Model must provide Scalar, Params, VectorX, KeyTerms, OutputErrorTerms, kNumParams, "
-                "kHasInternalVariables, theta() and num_params() (see the model concept in bonl/models.hpp)");
+                "kHasInternalVariables, theta(), num_params() and constrain() (see the model concept in bonl/models.hpp)");
 
  public:
   using Scalar = typename Model::Scalar;
@@ -137,9 +143,9 @@ class Estimator {
   /// `structure` gives the orders; the estimate starts from zero (c = c0 for the equation-error and
   /// paper methods, c = 0 for the output-error method).
   explicit Estimator(const Model& structure, const EstimatorOptions& options = {})
-      : m_model(validated(structure, options)), m_terms(structure), m_outputs(structure),
-        m_rls(structure.num_params(), Scalar(options.resolved_p0())),
-        m_phi(Params::Zero(structure.num_params())), m_theta_internal(m_phi), m_step(m_phi), m_options(options),
+      : m_model(validated(structure, options)), m_terms(structure, key_term_method(options.method)),
+        m_outputs(structure, options.backlash_hold), m_rls(structure.num_params(), Scalar(options.resolved_p0())),
+        m_theta_internal(Params::Zero(structure.num_params())), m_step(m_theta_internal), m_options(options),
         m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
     if (options.method == Method::OutputError) m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
     reset();
@@ -228,15 +234,17 @@ class Estimator {
     // and internal variables computed from it feed those swings back into the regressor, which
     // amplifies even round-off (seen from the true parameters with p0 = 1e6: the estimate left the
     // truth within 50 samples). With the copy, each block is a linear least-squares problem.
+    // The paper's method stores the previous sample's internal variables a posteriori with this
+    // theta, the estimate after the previous update (eq. 24).
     const Params& theta = method == Method::Paper ? m_rls.theta() : m_theta_internal;
-    const Scalar x = m_terms.begin(theta, u, method, m_phi);
-    if (!std::isfinite(x)) return internal_divergence(x);
-    m_prediction = m_terms.predicted_output(theta, x);
-    Scalar target = Scalar(0);
+    const auto regression = m_terms.step(theta, u, y);
+    if (!std::isfinite(regression.internal)) return internal_divergence(regression.internal);
+    m_prediction = regression.prediction;
     UpdateStatus status = UpdateStatus::NoInformation;
-    if (m_terms.regress(theta, x, y, method, m_phi, target)) {
-      if (m_rls.update(m_phi, target, forgetting_factor(y, y - m_prediction), m_max_trace)) {
-        m_terms.constrain(m_rls.mutable_theta(), method);
+    if (regression.informative) {
+      if (m_rls.update(regression.regressor, regression.target, forgetting_factor(y, y - m_prediction), m_max_trace)) {
+        // The paper's algorithm lets c go negative (it simulates as c = 0); the others keep theta valid.
+        if (method != Method::Paper) m_model.constrain(m_rls.mutable_theta());
         status = UpdateStatus::Updated;
         m_health.consecutive_failures = 0;
         if (m_rls.forgetting_limited()) ++m_health.forgetting_limited;
@@ -244,16 +252,11 @@ class Estimator {
         status = failure();
       }
     }
-    if (method == Method::Paper) {
-      m_terms.end(m_rls.theta(), m_phi, u, y, method);
-    } else {
-      m_terms.end(m_theta_internal, m_phi, u, y, method);
-      if (++m_since_refresh >= m_options.internal_refresh) {
-        m_theta_internal = m_rls.theta();
-        m_since_refresh = 0;
-      }
+    if (method != Method::Paper && ++m_since_refresh >= m_options.internal_refresh) {
+      m_theta_internal = m_rls.theta();
+      m_since_refresh = 0;
     }
-    return finish(status, x);
+    return finish(status, regression.internal);
   }
 
   const Params& theta() const noexcept { return m_rls.theta(); }
@@ -262,7 +265,7 @@ class Estimator {
   /// P-H-W estimate can have c < 0, which simulates as c = 0).
   Model model() const {
     Params theta = m_rls.theta();
-    m_terms.constrain(theta, Method::EquationError);
+    m_model.constrain(theta);
     Model model = m_model;
     model.set_theta(theta);
     return model;
@@ -336,10 +339,10 @@ class Estimator {
   /// regressor, keep the estimate valid (c >= 0, the linear block stable), then store the step and
   /// move the stored simulation to first order along the change of the estimate.
   UpdateStatus update_output_error(Scalar u, Scalar y) noexcept {
-    const Scalar prediction = m_outputs.predict(m_rls.theta(), u, m_phi);
+    const auto simulated = m_outputs.step(m_rls.theta(), u);
+    const Scalar prediction = simulated.output;
     if (!std::isfinite(prediction)) return internal_divergence(prediction);
     m_prediction = prediction;
-    if (m_sample < m_options.backlash_hold) m_outputs.hold(m_phi);
     const Scalar error = y - prediction;
     const Scalar lambda = forgetting_factor(y, error);
     // An outlier bound: an error beyond kOutlierBound times the running mean absolute error, after
@@ -358,9 +361,9 @@ class Estimator {
                                                : std::abs(error);
     m_step = m_rls.theta();
     UpdateStatus status = UpdateStatus::Updated;
-    if (m_rls.update_with_error(m_phi, used, lambda, m_max_trace)) {
+    if (m_rls.update_with_error(simulated.sensitivity, used, lambda, m_max_trace)) {
       Params& theta = m_rls.mutable_theta();
-      m_outputs.constrain(theta);
+      m_model.constrain(theta);
       m_step = theta - m_step;  // the step taken; theta = previous + m_step from here on
       if (!m_outputs.stable(theta, Scalar(m_options.stability_radius))) shorten_step(theta);
       m_health.consecutive_failures = 0;
@@ -369,14 +372,12 @@ class Estimator {
       // Refused: the sensitivities, and the simulated state they come from, have left the range P can
       // take (an absurd input inside the simulation decays only with the model's poles and would
       // refuse every update for thousands of samples). Restart the simulation from rest instead.
-      const Scalar x = m_outputs.internal();
       ++m_health.internal_restarts;
       m_outputs.reset();
-      return finish(failure(), x);
+      return finish(failure(), simulated.internal);
     }
-    m_outputs.commit(m_phi, prediction);
-    m_outputs.correct(m_step);
-    return finish(status, m_outputs.internal());
+    m_outputs.accept(m_step);
+    return finish(status, simulated.internal);
   }
 
   /// theta = previous + m_step left the stability region: halve the step until it is back inside
@@ -439,11 +440,14 @@ class Estimator {
   static constexpr double kOutlierBound = 5.0;
   static constexpr double kErrorRate = 1.0 / 50.0;
 
+  static KeyTermMethod key_term_method(Method method) noexcept {
+    return method == Method::Paper ? KeyTermMethod::Paper : KeyTermMethod::EquationError;
+  }
+
   Model m_model;
   typename Model::KeyTerms m_terms;           // equation_error and paper
   typename Model::OutputErrorTerms m_outputs; // output_error
   Rls<Scalar, Model::kNumParams> m_rls;
-  Params m_phi;             // the regressor: key terms, or the output's sensitivities
   Params m_theta_internal;  // equation_error: the copy of theta the internal variables use
   Params m_step;            // output_error: the change of theta in the current update
   EstimatorOptions m_options;

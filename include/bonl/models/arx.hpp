@@ -7,11 +7,11 @@
 #include <cmath>
 
 #include "../blocks/linear_block.hpp"
-#include "../detail/linear_terms.hpp"
-#include "../detail/model_runs.hpp"
 #include "../detail/validate.hpp"
-#include "../estimator/method.hpp"
+#include "detail/linear_terms.hpp"
+#include "detail/model_runs.hpp"
 #include "model_description.hpp"
+#include "model_steps.hpp"
 
 namespace bonl {
 
@@ -110,57 +110,49 @@ class ARX {
 
   /// Where the recursive estimator starts (all zero).
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
+  /// Projects an estimate onto the model's valid set: every theta is valid.
+  void constrain(Params& /*theta*/) const noexcept {}
 
-  /// Regressor [u(k-nk), ..., u(k-nk-nb), -y(k-1), ..., -y(k-na)]; target y(k). Both methods agree.
+  /// Regressor [u(k-nk), ..., u(k-nk-nb), -y(k-1), ..., -y(k-na)]; target y(k). Both methods agree:
+  /// ARX has no unmeasured internal variable.
   class KeyTerms {
    public:
-    explicit KeyTerms(const ARX& model) : m_linear(model.na(), model.nb(), model.nk()) {}
+    KeyTerms(const ARX& model, KeyTermMethod /*method*/)
+        : m_linear(model.na(), model.nb(), model.nk()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_linear.reset(); }
-    template <typename Phi>
-    Scalar begin(const Params& theta, Scalar u, Method /*method*/, Phi& phi) noexcept {
-      m_linear.begin(u, phi);
-      return phi.dot(theta);
-    }
-    Scalar predicted_output(const Params& /*theta*/, Scalar x) const noexcept { return x; }
-    template <typename Phi>
-    bool regress(const Params& /*theta*/, Scalar /*x*/, Scalar y, Method /*method*/, Phi& /*phi*/,
-                 Scalar& target) noexcept {
-      target = y;
-      return true;
-    }
-    template <typename Phi>
-    void end(const Params& /*theta*/, const Phi& /*phi*/, Scalar /*u*/, Scalar y, Method /*method*/) noexcept {
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      m_linear.begin(u, m_phi);
+      const Scalar prediction = m_phi.dot(theta);
       m_linear.end(y);  // the lags are the measured outputs
+      return {m_phi, y, prediction, prediction, true};
     }
-    void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
     detail::LinearKeyTerms<Scalar, Na_> m_linear;
+    Params m_phi;
   };
 
-  /// The output-error method's view (Method::OutputError): ARX's parameters as the output-error
-  /// model y = z^-nk B / A u, the way simulate() runs it: one step of the linear block's free run,
-  /// whose sensitivities are all of psi (detail::LinearOutputError).
+  /// The output-error method's view: ARX's parameters as the output-error model
+  /// y = z^-nk B / A u, the way simulate() runs it: one step of the linear block's free run, whose
+  /// sensitivities are all of psi (detail::LinearOutputError). Nothing to hold at the start.
   class OutputErrorTerms {
    public:
-    explicit OutputErrorTerms(const ARX& model)
-        : m_linear(model.na(), model.nb(), model.nk(), model.num_params()) {}
+    explicit OutputErrorTerms(const ARX& model, Eigen::Index /*hold*/ = 0)
+        : m_linear(model.na(), model.nb(), model.nk(), model.num_params()), m_psi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_linear.reset(); }
-    template <typename Psi>
-    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
-      return m_linear.step(theta, u, psi);
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
+      const Scalar y = m_linear.step(theta, u, m_psi);
+      return {y, m_psi, y};
     }
-    template <typename Psi>
-    void commit(const Psi& psi, Scalar /*output*/) noexcept { m_linear.commit(psi); }
-    void correct(const Params& delta) noexcept { m_linear.correct(delta); }
+    void accept(const Params& delta) noexcept {
+      m_linear.commit(m_psi);
+      m_linear.correct(delta);
+    }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }
-    void constrain(Params& /*theta*/) const noexcept {}
-    template <typename Psi>
-    void hold(Psi& /*psi*/) const noexcept {}
-    Scalar internal() const noexcept { return m_linear.x(); }
 
    private:
     detail::LinearOutputError<Scalar, Na_, kNumParams> m_linear;
+    Params m_psi;
   };
 
  private:

@@ -2,8 +2,8 @@
 // Hammerstein model: two-segment input polynomial N1 (eqs. 3-5), then the linear block
 // (eqs. 6-8, b_0 = 1); y = x. Parameters in eq. (19) order: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na.
 
-#include "../detail/hammerstein_front.hpp"
-#include "../detail/model_runs.hpp"
+#include "detail/hammerstein_front.hpp"
+#include "detail/model_runs.hpp"
 
 namespace bonl {
 
@@ -55,53 +55,42 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0> {
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form (eq. 14): y(k) = [basis(u(k-nk)), w lags, -x lags] . theta. The past x are the
-  /// model's free run for Method::Paper and the measured y for Method::EquationError.
+  /// measured y for the equation-error method and the model's own run for the paper's.
   class KeyTerms {
    public:
-    explicit KeyTerms(const Hammerstein& model) : m_front(model.na(), model.nb(), model.nk(), model.r()) {}
+    KeyTerms(const Hammerstein& model, KeyTermMethod method)
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), method), m_method(method),
+          m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_front.reset(); }
-    template <typename Phi>
-    Scalar begin(const Params& theta, Scalar u, Method method, Phi& phi) noexcept {
-      return m_front.begin(theta, u, method, phi);
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      if (m_front.pending()) m_front.store_a_posteriori(theta, m_phi);
+      const Scalar x = m_front.begin(theta, u, m_phi);
+      if (m_method == KeyTermMethod::EquationError) m_front.store(y);
+      return {m_phi, y, x, x, true};
     }
-    Scalar predicted_output(const Params& /*theta*/, Scalar x) const noexcept { return x; }
-    template <typename Phi>
-    bool regress(const Params& /*theta*/, Scalar /*x*/, Scalar y, Method /*method*/, Phi& /*phi*/,
-                 Scalar& target) noexcept {
-      target = y;
-      return true;
-    }
-    template <typename Phi>
-    void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
-      m_front.end(theta, u, method == Method::Paper ? m_front.internal(theta, phi, method) : y, method);
-    }
-    void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
     detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
+    KeyTermMethod m_method;
+    Params m_phi;
   };
 
-  /// The output-error method's view (Method::OutputError): the free run one step at a time with
-  /// its sensitivities; y = x, so dy/dtheta = dx/dtheta.
+  /// The output-error method's view: the free run one step at a time with its sensitivities;
+  /// y = x, so dy/dtheta = dx/dtheta. Nothing to hold at the start.
   class OutputErrorTerms {
    public:
-    explicit OutputErrorTerms(const Hammerstein& model) : m_front(model.na(), model.nb(), model.nk(), model.r()) {}
+    explicit OutputErrorTerms(const Hammerstein& model, Eigen::Index /*hold*/ = 0)
+        : m_front(model.na(), model.nb(), model.nk(), model.r()) {}
     void reset() noexcept { m_front.reset(); }
-    /// Pushes u(k); returns the simulated y(k) with `theta` and writes dy(k)/dtheta into psi.
-    template <typename Psi>
-    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x = m_front.step(theta, u);
-      psi = m_front.sensitivity();
-      return x;
+      return {x, m_front.sensitivity(), x};
     }
-    template <typename Psi>
-    void commit(const Psi& /*psi*/, Scalar /*output*/) noexcept { m_front.commit(); }
-    void correct(const Params& delta) noexcept { m_front.correct(delta); }
+    void accept(const Params& delta) noexcept {
+      m_front.commit();
+      m_front.correct(delta);
+    }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
-    void constrain(Params& /*theta*/) const noexcept {}
-    template <typename Psi>
-    void hold(Psi& /*psi*/) const noexcept {}
-    Scalar internal() const noexcept { return m_front.x(); }
 
    private:
     detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;

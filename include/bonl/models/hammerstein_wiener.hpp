@@ -6,9 +6,9 @@
 #include <algorithm>
 
 #include "../blocks/output_polynomial.hpp"
-#include "../detail/hammerstein_front.hpp"
-#include "../detail/model_runs.hpp"
-#include "../detail/output_polynomial_terms.hpp"
+#include "detail/hammerstein_front.hpp"
+#include "detail/model_runs.hpp"
+#include "detail/output_polynomial_terms.hpp"
 
 namespace bonl {
 
@@ -91,67 +91,57 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form: y(k) = x(k) + sum_{m>=2} q_m x(k)^m with x(k) the front's key-term expression,
-  /// i.e. regressor [front, x^2(k), ..., x^r1(k)] with x(k) the a-priori estimate.
+  /// i.e. regressor [front, x^2(k), ..., x^r1(k)] with x(k) the a-priori estimate. The past x: the
+  /// equation-error method maps the measured y back through q^-1, the paper's keeps the model's own.
   class KeyTerms {
    public:
-    explicit KeyTerms(const HammersteinWiener& model)
-        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_output(model.r1(), model.num_params()) {}
+    KeyTerms(const HammersteinWiener& model, KeyTermMethod method)
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), method), m_output(model.r1(), model.num_params()),
+          m_method(method), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_front.reset(); }
-    template <typename Phi>
-    Scalar begin(const Params& theta, Scalar u, Method method, Phi& phi) noexcept {
-      return m_front.begin(theta, u, method, phi);
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      if (m_front.pending()) m_front.store_a_posteriori(theta, m_phi);
+      const Scalar x = m_front.begin(theta, u, m_phi);
+      const Scalar prediction = m_output.output(theta, x);
+      m_output.regress(x, m_phi);
+      if (m_method == KeyTermMethod::EquationError) m_front.store(m_output.invert(theta, y, x));
+      return {m_phi, y, prediction, x, true};
     }
-    Scalar predicted_output(const Params& theta, Scalar x) const noexcept { return m_output.output(theta, x); }
-    template <typename Phi>
-    bool regress(const Params& /*theta*/, Scalar x, Scalar y, Method /*method*/, Phi& phi, Scalar& target) noexcept {
-      m_output.regress(x, phi);
-      target = y;
-      return true;
-    }
-    template <typename Phi>
-    void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
-      const Scalar x_model = m_front.internal(theta, phi, method);
-      // Equation error: the x the measured y says (q inverted); paper: the model's own.
-      const Scalar x_lag = method == Method::EquationError ? m_output.invert(theta, y, x_model) : x_model;
-      m_front.end(theta, u, x_lag, method);
-    }
-    void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
     detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
     detail::OutputPolynomialTerms<Scalar> m_output;
+    KeyTermMethod m_method;
+    Params m_phi;
   };
 
-  /// The output-error method's view (Method::OutputError): the front's free run with its
-  /// sensitivities, then y = x + sum_{m>=2} q_m x^m, so dy/dtheta_front = q'(x) dx/dtheta_front and
-  /// dy/dq_m = x^m.
+  /// The output-error method's view: the front's free run with its sensitivities, then
+  /// y = x + sum_{m>=2} q_m x^m, so dy/dtheta_front = q'(x) dx/dtheta_front and dy/dq_m = x^m.
+  /// Nothing to hold at the start.
   class OutputErrorTerms {
    public:
-    explicit OutputErrorTerms(const HammersteinWiener& model)
+    explicit OutputErrorTerms(const HammersteinWiener& model, Eigen::Index /*hold*/ = 0)
         : m_front(model.na(), model.nb(), model.nk(), model.r()), m_output(model.r1(), model.num_params()),
-          m_r1(model.r1()), m_n(model.num_params()) {}
+          m_front_size(model.num_params() - model.r1() + 1), m_psi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_front.reset(); }
-    template <typename Psi>
-    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       Scalar slope;
-      const Scalar y = m_output.output_and_sensitivity(theta, m_front.step(theta, u), psi, slope);
-      psi.head(m_n - m_r1 + 1) = slope * m_front.sensitivity();
-      return y;
+      const Scalar x = m_front.step(theta, u);
+      const Scalar y = m_output.output_and_sensitivity(theta, x, m_psi, slope);
+      m_psi.head(m_front_size) = slope * m_front.sensitivity();
+      return {y, m_psi, x};
     }
-    template <typename Psi>
-    void commit(const Psi& /*psi*/, Scalar /*output*/) noexcept { m_front.commit(); }
-    void correct(const Params& delta) noexcept { m_front.correct(delta.head(m_n - m_r1 + 1)); }
+    void accept(const Params& delta) noexcept {
+      m_front.commit();
+      m_front.correct(delta.head(m_front_size));
+    }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
-    void constrain(Params& /*theta*/) const noexcept {}
-    template <typename Psi>
-    void hold(Psi& /*psi*/) const noexcept {}
-    Scalar internal() const noexcept { return m_front.x(); }
 
    private:
     detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;
     detail::OutputPolynomialTerms<Scalar> m_output;
-    Eigen::Index m_r1;
-    Eigen::Index m_n;
+    Eigen::Index m_front_size;
+    Params m_psi;
   };
 
  private:

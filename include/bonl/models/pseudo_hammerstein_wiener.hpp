@@ -8,8 +8,8 @@
 #include <string>
 
 #include "../blocks/backlash.hpp"
-#include "../detail/hammerstein_front.hpp"
-#include "../detail/model_runs.hpp"
+#include "detail/hammerstein_front.hpp"
+#include "detail/model_runs.hpp"
 
 namespace bonl {
 
@@ -85,6 +85,12 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     return detail::predict_one_step(*this, u, y);
   }
 
+  /// Projects an estimate onto the model's valid set: c >= 0.
+  void constrain(Params& theta) const noexcept {
+    Scalar& c = theta[this->num_params() - 1];
+    if (c < Scalar(0)) c = Scalar(0);
+  }
+
   /// Zero, but c = c0 (the paper starts from c(0) = 0.01).
   Params initial_estimate(Scalar c0) const {
     Params theta = Params::Zero(this->num_params());
@@ -97,28 +103,25 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   /// eqs. (30)-(31) and dx the change of the model's free-run x.
   /// EquationError: the a-priori x decides the regime against the measured y(k-1) (eqs. 30-31); pushing
   /// up gives y = x - c (s = -1), down y = x + c (s = +1); inside the gap y(k) = y(k-1) says nothing
-  /// about theta and the sample is skipped. Past x are clipped to [y - c, y + c].
+  /// about theta and the sample is not informative. Past x are clipped to [y - c, y + c].
   class KeyTerms {
    public:
-    explicit KeyTerms(const PseudoHammersteinWiener& model)
-        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_last(model.num_params() - 1) {}
+    KeyTerms(const PseudoHammersteinWiener& model, KeyTermMethod method)
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), method), m_method(method),
+          m_last(model.num_params() - 1), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_front.reset();
       m_y_prev = Scalar(0);
       m_x_prev = Scalar(0);
     }
-    template <typename Phi>
-    Scalar begin(const Params& theta, Scalar u, Method method, Phi& phi) noexcept {
-      const Scalar x = m_front.begin(theta, u, method, phi);
-      phi[m_last] = Scalar(0);
-      return x;
-    }
-    Scalar predicted_output(const Params& theta, Scalar x) const noexcept {
-      return Backlash<Scalar>::map(x, m_y_prev, std::max(theta[m_last], Scalar(0)));
-    }
-    template <typename Phi>
-    bool regress(const Params& theta, Scalar x, Scalar y, Method method, Phi& phi, Scalar& target) noexcept {
-      if (method == Method::Paper) {
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      if (m_front.pending()) m_x_prev = m_front.store_a_posteriori(theta, m_phi);
+      const Scalar x = m_front.begin(theta, u, m_phi);
+      const Scalar prediction = Backlash<Scalar>::map(x, m_y_prev, std::max(theta[m_last], Scalar(0)));
+      Scalar target = y;
+      bool informative = true;
+      m_phi[m_last] = Scalar(0);
+      if (m_method == KeyTermMethod::Paper) {
         const Scalar c = theta[m_last];
         const Scalar g3 = backlash_g3(x, m_y_prev, c);
         const Scalar g4 = backlash_g4(x, m_y_prev, c);
@@ -126,105 +129,94 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
         const Scalar sgn = dx > Scalar(0) ? Scalar(1) : (dx < Scalar(0) ? Scalar(-1) : Scalar(0));
         const Scalar y1 = x - Scalar(0.5) * c * (sgn + Scalar(1)) * g3 + Scalar(0.5) * c * (Scalar(1) - sgn) * g4;
         target = y - (m_y_prev - y1) * (g3 - Scalar(1)) * (g4 - Scalar(1));
-        phi[m_last] = Scalar(0.5) * ((Scalar(1) - sgn) * g4 - (Scalar(1) + sgn) * g3);
-        return true;
-      }
-      target = y;
-      if (theta.head(m_last).isZero(0)) {
-        // No model yet (the estimate's front is still all zero): the a-priori x says nothing about
-        // the regime, so do not guess one; the sample informs the front as a Hammerstein sample.
-        phi[m_last] = Scalar(0);
-        return true;
-      }
-      const Scalar c = std::max(theta[m_last], Scalar(0));
-      const Scalar g3 = backlash_g3(x, m_y_prev, c);
-      const Scalar g4 = backlash_g4(x, m_y_prev, c);
-      phi[m_last] = g4 - g3;
-      return g3 + g4 > Scalar(0);
-    }
-    template <typename Phi>
-    void end(const Params& theta, const Phi& phi, Scalar u, Scalar y, Method method) noexcept {
-      const Scalar x_model = m_front.internal(theta, phi, method);
-      Scalar x_lag = x_model;
-      if (method == Method::EquationError) {
+        m_phi[m_last] = Scalar(0.5) * ((Scalar(1) - sgn) * g4 - (Scalar(1) + sgn) * g3);
+      } else {
+        // With no model yet (the estimate's front still all zero) the a-priori x says nothing about
+        // the regime, so do not guess one: the sample informs the front as a Hammerstein sample.
         const Scalar c = std::max(theta[m_last], Scalar(0));
-        x_lag = std::min(std::max(x_model, y - c), y + c);
+        if (!theta.head(m_last).isZero(0)) {
+          const Scalar g3 = backlash_g3(x, m_y_prev, c);
+          const Scalar g4 = backlash_g4(x, m_y_prev, c);
+          m_phi[m_last] = g4 - g3;
+          informative = g3 + g4 > Scalar(0);
+        }
+        m_front.store(std::min(std::max(x, y - c), y + c));
       }
-      m_front.end(theta, u, x_lag, method);
-      m_x_prev = x_model;
       m_y_prev = y;
-    }
-    void constrain(Params& theta, Method method) const noexcept {
-      if (method != Method::Paper && theta[m_last] < Scalar(0)) theta[m_last] = Scalar(0);
+      return {m_phi, target, prediction, x, informative};
     }
 
    private:
     detail::FrontKeyTerms<Scalar, Na_, Nb_, R_> m_front;
+    KeyTermMethod m_method;
     Eigen::Index m_last;
+    Params m_phi;
     Scalar m_y_prev = Scalar(0);
-    Scalar m_x_prev = Scalar(0);
+    Scalar m_x_prev = Scalar(0);  // the paper's method: the model's x(k-1), a posteriori
   };
 
-  /// The output-error method's view (Method::OutputError): the front's free run with its
-  /// sensitivities, then the backlash with the model's own previous output as its memory. Driving up
-  /// (x - c > y(k-1)) y = x - c, so dy/dtheta = [dx/dtheta, -1]; driving down y = x + c and
-  /// [dx/dtheta, +1]; inside the gap y(k) = y(k-1) and its sensitivity is held. With c = 0 the block
-  /// is the identity and counts as driving.
+  /// The output-error method's view: the front's free run with its sensitivities, then the
+  /// backlash with the model's own previous output as its memory. Driving up (x - c > y(k-1))
+  /// y = x - c, so dy/dtheta = [dx/dtheta, -1]; driving down y = x + c and [dx/dtheta, +1]; inside the
+  /// gap y(k) = y(k-1) and its sensitivity is held. With c = 0 the block is the identity and counts
+  /// as driving.
   ///
   /// A model at rest inside its own gap (front all zero, c > 0) has a zero gradient: nothing can
-  /// move it. The estimator therefore starts P-H-W with c = 0 and holds c there for its first samples
-  /// (hold()), so that the front is learnt first, as a Hammerstein model's.
+  /// move it. The estimator therefore starts P-H-W with c = 0, and these terms hold c there (its
+  /// sensitivity zero) for the first `hold` samples after each start from rest, so that the front is
+  /// learnt first, as a Hammerstein model's.
   class OutputErrorTerms {
    public:
-    explicit OutputErrorTerms(const PseudoHammersteinWiener& model)
+    explicit OutputErrorTerms(const PseudoHammersteinWiener& model, Eigen::Index hold = 0)
         : m_front(model.na(), model.nb(), model.nk(), model.r()), m_last(model.num_params() - 1),
-          m_dy(Params::Zero(model.num_params())) {}
+          m_psi(Params::Zero(model.num_params())), m_dy(m_psi), m_hold(hold) {}
     void reset() noexcept {
       m_front.reset();
       m_y = Scalar(0);
       m_dy.setZero();
+      m_samples = 0;
     }
-    template <typename Psi>
-    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x = m_front.step(theta, u);
       const Scalar c = std::max(theta[m_last], Scalar(0));
       if (x - c > m_y || (c == Scalar(0) && x >= m_y)) {
-        psi.head(m_last) = m_front.sensitivity();
-        psi[m_last] = Scalar(-1);
-        return x - c;
+        m_psi.head(m_last) = m_front.sensitivity();
+        m_psi[m_last] = Scalar(-1);
+        m_output = x - c;
+      } else if (x + c < m_y) {
+        m_psi.head(m_last) = m_front.sensitivity();
+        m_psi[m_last] = Scalar(1);
+        m_output = x + c;
+      } else {
+        m_psi = m_dy;
+        m_output = m_y;
       }
-      if (x + c < m_y) {
-        psi.head(m_last) = m_front.sensitivity();
-        psi[m_last] = Scalar(1);
-        return x + c;
+      if (m_samples < m_hold) {
+        m_psi[m_last] = Scalar(0);
+        ++m_samples;
       }
-      psi = m_dy;
-      return m_y;
+      return {m_output, m_psi, x};
     }
-    /// Stores the step: x and its sensitivity in the front, y(k) = `output` and its sensitivity psi as
-    /// the backlash memory.
-    template <typename Psi>
-    void commit(const Psi& psi, Scalar output) noexcept {
+    /// Stores the step: x and its sensitivity in the front, y(k) and its sensitivity as the
+    /// backlash memory; then moves them to first order along the estimate's change `delta`.
+    void accept(const Params& delta) noexcept {
       m_front.commit();
-      m_y = output;
-      m_dy = psi;
-    }
-    void correct(const Params& delta) noexcept {
+      m_y = m_output;
+      m_dy = m_psi;
       m_front.correct(delta.head(m_last));
       m_y += m_dy.dot(delta);
     }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
-    void constrain(Params& theta) const noexcept { theta[m_last] = std::max(theta[m_last], Scalar(0)); }
-    /// Zeroes the sensitivity to c, which is held (at 0) for the estimator's first samples.
-    template <typename Psi>
-    void hold(Psi& psi) const noexcept { psi[m_last] = Scalar(0); }
-    Scalar internal() const noexcept { return m_front.x(); }
 
    private:
     detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;
     Eigen::Index m_last;
-    Scalar m_y = Scalar(0);  // the model's own y(k-1): the backlash memory
-    Params m_dy;             // and its sensitivity
+    Params m_psi;            // d y(k) / d theta of the last step
+    Params m_dy;             // the model's own y(k-1), the backlash memory, and its sensitivity
+    Scalar m_y = Scalar(0);
+    Scalar m_output = Scalar(0);  // y(k) of the last step
+    Eigen::Index m_hold;
+    Eigen::Index m_samples = 0;
   };
 };
 

@@ -13,12 +13,12 @@
 
 #include "../blocks/linear_block.hpp"
 #include "../blocks/output_polynomial.hpp"
-#include "../detail/linear_terms.hpp"
-#include "../detail/model_runs.hpp"
-#include "../detail/output_polynomial_terms.hpp"
 #include "../detail/validate.hpp"
-#include "../estimator/method.hpp"
+#include "detail/linear_terms.hpp"
+#include "detail/model_runs.hpp"
+#include "detail/output_polynomial_terms.hpp"
 #include "model_description.hpp"
+#include "model_steps.hpp"
 
 namespace bonl {
 
@@ -151,89 +151,83 @@ class Wiener {
 
   /// Where the recursive estimator starts (all zero).
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
+  /// Projects an estimate onto the model's valid set: every theta is valid.
+  void constrain(Params& /*theta*/) const noexcept {}
 
   /// Key-term form: regressor [u(k-nk..k-nk-nb), -x(k-1..k-na), x(k)^2..x(k)^r1], target y(k), with
   /// x(k) the a-priori estimate [u lags, -x lags] . [b, a]. The past x: the equation-error method maps
-  /// the measured y back through q^-1, the paper's method keeps the model's estimates.
+  /// the measured y back through q^-1, the paper's method keeps the model's estimates (eq. 24: stored
+  /// a posteriori, at the next step).
   class KeyTerms {
    public:
-    explicit KeyTerms(const Wiener& model)
-        : m_linear(model.na(), model.nb(), model.nk()), m_output(model.r1(), model.num_params()),
-          m_linear_size(model.nb() + 1 + model.na()) {}
+    KeyTerms(const Wiener& model, KeyTermMethod method)
+        : m_linear(model.na(), model.nb(), model.nk()), m_output(model.r1(), model.num_params()), m_method(method),
+          m_linear_size(model.nb() + 1 + model.na()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_linear.reset();
-      m_x_begin = Scalar(0);
+      m_pending = false;
     }
-    template <typename Phi>
-    Scalar begin(const Params& theta, Scalar u, Method /*method*/, Phi& phi) noexcept {
-      m_linear.begin(u, phi);
-      m_x_begin = linear_part(theta, phi);
-      return m_x_begin;
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      if (m_pending) m_linear.end(linear_part(theta));
+      m_linear.begin(u, m_phi);
+      const Scalar x = linear_part(theta);
+      const Scalar prediction = m_output.output(theta, x);
+      m_output.regress(x, m_phi);
+      if (m_method == KeyTermMethod::EquationError) {
+        m_linear.end(m_output.invert(theta, y, x));
+      } else {
+        m_pending = true;
+      }
+      return {m_phi, y, prediction, x, true};
     }
-    Scalar predicted_output(const Params& theta, Scalar x) const noexcept { return m_output.output(theta, x); }
-    template <typename Phi>
-    bool regress(const Params& /*theta*/, Scalar x, Scalar y, Method /*method*/, Phi& phi, Scalar& target) noexcept {
-      m_output.regress(x, phi);
-      target = y;
-      return true;
-    }
-    template <typename Phi>
-    void end(const Params& theta, const Phi& phi, Scalar /*u*/, Scalar y, Method method) noexcept {
-      // The paper's method re-evaluates x with the updated estimate (eq. 24); the equation-error
-      // method has the theta begin() had, so it keeps the x begin() returned, and stores the x the
-      // measured y says (q inverted).
-      const Scalar x_model = method == Method::Paper ? linear_part(theta, phi) : m_x_begin;
-      m_linear.end(method == Method::EquationError ? m_output.invert(theta, y, x_model) : x_model);
-    }
-    void constrain(Params& /*theta*/, Method /*method*/) const noexcept {}
 
    private:
     /// x(k) = [u lags, -x lags] . [b, a].
-    template <typename Phi>
-    Scalar linear_part(const Params& theta, const Phi& phi) const noexcept {
-      return phi.template head<kLinearParams>(m_linear_size).dot(theta.template head<kLinearParams>(m_linear_size));
+    Scalar linear_part(const Params& theta) const noexcept {
+      return m_phi.template head<kLinearParams>(m_linear_size).dot(theta.template head<kLinearParams>(m_linear_size));
     }
 
     detail::LinearKeyTerms<Scalar, Na_> m_linear;
     detail::OutputPolynomialTerms<Scalar> m_output;
+    KeyTermMethod m_method;
     Eigen::Index m_linear_size;
-    Scalar m_x_begin = Scalar(0);
+    Params m_phi;
+    bool m_pending = false;  // the paper's method: the previous sample's x waits to be stored
   };
 
-  /// The output-error method's view (Method::OutputError): one step of the linear block's free run
-  /// with its sensitivities (detail::LinearOutputError, as ARX's), then y = x + sum_{m>=2} q_m x^m, so
-  /// dy/d[b, a] = q'(x) dx/d[b, a] and dy/dq_m = x^m.
+  /// The output-error method's view: one step of the linear block's free run with its
+  /// sensitivities (detail::LinearOutputError, as ARX's), then y = x + sum_{m>=2} q_m x^m, so
+  /// dy/d[b, a] = q'(x) dx/d[b, a] and dy/dq_m = x^m. Nothing to hold at the start.
   class OutputErrorTerms {
    public:
     using Sensitivity = Eigen::Matrix<Scalar, kLinearParams, 1>;
 
-    explicit OutputErrorTerms(const Wiener& model)
+    explicit OutputErrorTerms(const Wiener& model, Eigen::Index /*hold*/ = 0)
         : m_linear(model.na(), model.nb(), model.nk(), model.nb() + 1 + model.na()),
-          m_output(model.r1(), model.num_params()), m_dx(Sensitivity::Zero(model.nb() + 1 + model.na())) {}
+          m_output(model.r1(), model.num_params()), m_dx(Sensitivity::Zero(model.nb() + 1 + model.na())),
+          m_psi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_linear.reset();
       m_dx.setZero();
     }
-    template <typename Psi>
-    Scalar predict(const Params& theta, Scalar u, Psi& psi) noexcept {
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       Scalar slope;
-      const Scalar y = m_output.output_and_sensitivity(theta, m_linear.step(theta, u, m_dx), psi, slope);
-      psi.head(m_dx.size()) = slope * m_dx;
-      return y;
+      const Scalar x = m_linear.step(theta, u, m_dx);
+      const Scalar y = m_output.output_and_sensitivity(theta, x, m_psi, slope);
+      m_psi.head(m_dx.size()) = slope * m_dx;
+      return {y, m_psi, x};
     }
-    template <typename Psi>
-    void commit(const Psi& /*psi*/, Scalar /*output*/) noexcept { m_linear.commit(m_dx); }
-    void correct(const Params& delta) noexcept { m_linear.correct(delta.template head<kLinearParams>(m_dx.size())); }
+    void accept(const Params& delta) noexcept {
+      m_linear.commit(m_dx);
+      m_linear.correct(delta.template head<kLinearParams>(m_dx.size()));
+    }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }
-    void constrain(Params& /*theta*/) const noexcept {}
-    template <typename Psi>
-    void hold(Psi& /*psi*/) const noexcept {}
-    Scalar internal() const noexcept { return m_linear.x(); }
 
    private:
     detail::LinearOutputError<Scalar, Na_, kLinearParams> m_linear;
     detail::OutputPolynomialTerms<Scalar> m_output;
     Sensitivity m_dx;
+    Params m_psi;
   };
 
  private:

@@ -9,14 +9,14 @@
 #include <cmath>
 #include <cstddef>
 
-#include "../blocks/linear_block.hpp"
-#include "../blocks/two_segment_polynomial.hpp"
-#include "../estimator/method.hpp"
-#include "../models/model_description.hpp"
-#include "history.hpp"
+#include "../../blocks/linear_block.hpp"
+#include "../../blocks/two_segment_polynomial.hpp"
+#include "../../detail/history.hpp"
+#include "../../detail/stability.hpp"
+#include "../../detail/validate.hpp"
+#include "../model_description.hpp"
+#include "../model_steps.hpp"
 #include "simulated_lags.hpp"
-#include "stability.hpp"
-#include "validate.hpp"
 
 namespace bonl::detail {
 
@@ -118,6 +118,9 @@ class HammersteinFront {
     }
   }
 
+  /// Projects an estimate onto the model's valid set; the front's is all of R^n (P-H-W adds c >= 0).
+  void constrain(Params& /*theta*/) const noexcept {}
+
   InputBlock input_block() const { return InputBlock(f(), p()); }
   Linear linear_block() const {
     Linear block(m_na, m_nb, m_nk);
@@ -171,29 +174,47 @@ class HammersteinFront {
 /// (the model is at rest), which is what the free-run simulation assumes too.
 /// Orders fixed in the template (the paper's 3, 2, 3) make every loop here a fixed, unrolled
 /// sequence and the x history a shift register; Eigen::Dynamic takes them from the constructor.
+/// A sample's x lag is stored by store() (the equation-error method: from the measured output, in
+/// the same step) or store_a_posteriori() (the paper's: at the start of the next step).
 template <typename Scalar, int Na = Eigen::Dynamic, int Nb = Eigen::Dynamic, int R = Eigen::Dynamic>
 class FrontKeyTerms {
   static constexpr int kCoeffs = poly_size(R);  // r + 1
+  static constexpr int kFront = front_params(Na, Nb, R);
 
  public:
-  FrontKeyTerms() = default;
-  FrontKeyTerms(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r)
-      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_u(nk + nb + 1), m_w(nk + nb + 1), m_x(na) {}
+  FrontKeyTerms(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, KeyTermMethod method)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_method(method), m_u(nk + nb + 1), m_w(nk + nb + 1), m_x(na) {}
 
   void reset() noexcept {
     m_u.clear();
     m_w.clear();
     m_x.clear();
     m_k = 0;
-    m_x_begin = Scalar(0);
+    m_pending = false;
+  }
+
+  /// The paper's method: the previous sample's x and w wait for store_a_posteriori().
+  bool pending() const noexcept { return m_pending; }
+
+  /// The paper's method (eq. 24): stores the previous sample's x = phi . theta and w = N1(u) with
+  /// `theta`, the estimate updated since; `phi` is that sample's regressor. Returns that x.
+  template <typename Theta, typename Phi>
+  Scalar store_a_posteriori(const Theta& theta, const Phi& phi) noexcept {
+    const Eigen::Index n = 2 * (r() + 1) + nb() + na();
+    const Scalar x = phi.template head<kFront>(n).dot(theta.template head<kFront>(n));
+    m_x.push(x);
+    m_w.push(TwoSegmentPolynomial<Scalar>::evaluate(coefficients(theta, 0), coefficients(theta, r() + 1), m_u[0]));
+    advance();
+    m_pending = false;
+    return x;
   }
 
   /// Pushes u(k), writes the front's regressor into phi.head(front size) and returns
   /// x(k) = regressor . theta over those entries. x is summed from the values as they are written,
   /// not by reading phi back: a vector load of entries just stored one by one stalls on
-  /// store-to-load forwarding (measured: a fifth of the P-H-W update's time).
+  /// store-to-load forwarding (docs/performance.md).
   template <typename Theta, typename Phi>
-  Scalar begin(const Theta& theta, Scalar u, Method method, Phi& phi) noexcept {
+  Scalar begin(const Theta& theta, Scalar u, Phi& phi) noexcept {
     m_u.push(u);
     const Eigen::Index n_fp = 2 * (r() + 1);
     const auto f = coefficients(theta, 0);
@@ -204,12 +225,13 @@ class FrontKeyTerms {
     } else {
       for (Eigen::Index l = 0; l < n_fp; ++l) phi[l] = Scalar(0);
     }
+    const bool paper = m_method == KeyTermMethod::Paper;
     for (Eigen::Index i = 1; i <= nb(); ++i) {
       Scalar w = Scalar(0);
       if (m_k - m_nk - i >= 0) {
-        // Paper: w as estimated when it entered (eq. 24). Default: recomputed with the newest
-        // f, p, so that the regressor is consistent with the parameters being estimated.
-        w = method == Method::Paper ? m_w[m_nk + i - 1] : TwoSegmentPolynomial<Scalar>::evaluate(f, p, m_u[m_nk + i]);
+        // Paper: w as estimated when it entered (eq. 24). Equation error: recomputed with the
+        // newest f, p, so that the regressor is consistent with the parameters being estimated.
+        w = paper ? m_w[m_nk + i - 1] : TwoSegmentPolynomial<Scalar>::evaluate(f, p, m_u[m_nk + i]);
       }
       phi[n_fp + i - 1] = w;
       x += theta[n_fp + i - 1] * w;
@@ -218,29 +240,14 @@ class FrontKeyTerms {
       phi[n_fp + nb() + j - 1] = -m_x[j - 1];
       x -= theta[n_fp + nb() + j - 1] * m_x[j - 1];
     }
-    m_x_begin = x;
+    m_pending = paper;
     return x;
   }
 
-  /// x(k) = regressor . theta over the front's entries, for the lags end() stores. The paper's method
-  /// re-evaluates it with the updated estimate (eq. 24); the equation-error method gets the theta begin()
-  /// had (the estimator's internal copy), so it is the x begin() returned, kept rather than summed again.
-  template <typename Theta, typename Phi>
-  Scalar internal(const Theta& theta, const Phi& phi, Method method) const noexcept {
-    if (method == Method::EquationError) return m_x_begin;
-    const Eigen::Index n = 2 * (r() + 1) + nb() + na();
-    constexpr int kFront = front_params(Na, Nb, R);
-    return phi.template head<kFront>(n).dot(theta.template head<kFront>(n));
-  }
-
-  /// Stores x(k) (the value later regressors use as a lag) and, for the paper's method, w(k).
-  template <typename Theta>
-  void end(const Theta& theta, Scalar u, Scalar x_lag, Method method) noexcept {
+  /// The equation-error method: stores x(k), the lag later regressors use (what the measured output says).
+  void store(Scalar x_lag) noexcept {
     m_x.push(x_lag);
-    if (method == Method::Paper) {
-      m_w.push(TwoSegmentPolynomial<Scalar>::evaluate(coefficients(theta, 0), coefficients(theta, r() + 1), u));
-    }
-    if (m_k < m_nk + nb() + 1) ++m_k;  // only "before or after the record start" matters
+    advance();
   }
 
  private:
@@ -249,6 +256,10 @@ class FrontKeyTerms {
   Eigen::Index nb() const noexcept { return Nb == Eigen::Dynamic ? m_nb : Nb; }
   Eigen::Index r() const noexcept { return R == Eigen::Dynamic ? m_r : R; }
 
+  void advance() noexcept {
+    if (m_k < m_nk + nb() + 1) ++m_k;  // only "before or after the record start" matters
+  }
+
   /// f (start 0) or p (start r + 1): r + 1 entries of theta, of fixed size when R is.
   template <typename Theta>
   auto coefficients(const Theta& theta, Eigen::Index start) const noexcept {
@@ -256,10 +267,11 @@ class FrontKeyTerms {
   }
 
   Eigen::Index m_na = 0, m_nb = 0, m_nk = 0, m_r = 0;
+  KeyTermMethod m_method;
   History<Scalar> m_u, m_w;  // capacity nk + nb + 1: nk is a run-time order
   History<Scalar, Na> m_x;
   Eigen::Index m_k = 0;
-  Scalar m_x_begin = Scalar(0);  // what begin() returned
+  bool m_pending = false;
 };
 
 /// The front for the output-error method: one step of its free-run simulation with the current

@@ -6,9 +6,9 @@
 
 #include <Eigen/Core>
 
-#include "history.hpp"
+#include "../../detail/history.hpp"
+#include "../../detail/stability.hpp"
 #include "simulated_lags.hpp"
-#include "stability.hpp"
 
 namespace bonl::detail {
 

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "../blocks/output_polynomial.hpp"
+#include "../../blocks/output_polynomial.hpp"
 
 namespace bonl::detail {
 

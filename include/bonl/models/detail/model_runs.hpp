@@ -1,6 +1,6 @@
 #pragma once
 // What every model's simulate() and predict() share. One-step-ahead prediction runs the model's
-// key-term tracker with the equation-error method's internal-variable estimates (those that use the
+// key terms with the equation-error method's internal-variable estimates (those that use the
 // measured output) and fixed parameters, so a prediction and the estimator's regressor come from
 // the same code.
 
@@ -8,9 +8,9 @@
 
 #include <string>
 
-#include "../error.hpp"
-#include "../estimator/method.hpp"
-#include "validate.hpp"
+#include "../../detail/validate.hpp"
+#include "../../error.hpp"
+#include "../model_steps.hpp"
 
 namespace bonl::detail {
 
@@ -31,16 +31,9 @@ typename Model::VectorX predict_one_step(const Model& model, const Eigen::Matrix
   require_same_length(u, "u", y, "y");
   require_finite(u, "u");
   require_finite(y, "y");
-  using Scalar = typename Model::Scalar;
-  typename Model::KeyTerms terms(model);
-  const typename Model::Params& theta = model.theta();
-  typename Model::Params phi = Model::Params::Zero(model.num_params());
+  typename Model::KeyTerms terms(model, KeyTermMethod::EquationError);
   typename Model::VectorX prediction(u.size());
-  for (Eigen::Index k = 0; k < u.size(); ++k) {
-    const Scalar x = terms.begin(theta, u[k], Method::EquationError, phi);
-    prediction[k] = terms.predicted_output(theta, x);
-    terms.end(theta, phi, u[k], y[k], Method::EquationError);
-  }
+  for (Eigen::Index k = 0; k < u.size(); ++k) prediction[k] = terms.step(model.theta(), u[k], y[k]).prediction;
   return prediction;
 }
 

@@ -7,7 +7,7 @@
 // is commutative, so P stays exactly symmetric by construction without a triangular view (whose
 // generic kernels cost 4x more at the paper's sizes). The paper's (I - K phi') P / lambda is the same
 // matrix in exact arithmetic. (Written as h h' with h = g sqrt(c), which saves the multiplication by
-// c per entry, the square root lies on the critical path: the P-H-W update was 5 ns slower.)
+// c per entry, the square root lies on the critical path and the update is slower: docs/performance.md.)
 // An update that would make the denominator or a diagonal entry of P non-positive, or a number
 // non-finite, is refused and leaves the state untouched.
 //
@@ -147,7 +147,6 @@ class Rls {
     // reductions. The padding rows of M are zero, so work's padding is zero too. Fixed sizes sum
     // even and odd columns separately, in locals: two dependency chains of n / 2 fused multiply-adds
     // in registers instead of one of n through `work`, a reference (a store and a reload per step).
-    // Measured at the paper's orders: about 10% of the P-H-W and Hammerstein updates.
     if constexpr (N_ == Eigen::Dynamic) {
       work = m_M.col(0) * phi[0];
       for (Eigen::Index j = 1; j < n; ++j) work += m_M.col(j) * phi[j];

@@ -7,7 +7,7 @@
 // most inputs near the boundaries of validity instead of far outside it.
 //
 // Contract checked (besides ASan/UBSan/LSan and no hang):
-// - validate() accepts, or throws std::invalid_argument "bonl::plant: <field> ..." naming a field;
+// - validate() accepts, or throws std::invalid_argument "bonl: plant: <field> ..." naming a field;
 //   nothing else escapes.
 // - Accepted parameters are all finite.
 // - simulate() (5 command intervals of 1 ms, at most 500 CVODE steps each, a command cycling
@@ -112,7 +112,7 @@ bool validates(const Parameters& p) {
     return true;
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
-    const std::string prefix = "bonl::plant: ";
+    const std::string prefix = "bonl: plant: ";
     bool names_field = false;
     if (message.rfind(prefix, 0) == 0) {
       for (const Field& f : kFields) names_field = names_field || message.rfind(prefix + f.name + ' ', 0) == 0;

@@ -4,6 +4,8 @@
 
 #include <bonl/plant/excitation.hpp>
 
+#include <bonl/detail/validate.hpp>
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -20,18 +22,18 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kMaxSmoothRandomTones = 1e6;
 
-/// Throws std::invalid_argument("bonl::plant::excitation::<function>: <message>") unless `condition`.
+/// Throws std::invalid_argument("bonl: excitation::<function>: <message>") unless `condition`.
 void require(bool condition, const char* function, const std::string& message) {
-  if (!condition) throw std::invalid_argument(std::string("bonl::plant::excitation::") + function + ": " + message);
+  bonl::detail::require(condition, std::string("excitation::") + function + ": " + message);
 }
 
 void require_finite(double value, const char* function, const char* name) {
-  require(std::isfinite(value), function, std::string(name) + " must be finite, got " + std::to_string(value));
+  require(std::isfinite(value), function, std::string(name) + " must be finite, got " + bonl::detail::format_number(value));
 }
 
 void require_positive(double value, const char* function, const char* name) {
   require(std::isfinite(value) && value > 0.0, function,
-          std::string(name) + " must be finite and > 0, got " + std::to_string(value));
+          std::string(name) + " must be finite and > 0, got " + bonl::detail::format_number(value));
 }
 
 /// Schroeder phases phi_k = -pi k (k + 1) / n, k = 1..n.
@@ -49,7 +51,7 @@ Command make_multisine(const char* function, const std::vector<double>& frequenc
   require(!frequencies_hz.empty(), function, "frequencies_hz must not be empty");
   for (std::size_t i = 0; i < frequencies_hz.size(); ++i) {
     require(std::isfinite(frequencies_hz[i]) && frequencies_hz[i] >= 0.0, function,
-            "frequencies_hz must be finite and >= 0, got " + std::to_string(frequencies_hz[i]) + " at index " +
+            "frequencies_hz must be finite and >= 0, got " + bonl::detail::format_number(frequencies_hz[i]) + " at index " +
                 std::to_string(i));
   }
   require_finite(amplitude, function, "amplitude");
@@ -100,7 +102,7 @@ Command paper_multisine(double amplitude, double offset) {
 Command smooth_random(double bandwidth_hz, double rms, double duration, std::uint64_t seed, double offset) {
   const char* function = "smooth_random";
   require_positive(bandwidth_hz, function, "bandwidth_hz");
-  require(std::isfinite(rms) && rms >= 0.0, function, "rms must be finite and >= 0, got " + std::to_string(rms));
+  require(std::isfinite(rms) && rms >= 0.0, function, "rms must be finite and >= 0, got " + bonl::detail::format_number(rms));
   require_positive(duration, function, "duration");
   require_finite(offset, function, "offset");
   // Tones k / duration, k = 1..floor(bandwidth * duration); a product that rounding left just short
@@ -110,15 +112,15 @@ Command smooth_random(double bandwidth_hz, double rms, double duration, std::uin
   const double tones = floor_with_snap(product, 1e-9 * std::max(1.0, product));
   require(tones >= 1.0, function,
           "bandwidth_hz * duration must be >= 1 so that at least one tone k / duration fits under the "
-          "bandwidth, got bandwidth_hz = " + std::to_string(bandwidth_hz) + " and duration = " +
-              std::to_string(duration));
+          "bandwidth, got bandwidth_hz = " + bonl::detail::format_number(bandwidth_hz) + " and duration = " +
+              bonl::detail::format_number(duration));
   // Each call of the command costs one sine per tone: a limit far above any use (10 Hz over 10^5 s
   // is 10^6 tones) that turns an absurd product into an error rather than std::bad_alloc or a
   // simulation that never ends.
   require(tones <= kMaxSmoothRandomTones, function,
           "bandwidth_hz * duration must be <= " + std::to_string(static_cast<long>(kMaxSmoothRandomTones)) +
-              " (one sine per tone and call), got bandwidth_hz = " + std::to_string(bandwidth_hz) +
-              " and duration = " + std::to_string(duration));
+              " (one sine per tone and call), got bandwidth_hz = " + bonl::detail::format_number(bandwidth_hz) +
+              " and duration = " + bonl::detail::format_number(duration));
   const auto n = static_cast<std::size_t>(tones);
   std::mt19937_64 generator(seed);
   std::uniform_real_distribution<double> uniform_phase(0.0, kTwoPi);
@@ -140,9 +142,9 @@ Command smooth_random(double bandwidth_hz, double rms, double duration, std::uin
 Command chirp(double f0_hz, double f1_hz, double duration, double amplitude, double offset) {
   const char* function = "chirp";
   require(std::isfinite(f0_hz) && f0_hz >= 0.0, function,
-          "f0_hz must be finite and >= 0, got " + std::to_string(f0_hz));
+          "f0_hz must be finite and >= 0, got " + bonl::detail::format_number(f0_hz));
   require(std::isfinite(f1_hz) && f1_hz >= 0.0, function,
-          "f1_hz must be finite and >= 0, got " + std::to_string(f1_hz));
+          "f1_hz must be finite and >= 0, got " + bonl::detail::format_number(f1_hz));
   require_positive(duration, function, "duration");
   require_finite(amplitude, function, "amplitude");
   require_finite(offset, function, "offset");

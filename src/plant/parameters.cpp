@@ -3,9 +3,10 @@
 
 #include "bonl/plant/parameters.hpp"
 
+#include "bonl/detail/validate.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -15,11 +16,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-[[noreturn]] void fail(const char* name, const std::string& requirement, double value) {
-  std::ostringstream message;
-  message.precision(17);
-  message << "bonl::plant: " << name << ' ' << requirement << ", got " << value;
-  throw std::invalid_argument(message.str());
+/// std::invalid_argument("bonl: plant: <name> <requirement>, got <value>").
+void fail(const char* name, const std::string& requirement, double value) {
+  bonl::detail::require(false, "plant: " + std::string(name) + ' ' + requirement + ", got " + bonl::detail::format_number(value));
 }
 
 void require_positive(const char* name, double value) {
@@ -78,20 +77,20 @@ void Parameters::validate() const {
   require_positive("pivot_to_base_pin", pivot_to_base_pin);
   require_positive("retracted_length", retracted_length);
 
-  if (!(rod_diameter < bore_diameter)) fail("rod_diameter", "must be < bore_diameter (" + std::to_string(bore_diameter) + ")", rod_diameter);
+  if (!(rod_diameter < bore_diameter)) fail("rod_diameter", "must be < bore_diameter (" + bonl::detail::format_number(bore_diameter) + ")", rod_diameter);
   require_non_negative("stroke", stroke);
 
   require_non_negative("return_pressure", return_pressure);
   require_finite("supply_pressure", supply_pressure);
   if (!(supply_pressure > return_pressure))
-    fail("supply_pressure", "must be > return_pressure (" + std::to_string(return_pressure) + ")", supply_pressure);
+    fail("supply_pressure", "must be > return_pressure (" + bonl::detail::format_number(return_pressure) + ")", supply_pressure);
 
   require_positive("neutral_voltage", neutral_voltage);
   if (!(neutral_voltage < max_voltage))
-    fail("neutral_voltage", "must be < max_voltage (" + std::to_string(max_voltage) + ")", neutral_voltage);
+    fail("neutral_voltage", "must be < max_voltage (" + bonl::detail::format_number(max_voltage) + ")", neutral_voltage);
   require_non_negative("dead_band", dead_band);
   if (!(dead_band < neutral_voltage))
-    fail("dead_band", "must be < neutral_voltage (" + std::to_string(neutral_voltage) + ")", dead_band);
+    fail("dead_band", "must be < neutral_voltage (" + bonl::detail::format_number(neutral_voltage) + ")", dead_band);
 
   require_non_negative("internal_leakage", internal_leakage);
   require_non_negative("external_leakage", external_leakage);
@@ -112,13 +111,13 @@ void Parameters::validate() const {
   const double b = pivot_to_base_pin;
   if (!(std::abs(a - b) < retracted_length))
     fail("retracted_length",
-         "must be > |pivot_to_rod_pin - pivot_to_base_pin| (" + std::to_string(std::abs(a - b)) +
+         "must be > |pivot_to_rod_pin - pivot_to_base_pin| (" + bonl::detail::format_number(std::abs(a - b)) +
              ") so that the linkage closes",
          retracted_length);
   if (!(retracted_length + stroke < a + b))
     fail("stroke",
          "must satisfy retracted_length + stroke < pivot_to_rod_pin + pivot_to_base_pin (" +
-             std::to_string(a + b - retracted_length) + " here) so that the linkage closes",
+             bonl::detail::format_number(a + b - retracted_length) + " here) so that the linkage closes",
          stroke);
   // The same in floating point: the gravity force and the joint rate divide by the moment arm, which
   // rounding can make 0 at an end of the stroke (a triangle closing flat) although the strict
@@ -128,14 +127,14 @@ void Parameters::validate() const {
   if (!(arm_retracted > 0.0 && std::isfinite(arm_retracted) && arm_extended > 0.0 && std::isfinite(arm_extended)))
     fail("retracted_length",
          "must leave the linkage a moment arm > 0 over the whole stroke in floating point (at h = 0 it is " +
-             std::to_string(arm_retracted) + " m, at h = stroke " + std::to_string(arm_extended) + " m)",
+             bonl::detail::format_number(arm_retracted) + " m, at h = stroke " + bonl::detail::format_number(arm_extended) + " m)",
          retracted_length);
   // Piston areas that underflow to 0 or overflow (the pressures are forces divided by them).
   if (!(head_area() > 0.0 && std::isfinite(head_area())))
     fail("bore_diameter", "must give a head area > 0 and finite in floating point", bore_diameter);
   if (!(annulus_area() > 0.0 && std::isfinite(annulus_area())))
     fail("rod_diameter", "must give an annulus area > 0 and finite in floating point (bore_diameter " +
-                             std::to_string(bore_diameter) + ")", rod_diameter);
+                             bonl::detail::format_number(bore_diameter) + ")", rod_diameter);
 }
 
 double Parameters::head_area() const { return 0.25 * kPi * bore_diameter * bore_diameter; }

@@ -16,12 +16,12 @@
 #include <cstdlib>
 #include <memory>
 #include <random>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bonl/blocks/backlash.hpp"
+#include "bonl/detail/validate.hpp"
 #include "model.hpp"
 
 namespace bonl::plant {
@@ -36,16 +36,10 @@ using detail::kSpool;
 using detail::kStateSize;
 using detail::kVelocity;
 
-std::string number(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
-}
-
-[[noreturn]] void bad_option(const char* name, const std::string& requirement, double value) {
-  throw std::invalid_argument("bonl::plant::simulate: " + std::string(name) + ' ' + requirement + ", got " +
-                              number(value));
+/// std::invalid_argument("bonl: simulate: <name> <requirement>, got <value>").
+void bad_option(const char* name, const std::string& requirement, double value) {
+  bonl::detail::require(false, "simulate: " + std::string(name) + ' ' + requirement + ", got " +
+                                   bonl::detail::format_number(value));
 }
 
 void require_positive(const char* name, double value) {
@@ -154,8 +148,8 @@ std::string flag_name(int flag) {
 /// Throws CvodeError when a CVODE call returned a negative flag.
 void check(int flag, const char* call, double time, const UserData& data) {
   if (flag >= 0) return;
-  std::string message = "bonl::plant::simulate: " + std::string(call) + " failed with " + flag_name(flag) +
-                        " at t = " + number(time) + " s";
+  std::string message = "bonl: simulate: " + std::string(call) + " failed with " + flag_name(flag) +
+                        " at t = " + bonl::detail::format_number(time) + " s";
   if (!data.last_error.empty()) message += " (" + data.last_error + ")";
   throw CvodeError(message, flag, time);
 }
@@ -167,19 +161,19 @@ void validate_options(const SimulationOptions& options, const Parameters& parame
   const double per_sample = options.sample_time * options.command_rate;
   const double whole = std::round(per_sample);
   if (!(whole >= 1.0 && std::abs(per_sample - whole) <= 1e-9 * whole))
-    bad_option("sample_time", "must be an integer multiple of 1 / command_rate (" + number(1.0 / options.command_rate) + " s)",
+    bad_option("sample_time", "must be an integer multiple of 1 / command_rate (" + bonl::detail::format_number(1.0 / options.command_rate) + " s)",
                options.sample_time);
   const double samples = options.duration / options.sample_time;
   const double whole_samples = std::round(samples);
   if (!(whole_samples >= 1.0 && std::abs(samples - whole_samples) <= 1e-9 * whole_samples))
-    bad_option("duration", "must be an integer multiple of sample_time (" + number(options.sample_time) + " s)",
+    bad_option("duration", "must be an integer multiple of sample_time (" + bonl::detail::format_number(options.sample_time) + " s)",
                options.duration);
   // Counted in doubles before anything is sized by them: a duration of 1e19 s would overflow the
   // integer counts, and 1e8 command intervals (a day at 1 kHz) already take about a minute.
   constexpr double kMaxIntervals = 1e8;
   if (whole_samples * whole > kMaxIntervals)
-    bad_option("duration", "gives " + number(whole_samples * whole) + " command intervals (duration * command_rate); at most " +
-                               number(kMaxIntervals) + " per run (simulate a long record in pieces)",
+    bad_option("duration", "gives " + bonl::detail::format_number(whole_samples * whole) + " command intervals (duration * command_rate); at most " +
+                               bonl::detail::format_number(kMaxIntervals) + " per run (simulate a long record in pieces)",
                options.duration);
   const Tolerances& tol = options.tolerances;
   require_positive("tolerances.relative", tol.relative);
@@ -191,7 +185,7 @@ void validate_options(const SimulationOptions& options, const Parameters& parame
   if (tol.max_steps_per_interval < 1)
     bad_option("tolerances.max_steps_per_interval", "must be >= 1", static_cast<double>(tol.max_steps_per_interval));
   if (!std::isfinite(options.initial_position) || options.initial_position > parameters.stroke)
-    bad_option("initial_position", "must be finite and <= stroke (" + number(parameters.stroke) + " m); negative means mid-stroke",
+    bad_option("initial_position", "must be finite and <= stroke (" + bonl::detail::format_number(parameters.stroke) + " m); negative means mid-stroke",
                options.initial_position);
 }
 
@@ -235,7 +229,7 @@ State derivative(const Parameters& parameters, const State& state, double pilot,
 
 Trajectory simulate(const Parameters& parameters, const Command& command, const SimulationOptions& options) {
   parameters.validate();
-  if (!command) throw std::invalid_argument("bonl::plant::simulate: command must not be empty");
+  bonl::detail::require(static_cast<bool>(command), "simulate: command must not be empty");
   validate_options(options, parameters);
 
   const double rate = options.command_rate;
@@ -252,15 +246,15 @@ Trajectory simulate(const Parameters& parameters, const Command& command, const 
   // --- SUNDIALS objects ---------------------------------------------------------------------
   SUNContext raw_ctx = nullptr;
   if (SUNContext_Create(nullptr, &raw_ctx) != 0 || raw_ctx == nullptr)
-    throw CvodeError("bonl::plant::simulate: SUNContext_Create failed", 0, 0.0);
+    throw CvodeError("bonl: simulate: SUNContext_Create failed", 0, 0.0);
   ContextPtr ctx(raw_ctx);
   VectorPtr y(N_VNew_Serial(kMechanicalSize, ctx.get()));
   VectorPtr abstol(N_VNew_Serial(kMechanicalSize, ctx.get()));
-  if (!y || !abstol) throw CvodeError("bonl::plant::simulate: N_VNew_Serial failed", 0, 0.0);
+  if (!y || !abstol) throw CvodeError("bonl: simulate: N_VNew_Serial failed", 0, 0.0);
   // Fused vector operations (one loop for CVODE's linear combinations of the Nordsieck history
   // instead of a chain of pairwise sums); CVODE's own vectors are clones of y and inherit them.
   if (N_VEnableFusedOps_Serial(y.get(), SUNTRUE) != 0)
-    throw CvodeError("bonl::plant::simulate: N_VEnableFusedOps_Serial failed", 0, 0.0);
+    throw CvodeError("bonl: simulate: N_VEnableFusedOps_Serial failed", 0, 0.0);
   double* x = N_VGetArrayPointer_Serial(y.get());
   x[kPosition] = s0.position;
   x[kVelocity] = s0.velocity;
@@ -274,14 +268,14 @@ Trajectory simulate(const Parameters& parameters, const Command& command, const 
   atol[kRodPressure] = tol.absolute_pressure;
 
   CvodePtr mem(CVodeCreate(CV_BDF, ctx.get()));
-  if (!mem) throw CvodeError("bonl::plant::simulate: CVodeCreate failed", 0, 0.0);
+  if (!mem) throw CvodeError("bonl: simulate: CVodeCreate failed", 0, 0.0);
   check(CVodeSetErrHandlerFn(mem.get(), error_handler, &data), "CVodeSetErrHandlerFn", 0.0, data);
   check(CVodeInit(mem.get(), rhs_callback, 0.0, y.get()), "CVodeInit", 0.0, data);
   check(CVodeSVtolerances(mem.get(), tol.relative, abstol.get()), "CVodeSVtolerances", 0.0, data);
   MatrixPtr jac(SUNDenseMatrix(kMechanicalSize, kMechanicalSize, ctx.get()));
-  if (!jac) throw CvodeError("bonl::plant::simulate: SUNDenseMatrix failed", 0, 0.0);
+  if (!jac) throw CvodeError("bonl: simulate: SUNDenseMatrix failed", 0, 0.0);
   SolverPtr solver(SUNLinSol_Dense(y.get(), jac.get(), ctx.get()));
-  if (!solver) throw CvodeError("bonl::plant::simulate: SUNLinSol_Dense failed", 0, 0.0);
+  if (!solver) throw CvodeError("bonl: simulate: SUNLinSol_Dense failed", 0, 0.0);
   check(CVodeSetLinearSolver(mem.get(), solver.get(), jac.get()), "CVodeSetLinearSolver", 0.0, data);
   check(CVodeSetJacFn(mem.get(), jacobian_callback), "CVodeSetJacFn", 0.0, data);
   check(CVodeSetUserData(mem.get(), &data), "CVodeSetUserData", 0.0, data);
@@ -309,16 +303,16 @@ Trajectory simulate(const Parameters& parameters, const Command& command, const 
     const double tj = data.grid_time(j);
     voltage = command(tj);
     if (!std::isfinite(voltage))
-      throw std::invalid_argument("bonl::plant::simulate: the command is not finite at t = " + number(tj) +
-                                  " s, got " + number(voltage));
+      bonl::detail::require(false, "simulate: the command is not finite at t = " + bonl::detail::format_number(tj) +
+                                  " s, got " + bonl::detail::format_number(voltage));
     const double opening = commanded_opening(parameters, voltage);
     pilot = j == 0 ? opening : bonl::Backlash<double>::map(opening, previous_pilot, hv);
     load = 0.0;
     if (options.load) {
       load = options.load(tj);
       if (!std::isfinite(load))
-        throw std::invalid_argument("bonl::plant::simulate: the load is not finite at t = " + number(tj) +
-                                    " s, got " + number(load));
+        bonl::detail::require(false, "simulate: the load is not finite at t = " + bonl::detail::format_number(tj) +
+                                    " s, got " + bonl::detail::format_number(load));
     }
   };
 
@@ -330,7 +324,7 @@ Trajectory simulate(const Parameters& parameters, const Command& command, const 
     const double v = x[kVelocity];
     if (!std::isfinite(h) || !std::isfinite(v) || !std::isfinite(x[kHeadPressure]) ||
         !std::isfinite(x[kRodPressure]))
-      throw CvodeError("bonl::plant::simulate: the state became non-finite at t = " + number(tj) + " s", 0, tj);
+      throw CvodeError("bonl: simulate: the state became non-finite at t = " + bonl::detail::format_number(tj) + " s", 0, tj);
     const double theta = parameters.linkage_angle(h) - phi0;
     pin = j == 0 ? theta : bonl::Backlash<double>::map(theta, pin, half_backlash);
     out.min_position = std::min(out.min_position, h);

@@ -58,7 +58,7 @@ TEST_CASE("validate rejects a linkage whose moment arm rounds to 0 at an end of 
   p.retracted_length = 1e-300;  // > |a - b| = 0, but cos(phi) rounds to 1
   p.stroke = 1.0;
   REQUIRE(p.moment_arm(0.0) == 0.0);
-  CHECK(message_of(p).rfind("bonl::plant: retracted_length must leave the linkage a moment arm > 0", 0) == 0);
+  CHECK(message_of(p).rfind("bonl: plant: retracted_length must leave the linkage a moment arm > 0", 0) == 0);
   p.retracted_length = 1e-3;  // the same linkage, away from the flat triangle, is fine
   CHECK(message_of(p).empty());
 }
@@ -68,17 +68,17 @@ TEST_CASE("validate rejects piston areas that underflow or overflow") {
   p.bore_diameter = 1e-170;  // D^2 underflows to 0
   p.rod_diameter = 1e-171;
   REQUIRE(p.head_area() == 0.0);
-  CHECK(message_of(p).rfind("bonl::plant: bore_diameter must give a head area > 0", 0) == 0);
+  CHECK(message_of(p).rfind("bonl: plant: bore_diameter must give a head area > 0", 0) == 0);
   p = Parameters{};
   p.bore_diameter = 1e200;  // D^2 overflows
   REQUIRE(std::isinf(p.head_area()));
-  CHECK(message_of(p).rfind("bonl::plant: bore_diameter must give a head area > 0", 0) == 0);
+  CHECK(message_of(p).rfind("bonl: plant: bore_diameter must give a head area > 0", 0) == 0);
   p = Parameters{};
   p.bore_diameter = 2.3e-162;  // D^2 and d^2 round to the same denormal
   p.rod_diameter = 2.2e-162;
   REQUIRE(p.head_area() > 0.0);
   REQUIRE(p.annulus_area() == 0.0);
-  CHECK(message_of(p).rfind("bonl::plant: rod_diameter must give an annulus area > 0", 0) == 0);
+  CHECK(message_of(p).rfind("bonl: plant: rod_diameter must give an annulus area > 0", 0) == 0);
   // The defaults and the 5 t set stay valid.
   CHECK(message_of(Parameters::excavator_20t()).empty());
   CHECK(message_of(Parameters::excavator_5t()).empty());

@@ -113,7 +113,7 @@ TEST_CASE("validation rejects each non-physical parameter and names it") {
       mutate(p);
       INFO("parameter " << name);
       CHECK_THROWS_AS(p.validate(), std::invalid_argument);
-      CHECK_THROWS_WITH(p.validate(), Catch::Contains("bonl::plant: " + name));
+      CHECK_THROWS_WITH(p.validate(), Catch::Contains("bonl: plant: " + name));
     }
   }
 }

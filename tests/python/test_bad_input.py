@@ -430,11 +430,11 @@ FIELDS = sorted(plant.Parameters().to_dict())
 def test_p1_p2_every_parameter_nan_or_inf_is_rejected_by_name(name):
     for bad in (NAN, INF, -INF):
         p = plant.Parameters(**{name: bad})  # construction accepts it; use validates
-        raises(ValueError, f"bonl::plant: {name} must be", p.validate)
-        raises(ValueError, f"bonl::plant: {name} must be", plant.simulate, excitation.step(3.0), p, duration=0.01)
-        raises(ValueError, f"bonl::plant: {name} must be", plant.initial_state, p, 0.75)
-        raises(ValueError, f"bonl::plant: {name} must be", plant.derivative, p, [0.75, 0.0, 5e6, 5e6, 0.0], 0.0)
-        raises(ValueError, f"bonl::plant: {name} must be", plant.experiment, p)
+        raises(ValueError, f"bonl: plant: {name} must be", p.validate)
+        raises(ValueError, f"bonl: plant: {name} must be", plant.simulate, excitation.step(3.0), p, duration=0.01)
+        raises(ValueError, f"bonl: plant: {name} must be", plant.initial_state, p, 0.75)
+        raises(ValueError, f"bonl: plant: {name} must be", plant.derivative, p, [0.75, 0.0, 5e6, 5e6, 0.0], 0.0)
+        raises(ValueError, f"bonl: plant: {name} must be", plant.experiment, p)
 
 
 @pytest.mark.parametrize(
@@ -486,8 +486,8 @@ BAD_OPTIONS = [
     (dict(rtol=INF), ValueError, "tolerances.relative must be > 0 and finite"),
     (dict(rtol=1.0), ValueError, "tolerances.relative must be < 1, got 1"),
     # Before: a segmentation fault (the integer grid counts overflowed), garbage arrays, or a hang.
-    (dict(duration=1e19), ValueError, "duration gives 1e+22 command intervals (duration * command_rate); at most 100000000"),
-    (dict(duration=1e6), ValueError, "duration gives 1000000000 command intervals"),
+    (dict(duration=1e19), ValueError, "duration gives 1e+22 command intervals (duration * command_rate); at most 1e+08"),
+    (dict(duration=1e6), ValueError, "duration gives 1e+09 command intervals"),
     (dict(sample_time=1e-300, command_rate=1e300), ValueError, "command intervals (duration * command_rate); at most"),
     (dict(atol={"position": -1.0}), ValueError, "tolerances.absolute_position must be > 0 and finite"),
     (dict(atol={"pressure": NAN}), ValueError, "tolerances.absolute_pressure must be > 0 and finite"),
@@ -559,7 +559,7 @@ def test_p12_an_integration_cvode_cannot_finish_is_a_numerical_error():
         (lambda: excitation.step(NAN), "step: level must be finite"),
         (lambda: excitation.step(3.0, t_step=INF), "step: t_step must be finite"),
         (lambda: excitation.multisine([], 0.4), "multisine: frequencies_hz must not be empty"),
-        (lambda: excitation.multisine([0.1, -1.0], 0.4), "frequencies_hz must be finite and >= 0, got -1.000000 at index 1"),
+        (lambda: excitation.multisine([0.1, -1.0], 0.4), "frequencies_hz must be finite and >= 0, got -1 at index 1"),
         (lambda: excitation.multisine([0.1, 0.2], 0.4, phases=[0.0]), "phases must be empty or have as many entries"),
         (lambda: excitation.multisine([0.1], NAN), "multisine: amplitude must be finite"),
         (lambda: excitation.paper_multisine(offset=INF), "paper_multisine: offset must be finite"),

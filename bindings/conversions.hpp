@@ -4,12 +4,17 @@
 // converted once to float64 (the caller's array is never written to); anything else is a ValueError
 // that names the argument: None, strings, bytes, complex, datetime, structured dtypes, object arrays
 // holding anything but real numbers, masked arrays with masked entries, and arrays that are not 1-D.
+// The checks are the library's (bonl/detail/validate.hpp): std::invalid_argument "bonl: ...", which
+// pybind11 raises as ValueError.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
+#include <bonl/detail/validate.hpp>
+#include <cmath>
 #include <string>
+#include <utility>
 
 namespace bonl_python {
 namespace py = pybind11;
@@ -30,50 +35,40 @@ inline py::object real_number_type() { return py::module_::import("numbers").att
 /// `object` as a 1-D, C-contiguous float64 array; a new array unless it is one already.
 /// ValueError, naming `name`, for anything that is not a 1-D array of real numbers.
 inline py::array_t<double, py::array::c_style> to_float64_array(const py::handle& object, const char* name) {
+  using bonl::detail::require;
   const std::string prefix(name);
   const std::string expected = prefix + " must be a 1-D array of real numbers";
-  if (object.is_none()) throw py::value_error(expected + ", got None");
-  if (py::isinstance<py::str>(object) || py::isinstance<py::bytes>(object)) {
-    throw py::value_error(expected + ", got " + type_name(object));
-  }
+  require(!object.is_none(), expected + ", got None");
+  require(!py::isinstance<py::str>(object) && !py::isinstance<py::bytes>(object), expected + ", got " + type_name(object));
   const py::module_ numpy = py::module_::import("numpy");
-  if (py::isinstance(object, numpy.attr("ma").attr("MaskedArray")) &&
-      numpy.attr("ma").attr("is_masked")(object).cast<bool>()) {
-    throw py::value_error(prefix + " is a masked array with masked entries: fill them first (numpy.ma.filled)");
-  }
+  require(!(py::isinstance(object, numpy.attr("ma").attr("MaskedArray")) &&
+            numpy.attr("ma").attr("is_masked")(object).cast<bool>()),
+          prefix + " is a masked array with masked entries: fill them first (numpy.ma.filled)");
   py::array array;
   try {
     array = py::array::ensure(object);  // numpy.asarray: no copy for an ndarray
   } catch (const py::error_already_set&) {
     array = py::array();
   }
-  if (!array) {
-    PyErr_Clear();
-    throw py::value_error(expected + ", got " + type_name(object));
-  }
-  if (array.ndim() == 0) {  // a number, or an object numpy cannot see as a sequence (dict, set, generator)
-    throw py::value_error(expected + ", got a single " + type_name(object));
-  }
-  if (array.ndim() != 1) {
-    throw py::value_error(prefix + " must be 1-D, got an array with " + std::to_string(array.ndim()) + " dimensions");
-  }
+  if (!array) PyErr_Clear();
+  require(static_cast<bool>(array), expected + ", got " + type_name(object));
+  // ndim 0: a number, or an object numpy cannot see as a sequence (dict, set, generator).
+  require(array.ndim() != 0, expected + ", got a single " + type_name(object));
+  require(array.ndim() == 1, prefix + " must be 1-D, got an array with " + std::to_string(array.ndim()) + " dimensions");
   const char kind = array.dtype().kind();
-  if (kind == 'c') {
-    throw py::value_error(prefix + " must be real, got a complex array (dtype " +
-                          std::string(py::str(array.dtype())) + "): pass its .real or abs() explicitly");
-  }
+  require(kind != 'c', prefix + " must be real, got a complex array (dtype " + std::string(py::str(array.dtype())) +
+                           "): pass its .real or abs() explicitly");
   if (kind == 'O') {
     // numpy would convert str elements by parsing them, None to NaN and complex numbers by dropping
     // their imaginary part: every element must be a real number instead.
     const py::object real = real_number_type();
     for (py::ssize_t i = 0; i < array.shape(0); ++i) {
       const py::object item = array.attr("__getitem__")(i);
-      if (!py::isinstance(item, real)) {
-        throw py::value_error(prefix + "[" + std::to_string(i) + "] must be a real number, got " + type_name(item));
-      }
+      require(py::isinstance(item, real),
+              prefix + "[" + std::to_string(i) + "] must be a real number, got " + type_name(item));
     }
-  } else if (!is_real_kind(kind)) {
-    throw py::value_error(expected + ", got an array of dtype " + std::string(py::str(array.dtype())));
+  } else {
+    require(is_real_kind(kind), expected + ", got an array of dtype " + std::string(py::str(array.dtype())));
   }
   using Float64 = py::array_t<double, py::array::c_style | py::array::forcecast>;
   Float64 converted;
@@ -82,10 +77,8 @@ inline py::array_t<double, py::array::c_style> to_float64_array(const py::handle
   } catch (const py::error_already_set&) {
     converted = Float64();
   }
-  if (!converted) {  // e.g. an object array holding an int too large for a double
-    PyErr_Clear();
-    throw py::value_error(expected + " that a float64 can hold");
-  }
+  if (!converted) PyErr_Clear();  // e.g. an object array holding an int too large for a double
+  require(static_cast<bool>(converted), expected + " that a float64 can hold");
   return converted;
 }
 
@@ -103,14 +96,26 @@ inline double to_scalar(const py::handle& object, const std::string& name) {
     const auto array = py::reinterpret_borrow<py::array>(object);
     real = array.ndim() == 0 && is_real_kind(array.dtype().kind());
   }
-  if (!real) {
-    throw py::value_error(name + " must be a real number, got " + (object.is_none() ? "None" : type_name(object)));
-  }
+  bonl::detail::require(real, name + " must be a real number, got " + (object.is_none() ? "None" : type_name(object)));
+  double value = 0.0;
+  std::string overflow;
   try {
-    return py::float_(py::reinterpret_borrow<py::object>(object)).cast<double>();
+    value = py::float_(py::reinterpret_borrow<py::object>(object)).cast<double>();
   } catch (const py::error_already_set& e) {  // an int beyond double's range
-    throw py::value_error(name + " must be a real number that a float64 can hold: " + e.what());
+    overflow = e.what();
   }
+  bonl::detail::require(overflow.empty(), name + " must be a real number that a float64 can hold: " + overflow);
+  return value;
 }
+
+/// ValueError "bonl: <name> must be finite, got <value>" for a NaN or an infinity (validate.hpp
+/// checks arrays only).
+inline void require_finite_number(double value, const std::string& name) {
+  bonl::detail::require(std::isfinite(value), name + " must be finite, got " + bonl::detail::format_number(value));
+}
+
+/// Eigen vector -> numpy float64 array without copying the data (the array owns the moved vector).
+inline py::array to_numpy(Eigen::VectorXd&& vector) { return py::cast(std::move(vector)); }
+inline py::array to_numpy(const Eigen::VectorXd& vector) { return py::cast(Eigen::VectorXd(vector)); }
 
 }  // namespace bonl_python

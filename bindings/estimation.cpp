@@ -23,38 +23,44 @@ constexpr const char* kForgettingForms =
 
 /// A real number (not a bool, a string or a complex), or a ValueError naming `what`.
 double forgetting_factor(const py::handle& value, const char* what) {
-  if (!py::isinstance<py::bool_>(value) && !py::isinstance<py::str>(value)) {
+  bool real = !py::isinstance<py::bool_>(value) && !py::isinstance<py::str>(value);
+  double factor = 0.0;
+  if (real) {
     try {
-      return value.cast<double>();
+      factor = value.cast<double>();
     } catch (const py::cast_error&) {
+      real = false;
     }
   }
-  throw py::value_error(std::string(kForgettingForms) + "; " + what + " must be a real number, got " +
-                        std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+  bonl::detail::require(real, std::string(kForgettingForms) + "; " + what + " must be a real number, got " +
+                                  type_name(value));
+  return factor;
 }
 
 std::optional<bonl::ForgettingSchedule> parse_forgetting(const py::object& forgetting) {
   if (forgetting.is_none()) return std::nullopt;
   if (py::isinstance<py::str>(forgetting)) {
-    if (forgetting.cast<std::string>() == "adaptive") return bonl::ForgettingSchedule::adaptive_memory();
-    throw py::value_error(std::string(kForgettingForms) + ", got '" + forgetting.cast<std::string>() + "'");
+    const auto name = forgetting.cast<std::string>();
+    bonl::detail::require(name == "adaptive", std::string(kForgettingForms) + ", got '" + name + "'");
+    return bonl::ForgettingSchedule::adaptive_memory();
   }
   if (py::isinstance<py::tuple>(forgetting) || py::isinstance<py::list>(forgetting)) {
     const auto items = forgetting.cast<py::sequence>();
-    if (items.size() != 3) throw py::value_error(kForgettingForms);
+    bonl::detail::require(items.size() == 3, kForgettingForms);
     const py::object samples = items[1];
     // An integer (Python or numpy), not a bool or a float that happens to be whole.
-    if (py::isinstance<py::bool_>(samples) || !PyIndex_Check(samples.ptr())) {
-      throw py::value_error(std::string(kForgettingForms) + "; initial_samples must be an integer, got " +
-                            std::string(py::str(py::type::handle_of(samples).attr("__name__"))));
-    }
+    bonl::detail::require(!py::isinstance<py::bool_>(samples) && PyIndex_Check(samples.ptr()),
+                          std::string(kForgettingForms) + "; initial_samples must be an integer, got " +
+                              type_name(samples));
     Eigen::Index initial_samples = 0;
+    bool in_range = true;
     try {
       initial_samples = samples.cast<Eigen::Index>();
     } catch (const py::cast_error&) {
-      throw py::value_error(std::string(kForgettingForms) + "; initial_samples is out of range, got " +
-                            std::string(py::str(samples)));
+      in_range = false;
     }
+    bonl::detail::require(in_range, std::string(kForgettingForms) + "; initial_samples is out of range, got " +
+                                        std::string(py::str(samples)));
     bonl::ForgettingSchedule schedule;
     schedule.initial = forgetting_factor(items[0], "initial");
     schedule.initial_samples = initial_samples;

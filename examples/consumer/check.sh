@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs a configured bonl build into a temporary prefix and builds this consumer against it:
 #  1. find_package(bonl) + bonl::bonl with SUNDIALS and nlohmann_json disabled: the core needs Eigen only;
-#  2. find_package(bonl COMPONENTS io plant) with both found: bonl::io and bonl::plant link and run;
+#  2. find_package(bonl COMPONENTS io plant experiment) with both found: bonl::io, bonl::plant and
+#     bonl::experiment link and run;
 #  3. the same with SUNDIALS disabled: the configure must fail, saying that plant needs SUNDIALS.
 # Usage: examples/consumer/check.sh <bonl build dir> (scripts/test.sh passes build/ci).
 set -euo pipefail
@@ -28,12 +29,12 @@ say "core only (bonl::bonl), SUNDIALS and nlohmann_json disabled"
 cmake --build "$tmp/core" -j2
 "$tmp/core/consumer"
 
-say "COMPONENTS io plant (bonl::io, bonl::plant)"
+say "COMPONENTS io plant experiment (bonl::io, bonl::plant, bonl::experiment)"
 "${configure[@]}" -B "$tmp/components" -DBONL_CONSUMER_COMPONENTS=ON
 cmake --build "$tmp/components" -j2 --target consumer_components
 "$tmp/components/consumer_components"
 
-say "COMPONENTS io plant with SUNDIALS disabled: the configure must fail"
+say "COMPONENTS io plant experiment with SUNDIALS disabled: the configure must fail"
 if "${configure[@]}" -B "$tmp/no_sundials" -DBONL_CONSUMER_COMPONENTS=ON \
     -DCMAKE_DISABLE_FIND_PACKAGE_SUNDIALS=ON >"$tmp/no_sundials.log" 2>&1; then
   cat "$tmp/no_sundials.log"

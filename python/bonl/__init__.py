@@ -4,7 +4,8 @@ Models (after Yan et al., the excavator-arm paper, and the Wiener model): every 
 :data:`MODELS` (:class:`ARX`, :class:`Hammerstein`, :class:`HammersteinWiener`,
 :class:`PseudoHammersteinWiener`, :class:`Wiener`); whole-record identification with :func:`identify`,
 online estimation with :class:`Estimator`; :mod:`bonl.metrics`; the simulated excavator dipper joint
-in :mod:`bonl.plant`, and :func:`experiment`, the paper's experiment on it.
+in :mod:`bonl.plant`, and :mod:`bonl.experiment`, the paper's experiment on it
+(:func:`bonl.experiment.run_paper_experiment`).
 """
 
 # Every public name of the C++ core: the model classes (one per entry of C++'s bonl::Models, so a
@@ -12,7 +13,6 @@ in :mod:`bonl.plant`, and :func:`experiment`, the paper's experiment on it.
 from ._bonl import *  # noqa: F401,F403
 from ._bonl import __all__ as _core_names
 from ._bonl import __version__
-from . import metrics, plant
-from .plant import experiment
+from . import experiment, metrics, plant
 
 __all__ = sorted({*_core_names, "__version__", "experiment", "metrics", "plant"})

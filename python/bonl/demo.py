@@ -1,18 +1,20 @@
 """``python -m bonl demo``: the paper's experiment on the simulated excavator dipper joint.
 
-Runs :func:`bonl.plant.experiment` (what the C++ ``bonl_demo`` runs: identification on the
-paper's multi-sine, validation by free-run simulation on a smooth random signal, the output-error
-method (bonl's default) and the paper's), prints Table 1 (identified parameters) and Table 2
-(validation MSE of the velocity) in the paper's layout for both methods, the online estimates'
-validation MSE, and with ``--out DIR`` writes
+Runs :func:`bonl.experiment.run_paper_experiment` (what the C++ ``bonl_demo`` runs: identification on
+the paper's multi-sine, validation by free-run simulation on a smooth random signal, the output-error
+method (bonl's default) and the paper's) and formats its result: Table 1 (identified parameters) and
+Table 2 (validation MSE of the velocity) in the paper's layout for both methods, the online estimates'
+validation MSE, and with ``--out DIR``
 
-- ``DIR/fig11_velocity.png``: measured and predicted validation velocity of the four models (the
-  paper's Fig. 11), over the whole record and zoomed;
+- ``DIR/fig11_velocity.png``: measured and predicted validation velocity of every model (the paper's
+  Fig. 11), over the whole record and zoomed;
 - ``DIR/fig12_residuals.png``: the residuals, measured - predicted, one panel per model (Fig. 12);
 - ``DIR/tables.txt``: the printed tables;
-- ``DIR/results.json``: ``{"mse": {"ARX", "Hammerstein", "HW", "PHW"}, "params": {...},
-  "method": ..., "methods": {"output_error": {...}, "paper": {...}}, "online": {...}, ...}`` as
-  ``bonl_demo --json``.
+- ``DIR/results.json``: ``{"mse": {model name: mse}, "params": {...}, "method": ..., "methods":
+  {"output_error": {...}, "paper": {...}}, "online": {...}, ...}`` as ``bonl_demo --json``.
+
+Models are named by their class names (``result.model_names``); the tables and figures label them as
+the paper does (``ModelResult.label``) and list them in its order, the proposed model first.
 """
 
 from __future__ import annotations
@@ -24,10 +26,22 @@ import os
 import sys
 from typing import Any, Dict, List, Optional, Sequence
 
-#: The four models in the paper's column order (Tables 1 and 2), with their display names.
-MODELS = (("PHW", "P-H-W"), ("HW", "H-W"), ("Hammerstein", "Hammerstein"), ("ARX", "ARX"))
-#: Line colours shared by both figures (the same as bonl_demo's sweep chart).
-COLOURS = {"PHW": "#d62728", "HW": "#ff7f0e", "Hammerstein": "#2ca02c", "ARX": "#1f77b4"}
+#: Line colours of the figures, in the paper's column order (the same as bonl_demo's sweep chart).
+PALETTE = ("#d62728", "#ff7f0e", "#2ca02c", "#1f77b4", "#9467bd", "#8c564b", "#e377c2")
+
+
+def columns(method_result: Any) -> List[Any]:
+    """A method's models in the paper's column order: the proposed model (the last of the experiment's) first.
+
+    Parameters
+    ----------
+    method_result : bonl.experiment.MethodResult
+
+    Returns
+    -------
+    list of bonl.experiment.ModelResult
+    """
+    return list(reversed(list(method_result.models.values())))
 
 
 def _cell(value: Optional[float]) -> str:
@@ -36,79 +50,66 @@ def _cell(value: Optional[float]) -> str:
     return " %12.4g" % value
 
 
-def format_tables(method: str, params: Dict[str, Dict[str, Any]], mse: Dict[str, float]) -> str:
+def _join_words(words: Sequence[str]) -> str:
+    """'a, b and c'."""
+    if len(words) < 2:
+        return "".join(words)
+    return ", ".join(words[:-1]) + " and " + words[-1]
+
+
+def format_tables(method_result: Any) -> str:
     """Table 1 and Table 2 of one method, in the paper's layout (as ``bonl_demo`` prints them).
 
     Parameters
     ----------
-    method : str
-        ``"output_error"`` or ``"paper"``, for the title.
-    params : dict
-        ``{"ARX": {"b", "a"}, "Hammerstein": {"f", "p", "b", "a"}, "HW": {..., "q"},
-        "PHW": {..., "c"}}``, as :func:`bonl.plant.experiment` returns them under ``params``.
-    mse : dict
-        Validation MSE by model, ``{"ARX", "Hammerstein", "HW", "PHW"}`` [(rad/s)^2].
+    method_result : bonl.experiment.MethodResult
 
     Returns
     -------
     str
         The two tables, newline-terminated.
     """
-    lines: List[str] = []
-    lines.append("")
-    lines.append("Table 1. Identification results (method: %s)" % method)
-    lines.append("%-10s %12s %12s %12s %12s" % ("Parameter", "P-H-W", "H-W", "Hammerstein", "ARX"))
+    from .experiment import published_score
 
-    def value(model: str, name: str, index: Optional[int]) -> Optional[float]:
-        entry = params[model].get(name)
-        if entry is None:
-            return None
-        if index is None:
-            return float(entry)
-        return float(entry[index]) if index < len(entry) else None
-
-    def row(label: str, name: str, index: Optional[int]) -> None:
-        lines.append("%-10s" % label + "".join(_cell(value(key, name, index)) for key, _ in MODELS))
-
-    for i in range(3):
-        row("b%d" % i, "b", i)
-    for j in range(3):
-        row("a%d" % (j + 1), "a", j)
-    for name in ("f", "p"):
-        for i in range(4):
-            row("%s%d" % (name, i), name, i)
-    for j in range(3):
-        row("q%d" % (j + 1), "q", j)
-    row("c", "c", None)
+    cols = columns(method_result)
+    header = "".join(" %12s" % c.label for c in cols)
+    lines: List[str] = ["", "Table 1. Identification results (method: %s)" % method_result.method]
+    lines.append("%-10s" % "Parameter" + header)
+    # The rows: every parameter label, in the order the experiment's models first name them.
+    tables = [dict(c.parameters) for c in cols]
+    rows: List[str] = []
+    for c in reversed(cols):
+        rows += [label for label, _ in c.parameters if label not in rows]
+    for row in rows:
+        lines.append("%-10s" % row + "".join(_cell(table.get(row)) for table in tables))
 
     lines.append("")
     lines.append("Table 2. MSE of the identified models (validation velocity, free-run simulation)")
-    lines.append("%-10s %12s %12s %12s %12s" % ("Error", "P-H-W", "H-W", "Hammerstein", "ARX"))
-    lines.append("%-10s" % "MSE" + "".join(" %12.4e" % mse[key] for key, _ in MODELS) + "   (rad/s)^2")
-
-    def lower(other: float) -> float:
-        return 100.0 * (1.0 - mse["PHW"] / other)
-
-    lines.append(
-        "P-H-W's MSE is %.0f%%, %.0f%% and %.0f%% lower than H-W's, Hammerstein's and ARX's "
-        "(paper: 14%%, 30%%, 75%%)" % (lower(mse["HW"]), lower(mse["Hammerstein"]), lower(mse["ARX"]))
-    )
+    lines.append("%-10s" % "Error" + header)
+    lines.append("%-10s" % "MSE" + "".join(" %12.4e" % c.mse for c in cols) + "   (rad/s)^2")
+    proposed, others = cols[0], cols[1:]
+    lower = ["%.0f%%" % (100.0 * (1.0 - proposed.mse / c.mse)) for c in others]
+    line = "%s's MSE is %s lower than %s" % (proposed.label, _join_words(lower), _join_words([c.label + "'s" for c in others]))
+    published = [published_score(c.name) for c in others]
+    published = ["%d%%" % p[1] for p in published if p is not None]
+    if published:
+        line += " (paper: %s)" % ", ".join(published)
+    lines.append(line)
     return "\n".join(lines) + "\n"
 
 
-def format_report(result: Dict[str, Any]) -> str:
+def format_report(result: Any) -> str:
     """Everything ``python -m bonl demo`` prints: the plant's runs, then both methods' tables.
 
     Parameters
     ----------
-    result : dict
-        What :func:`bonl.plant.experiment` returned.
+    result : bonl.experiment.PaperExperimentResult
 
     Returns
     -------
     str
     """
-    parameters = result["parameters"]
+    parameters = result.parameters
     out = [
         "Plant: 20 t excavator dipper joint (docs/plant.md), pilot hysteresis %.0f%%, pin backlash %.1f mrad."
         % (100 * parameters.pilot_hysteresis, 1000 * parameters.joint_backlash),
@@ -116,98 +117,90 @@ def format_report(result: Dict[str, Any]) -> str:
         "paper's multi-sine; validation: smooth random signal (1 Hz band).",
     ]
     for name in ("identification", "validation"):
-        run = result[name]["run"]
+        record = getattr(result, name)
         out.append(
             "  %-14s: piston %.3f-%.3f m of %.2f m%s, CVODE %d steps"
             % (
                 name,
-                run["min_position"],
-                run["max_position"],
+                record.min_position,
+                record.max_position,
                 parameters.stroke,
-                " (REACHED AN END STOP)" if run["reached_end_stop"] else "",
-                run["steps"],
+                " (REACHED AN END STOP)" if record.reached_end_stop else "",
+                record.steps,
             )
         )
-    out.append("  plant simulation and processing: %.2f s" % result["seconds"]["plant"])
+    out.append("  plant simulation and processing: %.2f s" % result.seconds["plant"])
     text = "\n".join(out) + "\n"
     # The paper's method first, then bonl's, as bonl_demo prints them.
     for method in ("paper", "output_error"):
-        entry = result["methods"][method]
-        text += format_tables(method, entry["params"], entry["mse"])
-    text += format_online(result["online"], result["methods"]["output_error"]["mse"])
-    text += "\nidentification and validation: %.2f s\n" % result["seconds"]["identification"]
-    if "robustness" in result:
-        text += format_robustness(result["robustness"])
+        text += format_tables(result.method(method))
+    text += format_online(result)
+    text += "\nidentification and validation: %.2f s\n" % result.seconds["identification"]
+    if result.robustness_trajectories:
+        text += format_robustness(result)
     return text
 
 
-def format_online(online: Dict[str, Dict[str, float]], identified: Dict[str, float]) -> str:
+def format_online(result: Any) -> str:
     """The online table: each method's recursive estimate alone, beside ``identify()``'s, as ``bonl_demo`` prints it.
 
     Parameters
     ----------
-    online : dict
-        ``{"output_error": mse, "paper": mse}``, validation MSE by model of the online estimates.
-    identified : dict
-        Validation MSE by model of ``identify()`` (the output-error estimate refined).
+    result : bonl.experiment.PaperExperimentResult
 
     Returns
     -------
     str
     """
+    identified = columns(result.method("output_error"))
     lines = [
         "",
         "Online: the recursive estimator alone after one pass (no refinement), validation MSE",
-        "%-13s %12s %12s %12s %12s" % ("method", "P-H-W", "H-W", "Hammerstein", "ARX"),
+        "%-13s" % "method" + "".join(" %12s" % c.label for c in identified),
     ]
-    for method in ("output_error", "paper"):
-        e = online[method]
-        lines.append(
-            "%-13s %12.4e %12.4e %12.4e %12.4e   (rad/s)^2" % (method, e["PHW"], e["HW"], e["Hammerstein"], e["ARX"])
-        )
-    e = identified
+    for method, entry in result.methods.items():
+        lines.append("%-13s" % method + "".join(" %12.4e" % c.online_mse for c in columns(entry)) + "   (rad/s)^2")
     lines.append(
-        "%-13s %12.4e %12.4e %12.4e %12.4e   (identify(): recursive estimate refined)"
-        % ("identify()", e["PHW"], e["HW"], e["Hammerstein"], e["ARX"])
+        "%-13s" % "identify()"
+        + "".join(" %12.4e" % c.mse for c in identified)
+        + "   (identify(): recursive estimate refined)"
     )
     return "\n".join(lines) + "\n"
 
 
-def format_robustness(rows: Sequence[Dict[str, Dict[str, float]]]) -> str:
+def format_robustness(result: Any) -> str:
     """The robustness table: validation MSE on the further trajectories, as ``bonl_demo`` prints it.
+
+    The counts check the paper's ranking: the proposed model below Hammerstein, Hammerstein below ARX.
 
     Parameters
     ----------
-    rows : sequence of dict
-        One ``{"output_error": mse, "paper": mse}`` per trajectory.
+    result : bonl.experiment.PaperExperimentResult
+        Run with ``robustness=True``.
 
     Returns
     -------
     str
     """
+    n = result.robustness_trajectories
+    methods = {name: columns(entry) for name, entry in result.methods.items()}
     lines = [
         "",
-        "Robustness: validation MSE on %d further trajectories (smooth random x4, other multi-sines x4)" % len(rows),
-        "%-4s %-12s %11s %11s %11s %11s" % ("", "method", "P-H-W", "H-W", "Hammerstein", "ARX"),
+        "Robustness: validation MSE on %d further trajectories (smooth random x4, other multi-sines x4)" % n,
+        "%-4s %-9s" % ("", "method") + "".join(" %11s" % c.label for c in next(iter(methods.values()))),
     ]
-    counts = {"output_error": [0, 0, 0], "paper": [0, 0, 0]}
-    for i, row in enumerate(rows):
-        for method in ("output_error", "paper"):
-            e = row[method]
-            phw_best, h_over_arx = e["PHW"] < e["Hammerstein"], e["Hammerstein"] < e["ARX"]
-            c = counts[method]
-            c[0] += phw_best
-            c[1] += h_over_arx
-            c[2] += phw_best and h_over_arx
-            lines.append(
-                "%-4d %-12s %11.3e %11.3e %11.3e %11.3e" % (i + 1, method, e["PHW"], e["HW"], e["Hammerstein"], e["ARX"])
-            )
-    n = len(rows)
-    for method in ("output_error", "paper"):
-        c = counts[method]
+    for i in range(n):
+        for method, cols in methods.items():
+            lines.append("%-4d %-12s" % (i + 1, method) + "".join(" %11.3e" % c.robustness_mse[i] for c in cols))
+    for method, cols in methods.items():
+        by_name = {c.name: c.robustness_mse for c in cols}
+        proposed, hammerstein, arx = cols[0], by_name["Hammerstein"], by_name["ARX"]
+        proposed_best = [proposed.robustness_mse[i] < hammerstein[i] for i in range(n)]
+        h_over_arx = [hammerstein[i] < arx[i] for i in range(n)]
         lines.append(
-            "%s method: P-H-W < Hammerstein on %d/%d, Hammerstein < ARX on %d/%d, both on %d/%d"
-            % (method, c[0], n, c[1], n, c[2], n)
+            "%s method: %s < Hammerstein on %d/%d, Hammerstein < ARX on %d/%d, both on %d/%d"
+            % (method, proposed.label, sum(proposed_best), n, sum(h_over_arx), n,
+               sum(a and b for a, b in zip(proposed_best, h_over_arx)), n)
         )
     return "\n".join(lines) + "\n"
 
@@ -223,43 +216,58 @@ def _finite_or_none(value: Any) -> Any:
     return value
 
 
-def results_json(result: Dict[str, Any]) -> Dict[str, Any]:
+def results_json(result: Any, method: str) -> Dict[str, Any]:
     """The JSON-ready summary of an experiment (the layout of ``bonl_demo --json``).
 
     Parameters
     ----------
-    result : dict
-        What :func:`bonl.plant.experiment` returned.
+    result : bonl.experiment.PaperExperimentResult
+    method : str
+        ``"output_error"`` or ``"paper"``: whose results go to the top-level ``mse`` and ``params``.
 
     Returns
     -------
     dict
         ``mse``, ``params`` and ``method`` of the chosen method; ``methods``: both methods' ``mse``
-        and ``params``; ``runs``: the plant runs' ranges and CVODE steps; ``plant_parameters``;
-        ``seconds``; and ``robustness`` when it was run. Non-finite numbers become null.
+        and ``params``; ``online``: both methods' online MSE; ``runs``: the plant runs' ranges and CVODE
+        steps; ``plant_parameters``; ``seconds``; and ``robustness`` (one ``{method: {model: mse}}``
+        per trajectory) when it was run. Models are keyed by name; non-finite numbers become null.
     """
-    summary: Dict[str, Any] = {
-        "mse": dict(result["mse"]),
-        "params": result["params"],
-        "method": result["method"],
-        "methods": {m: {"mse": dict(e["mse"]), "params": e["params"]} for m, e in result["methods"].items()},
-        "online": {m: dict(e) for m, e in result["online"].items()},
-        "runs": {name: dict(result[name]["run"]) for name in ("identification", "validation")},
-        "plant_parameters": result["parameters"].to_dict(),
-        "seconds": dict(result["seconds"]),
+
+    def summary(entry: Any) -> Dict[str, Any]:
+        return {"mse": dict(entry.mse), "params": {name: m.params for name, m in entry.models.items()}}
+
+    chosen = summary(result.method(method))
+    runs = {}
+    for name in ("identification", "validation"):
+        record = getattr(result, name)
+        runs[name] = {key: getattr(record, key) for key in ("min_position", "max_position", "reached_end_stop", "steps")}
+    out: Dict[str, Any] = {
+        "mse": chosen["mse"],
+        "params": chosen["params"],
+        "method": method,
+        "methods": {name: summary(entry) for name, entry in result.methods.items()},
+        "online": {name: dict(entry.online_mse) for name, entry in result.methods.items()},
+        "runs": runs,
+        "plant_parameters": result.parameters.to_dict(),
+        "seconds": dict(result.seconds),
     }
-    if "robustness" in result:
-        summary["robustness"] = result["robustness"]
-    return _finite_or_none(summary)
+    if result.robustness_trajectories:
+        out["robustness"] = [
+            {name: {m.name: m.robustness_mse[i] for m in entry.models.values()} for name, entry in result.methods.items()}
+            for i in range(result.robustness_trajectories)
+        ]
+    return _finite_or_none(out)
 
 
-def plot_figures(result: Dict[str, Any], out_dir: str) -> List[str]:
-    """Write the paper's Fig. 11 (velocity) and Fig. 12 (residuals) for the chosen method.
+def plot_figures(result: Any, method: str, out_dir: str) -> List[str]:
+    """Write the paper's Fig. 11 (velocity) and Fig. 12 (residuals) for one method.
 
     Parameters
     ----------
-    result : dict
-        What :func:`bonl.plant.experiment` returned.
+    result : bonl.experiment.PaperExperimentResult
+    method : str
+        ``"output_error"`` or ``"paper"``.
     out_dir : str
         Existing directory to write ``fig11_velocity.png`` and ``fig12_residuals.png`` into.
 
@@ -274,12 +282,11 @@ def plot_figures(result: Dict[str, Any], out_dir: str) -> List[str]:
     import matplotlib.pyplot as plt
     import numpy as np
 
-    method = result["method"]
-    validation = result["validation"]
-    t = np.asarray(validation["time"])
-    y = np.asarray(validation["velocity"])
-    simulated = validation["simulated"][method]
-    mse = result["mse"]
+    validation = result.validation
+    t = validation.time
+    y = validation.velocity
+    cols = columns(result.method(method))
+    colours = [PALETTE[i % len(PALETTE)] for i in range(len(cols))]
 
     # Fig. 11: measured and predicted velocity; the lower panel zooms on 10 s so the curves separate.
     fig, axes = plt.subplots(2, 1, figsize=(11, 8), constrained_layout=True)
@@ -287,21 +294,15 @@ def plot_figures(result: Dict[str, Any], out_dir: str) -> List[str]:
     for ax, window in zip(axes, (None, zoom)):
         mask = np.ones_like(t, dtype=bool) if window is None else (t >= window[0]) & (t <= window[1])
         ax.plot(t[mask], y[mask], color="black", linewidth=1.6, label="measured")
-        for key, name in MODELS:
-            ax.plot(
-                t[mask],
-                np.asarray(simulated[key])[mask],
-                color=COLOURS[key],
-                linewidth=1.0,
-                label="%s (MSE %.3g)" % (name, mse[key]),
-            )
+        for c, colour in zip(cols, colours):
+            ax.plot(t[mask], c.simulated[mask], color=colour, linewidth=1.0, label="%s (MSE %.3g)" % (c.label, c.mse))
         ax.set_xlabel("time [s]")
         ax.set_ylabel("angular velocity [rad/s]")
         ax.grid(True, alpha=0.3)
         if window is None:
             ax.set_title("Validation: measured and predicted joint velocity (free-run simulation, %s method)" % method)
             ax.axvspan(zoom[0], zoom[1], color="grey", alpha=0.12)
-            ax.legend(loc="upper right", fontsize=8, ncol=5)
+            ax.legend(loc="upper right", fontsize=8, ncol=len(cols) + 1)
         else:
             ax.set_title("Zoom on %g-%g s" % window)
     velocity_path = os.path.join(out_dir, "fig11_velocity.png")
@@ -309,10 +310,9 @@ def plot_figures(result: Dict[str, Any], out_dir: str) -> List[str]:
     plt.close(fig)
 
     # Fig. 12: residuals measured - predicted, one panel per model, shared axes.
-    fig, axes = plt.subplots(4, 1, figsize=(11, 9), sharex=True, sharey=True, constrained_layout=True)
-    for ax, (key, name) in zip(axes, MODELS):
-        residual = y - np.asarray(simulated[key])
-        ax.plot(t, residual, color=COLOURS[key], linewidth=0.8, label="%s (MSE %.3g (rad/s)^2)" % (name, mse[key]))
+    fig, axes = plt.subplots(len(cols), 1, figsize=(11, 9), sharex=True, sharey=True, constrained_layout=True)
+    for ax, c, colour in zip(axes, cols, colours):
+        ax.plot(t, y - c.simulated, color=colour, linewidth=0.8, label="%s (MSE %.3g (rad/s)^2)" % (c.label, c.mse))
         ax.axhline(0.0, color="black", linewidth=0.6)
         ax.set_ylabel("residual [rad/s]")
         ax.grid(True, alpha=0.3)
@@ -365,9 +365,9 @@ def run(args: argparse.Namespace) -> int:
     int
         The exit status: 0, or 1 when an output could not be written.
     """
-    from . import plant
+    from .experiment import run_paper_experiment
 
-    result = plant.experiment(method=args.method, robustness=args.robustness)
+    result = run_paper_experiment(robustness=args.robustness)
     report = format_report(result)
     sys.stdout.write(report)
     if not args.out:
@@ -380,12 +380,12 @@ def run(args: argparse.Namespace) -> int:
         f.write(report)
     results_path = os.path.join(args.out, "results.json")
     with open(results_path, "w", encoding="utf-8") as f:
-        json.dump(results_json(result), f, indent=1, allow_nan=False)
+        json.dump(results_json(result, args.method), f, indent=1, allow_nan=False)
         f.write("\n")
     written = [tables_path, results_path]
     status = 0
     try:
-        written += plot_figures(result, args.out)
+        written += plot_figures(result, args.method, args.out)
     except ImportError as error:
         sys.stderr.write("bonl demo: cannot draw the figures (%s); pip install 'bonl[plot]'\n" % error)
         status = 1

@@ -7,9 +7,10 @@ joint angle, pin backlash and an inclinometer: the plant the paper's experiment 
 - :class:`Command` and the submodule :mod:`bonl.plant.excitation` (step, multi-sine, the paper's
   multi-sine, smooth random, chirp, sampled hold);
 - :func:`simulate`: every state, flow and angle on the output grid, as a dict of numpy arrays;
-- :func:`initial_state`, :func:`derivative`: the right-hand side, for independent checks;
-- :func:`low_pass`, :func:`differentiate`: the experiment's signal processing;
-- :func:`experiment`: the paper's identification experiment, as ``bonl_demo`` runs it.
+- :func:`initial_state`, :func:`derivative`: the right-hand side, for independent checks.
+
+The paper's identification experiment on this plant, and the records' signal processing, are
+:mod:`bonl.experiment`.
 
 Examples
 --------
@@ -31,7 +32,4 @@ __all__ = [
     "simulate",
     "initial_state",
     "derivative",
-    "low_pass",
-    "differentiate",
-    "experiment",
 ]

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import bonl
-from bonl import plant
+from bonl import experiment, plant
 from bonl.plant import excitation
 from conftest import known_models
 
@@ -434,7 +434,7 @@ def test_p1_p2_every_parameter_nan_or_inf_is_rejected_by_name(name):
         raises(ValueError, f"bonl: plant: {name} must be", plant.simulate, excitation.step(3.0), p, duration=0.01)
         raises(ValueError, f"bonl: plant: {name} must be", plant.initial_state, p, 0.75)
         raises(ValueError, f"bonl: plant: {name} must be", plant.derivative, p, [0.75, 0.0, 5e6, 5e6, 0.0], 0.0)
-        raises(ValueError, f"bonl: plant: {name} must be", plant.experiment, p)
+        raises(ValueError, f"bonl: plant: {name} must be", experiment.run_paper_experiment, p)
 
 
 @pytest.mark.parametrize(
@@ -529,7 +529,7 @@ BAD_COMMANDS = [
     (lambda t: None, ValueError, "the value of command(t) at t = 0 must be a real number, got None"),
     (lambda t: 2.5 + 0j, ValueError, "the value of command(t) at t = 0 must be a real number, got complex"),
     (plant.Command(lambda t: [2.5]), ValueError, "the value of command(t) at t = 0 must be a real number, got list"),
-    (([2.5, NAN], 0.01), ValueError, "command[0] (values) must be finite, got nan at index 1"),
+    (([2.5, NAN], 0.01), ValueError, "command[0] (values) has a non-finite value at index 1"),
     (([2.5, 3.0], 0.0), ValueError, "sampled: ts must be finite and > 0"),
     (([], 0.01), ValueError, "sampled: values must not be empty"),
     # Before: RuntimeError "Unable to cast ...", and the imaginary parts silently dropped.
@@ -569,7 +569,7 @@ def test_p12_an_integration_cvode_cannot_finish_is_a_numerical_error():
         # Before: MemoryError (std::bad_alloc).
         (lambda: excitation.smooth_random(1e9, 0.5, 1e9, 1), "bandwidth_hz * duration must be <= 1000000"),
         (lambda: excitation.smooth_random(1.0, -0.5, 10.0, 1), "rms must be finite and >= 0"),
-        (lambda: excitation.sampled([2.5, NAN], 0.01), "values must be finite, got nan at index 1"),
+        (lambda: excitation.sampled([2.5, NAN], 0.01), "values has a non-finite value at index 1"),
         (lambda: excitation.sampled([2.5], 0.01, t0=NAN), "sampled: t0 must be finite"),
     ],
 )
@@ -591,22 +591,21 @@ def test_p13_p14_arguments_of_the_wrong_type(make, exception, message):
 
 
 def test_p16_p18_p19_p20_processing_states_and_experiment():
-    raises(ValueError, "x must be finite, got nan at index 1", plant.low_pass, [1.0, NAN], 10.0, 0.01)
-    raises(ValueError, "low_pass: cutoff_hz must be finite and > 0", plant.low_pass, [1.0, 2.0], 0.0, 0.01)
-    raises(ValueError, "low_pass: ts must be finite and > 0", plant.low_pass, [1.0, 2.0], 10.0, -0.01)
-    raises(ValueError, "x must be finite, got inf at index 0", plant.differentiate, [INF, 1.0], 0.01)
-    raises(ValueError, "differentiate: x needs at least 2 samples", plant.differentiate, [1.0], 0.01)
-    raises(ValueError, "differentiate: ts must be finite and > 0", plant.differentiate, [1.0, 2.0], NAN)
+    raises(ValueError, "x has a non-finite value at index 1", experiment.low_pass, [1.0, NAN], 10.0, 0.01)
+    raises(ValueError, "low_pass: cutoff_hz must be finite and > 0", experiment.low_pass, [1.0, 2.0], 0.0, 0.01)
+    raises(ValueError, "low_pass: ts must be finite and > 0", experiment.low_pass, [1.0, 2.0], 10.0, -0.01)
+    raises(ValueError, "x has a non-finite value at index 0", experiment.differentiate, [INF, 1.0], 0.01)
+    raises(ValueError, "differentiate: x needs at least 2 samples", experiment.differentiate, [1.0], 0.01)
+    raises(ValueError, "differentiate: ts must be finite and > 0", experiment.differentiate, [1.0, 2.0], NAN)
     raises(ValueError, "position must be finite, got nan", plant.initial_state, None, NAN)
     raises(TypeError, "parameters must be a bonl.plant.Parameters or None, got dict", plant.initial_state, {}, 0.5)
     raises(ValueError, "state must have 5 entries", plant.derivative, None, [0.75, 0.0, 5e6, 5e6], 0.0)
-    raises(ValueError, "state must be finite, got nan at index 1", plant.derivative, None, [0.75, NAN, 5e6, 5e6, 0.0], 0.0)
+    raises(ValueError, "state has a non-finite value at index 1", plant.derivative, None, [0.75, NAN, 5e6, 5e6, 0.0], 0.0)
     raises(ValueError, "pilot must be finite, got inf", plant.derivative, None, [0.75, 0.0, 5e6, 5e6, 0.0], INF)
     raises(ValueError, "load must be finite, got nan", plant.derivative, None, [0.75, 0.0, 5e6, 5e6, 0.0], 0.0, NAN)
-    raises(ValueError, "method must be 'output_error' or 'paper', got 'ours'", plant.experiment, method="ours")
-    raises(TypeError, "parameters must be a bonl.plant.Parameters or None, got str", plant.experiment, "20t")
-    raises(ValueError, "mass must be > 0 and finite, got -1", plant.experiment, plant.Parameters(mass=-1.0))
-    raises(ValueError, "t must be finite, got nan at index 1", STEP.sample, [0.0, NAN])
+    raises(TypeError, "parameters must be a bonl.plant.Parameters or None, got str", experiment.run_paper_experiment, "20t")
+    raises(ValueError, "mass must be > 0 and finite, got -1", experiment.run_paper_experiment, plant.Parameters(mass=-1.0))
+    raises(ValueError, "t has a non-finite value at index 1", STEP.sample, [0.0, NAN])
     raises(ValueError, "t must be 1-D, got an array with 2 dimensions", STEP.sample, np.zeros((2, 2)))
 
 
@@ -669,7 +668,7 @@ ARRAY_ENTRY_POINTS = [
     ("theta setter", lambda x: setattr(models()["Hammerstein"], "theta", x), "theta"),
     ("reset_to", lambda x: bonl.Estimator(models()["ARX"]).reset_to(x), "theta"),
     ("metrics yhat", lambda x: bonl.metrics.nrmse(np.arange(3.0), x), "yhat"),
-    ("low_pass", lambda x: plant.low_pass(x, 10.0, 0.01), "x"),
+    ("low_pass", lambda x: experiment.low_pass(x, 10.0, 0.01), "x"),
     ("sampled", lambda x: excitation.sampled(x, 0.01), "values"),
     ("simulate (values, ts)", lambda x: plant.simulate((x, 0.01), duration=0.05), "command[0] (values)"),
     ("Command.sample", lambda x: STEP.sample(x), "t"),
@@ -843,8 +842,8 @@ def test_a4_the_plant_never_modifies_the_callers_arrays():
         held = excitation.sampled(commands[kind], 0.01)
         held.sample(times[kind])
         plant.simulate((commands[kind], 0.01), duration=0.05, sensor_noise=False)
-        plant.low_pass(commands[kind], 10.0, 0.01)
-        plant.differentiate(commands[kind], 0.01)
+        experiment.low_pass(commands[kind], 10.0, 0.01)
+        experiment.differentiate(commands[kind], 0.01)
         if kind != "int64":
             plant.derivative(None, states[kind], 0.0)
         excitation.multisine(tones[kind], 0.4, phases=tones[kind])

@@ -8,7 +8,7 @@ import sys
 import pytest
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
-MODEL_KEYS = {"ARX", "Hammerstein", "HW", "PHW"}
+MODEL_KEYS = {"ARX", "Hammerstein", "HammersteinWiener", "PseudoHammersteinWiener"}
 
 
 def run_bonl(*args, cwd=None):
@@ -55,6 +55,6 @@ def test_demo_writes_figures_tables_and_results(tmp_path):
         assert set(mse) == MODEL_KEYS
         assert all(isinstance(v, float) and math.isfinite(v) and v > 0 for v in mse.values())
         params = results["methods"][method]["params"]
-        assert set(params) == MODEL_KEYS and isinstance(params["PHW"]["c"], float)
+        assert set(params) == MODEL_KEYS and isinstance(params["PseudoHammersteinWiener"]["c"], float)
     # The printed Table 2 carries the same numbers.
-    assert "%12.4e" % results["mse"]["PHW"] in result.stdout
+    assert "%12.4e" % results["mse"]["PseudoHammersteinWiener"] in result.stdout

@@ -1,4 +1,4 @@
-"""bonl.plant: parameters, excitation, simulate, the experiment's processing and the experiment.
+"""bonl.plant: parameters, excitation and simulate (the experiment on the plant: test_experiment.py).
 
 The plant is checked against an independent integrator: its right-hand side written again below
 straight from docs/plant.md (plain Python, not bonl's derivative), integrated with scipy's Radau
@@ -32,7 +32,6 @@ TRAJECTORY_ARRAYS = [
     "head_flow", "rod_flow", "joint_angle", "joint_rate", "pin_angle", "measured_angle",
 ]  # fmt: skip
 TRAJECTORY_SCALARS = ["min_position", "max_position", "reached_end_stop", "steps"]
-MODEL_KEYS = {"ARX", "Hammerstein", "HW", "PHW"}
 
 
 # --- Parameters ------------------------------------------------------------------------------
@@ -421,63 +420,3 @@ def test_cvode_agrees_with_an_independent_radau_integrator():
     tolerances = {"position": 5e-8, "velocity": 1e-6, "head_pressure": 50.0, "rod_pressure": 50.0, "spool": 1e-6}
     for i, key in enumerate(["position", "velocity", "head_pressure", "rod_pressure", "spool"]):
         np.testing.assert_allclose(run[key], samples[:, i], rtol=0, atol=tolerances[key], err_msg=key)
-
-
-# --- Signal processing and the experiment -----------------------------------------------------
-
-
-def test_low_pass_and_differentiate_follow_plant_md():
-    rng = np.random.default_rng(3)
-    x = rng.normal(size=200)
-    ts, fc = 0.01, 10.0
-    alpha = 1 - math.exp(-2 * math.pi * fc * ts)
-    z = np.empty_like(x)
-    z[0] = x[0]
-    for k in range(1, len(x)):
-        z[k] = z[k - 1] + alpha * (x[k] - z[k - 1])
-    np.testing.assert_allclose(plant.low_pass(x, fc, ts), z, rtol=1e-13, atol=1e-15)
-    np.testing.assert_allclose(plant.differentiate(x, ts), np.gradient(x, ts), rtol=1e-12, atol=1e-12)
-    with pytest.raises(ValueError, match="x"):
-        plant.low_pass(np.ones((3, 3)), fc, ts)
-    with pytest.raises(ValueError, match="x"):
-        plant.differentiate([1.0, float("inf"), 2.0], ts)
-    with pytest.raises(ValueError, match="cutoff_hz"):
-        plant.low_pass(x, 0.0, ts)
-
-
-@pytest.fixture(scope="module")
-def experiment():
-    return plant.experiment(method="paper")
-
-
-def test_experiment_returns_both_methods_models_and_records(experiment):
-    e = experiment
-    assert e["method"] == "paper"
-    assert set(e["mse"]) == MODEL_KEYS and set(e["models"]) == MODEL_KEYS
-    assert e["mse"] == e["methods"]["paper"]["mse"]
-    for method in ("output_error", "paper"):
-        entry = e["methods"][method]
-        assert set(entry["mse"]) == MODEL_KEYS
-        assert all(0 < v < 1e-2 for v in entry["mse"].values())
-        assert all(m is not None for m in entry["models"].values())
-        assert len(entry["params"]["PHW"]["f"]) == 4 and isinstance(entry["params"]["PHW"]["c"], float)
-    n = 5001
-    for name in ("identification", "validation"):
-        record = e[name]
-        for key in ("time", "input", "velocity", "true_velocity", "angle"):
-            assert record[key].shape == (n,) and record[key].dtype == np.float64
-        assert not record["run"]["reached_end_stop"]
-    for method in ("output_error", "paper"):
-        for key in MODEL_KEYS:
-            simulated = e["validation"]["simulated"][method][key]
-            assert simulated.shape == (n,)
-            mse = np.mean((e["validation"]["velocity"] - simulated) ** 2)
-            assert mse == pytest.approx(e["methods"][method]["mse"][key], rel=1e-9)
-    # The README's numbers with bonl's estimator: P-H-W beats every other model.
-    d = e["methods"]["output_error"]["mse"]
-    assert d["PHW"] < min(d["HW"], d["Hammerstein"], d["ARX"])
-
-
-def test_experiment_bad_method():
-    with pytest.raises(ValueError, match="method"):
-        plant.experiment(method="mrlsa")

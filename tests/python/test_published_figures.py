@@ -37,10 +37,11 @@ def test_the_plant_experiment_gives_its_committed_figures():
     """docs/results/plant_experiment.json (bonl_demo --json, scripts/plant_experiment.sh) is what the
     experiment gives today: every validation MSE, identified and online, to 1e-9 relative."""
     committed = json.loads((ROOT / "docs" / "results" / "plant_experiment.json").read_text())
-    result = bonl.plant.experiment()
+    result = bonl.experiment.run_paper_experiment()
     for method, entry in committed["methods"].items():
+        assert set(entry["mse"]) == set(result.model_names), method
         for model, mse in entry["mse"].items():
-            assert result["methods"][method]["mse"][model] == pytest.approx(mse, rel=1e-9), (method, model)
+            assert result.method(method).mse[model] == pytest.approx(mse, rel=1e-9), (method, model)
     for method, entry in committed["online"].items():
         for model, mse in entry.items():
-            assert result["online"][method][model] == pytest.approx(mse, rel=1e-9), ("online", method, model)
+            assert result.method(method).online_mse[model] == pytest.approx(mse, rel=1e-9), ("online", method, model)

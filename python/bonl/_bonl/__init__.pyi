@@ -7,7 +7,8 @@ import numpy.typing
 import typing
 from . import metrics
 from . import plant
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'UpdateStatus', 'Wiener', 'identify', 'load_model', 'metrics', 'plant']
+from . import experiment
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'UpdateStatus', 'Wiener', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     pass
 class ARX:

@@ -1,14 +1,14 @@
 """
 The excavator dipper-joint plant (docs/plant.md) integrated by SUNDIALS CVODE: parameters,
-command signals (submodule ``excitation``), ``simulate``, the experiment's signal processing
-and the paper's whole experiment (``experiment``).
+command signals (submodule ``excitation``) and ``simulate``; the paper's experiment on it is
+``bonl.experiment``.
 """
 from __future__ import annotations
 import collections.abc
 import numpy
 import typing
 from . import excitation
-__all__: tuple = ('Parameters', 'default_parameters', 'small_parameters', 'Command', 'excitation', 'simulate', 'initial_state', 'derivative', 'low_pass', 'differentiate', 'experiment')
+__all__: tuple = ('Parameters', 'default_parameters', 'small_parameters', 'Command', 'excitation', 'simulate', 'initial_state', 'derivative')
 class Parameters:
     """
     Parameters of the excavator dipper-joint plant (docs/plant.md).
@@ -589,66 +589,6 @@ def derivative(parameters: typing.Any, state: typing.Any, pilot: typing.Supports
     numpy.ndarray
         d(state)/dt, 5 entries.
     """
-def differentiate(x: typing.Any, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
-    """
-    Numerical derivative: central differences, one-sided at both ends.
-    
-    Parameters
-    ----------
-    x : array_like, 1-D
-        Finite samples, at least 2.
-    ts : float
-        Sample time [s].
-    
-    Returns
-    -------
-    numpy.ndarray
-    
-    Raises
-    ------
-    ValueError
-        When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.
-    """
-def experiment(parameters: typing.Any = None, *, method: str = 'output_error', robustness: bool = False) -> dict:
-    """
-    The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/plant.md).
-    
-    Identification record from the paper's multi-sine, validation record from a smooth random
-    signal (each 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated); ARX,
-    Hammerstein, H-W and P-H-W identified with the paper's orders (na = 3, nb = 2, nk = 8,
-    r = r1 = 3) by the output-error and the paper's methods and validated by free-run simulation;
-    also the online estimates alone (recursive estimator, one pass, no refinement). The GIL is
-    released during the computation.
-    
-    Parameters
-    ----------
-    parameters : Parameters, optional
-        The plant; None: ``default_parameters()``.
-    method : {'output_error', 'paper'}, optional
-        Whose results go to the top-level ``mse``, ``models``, ``params``.
-    robustness : bool, optional
-        Also validate on the eight further trajectories of ``bonl_demo``'s robustness check.
-    
-    Returns
-    -------
-    dict
-        ``mse`` {'ARX', 'Hammerstein', 'HW', 'PHW'} validation MSE [(rad/s)^2] of ``method``;
-        ``models`` the same keys, the identified models (bonl.ARX, bonl.Hammerstein, ...);
-        ``params`` their parameters by name (lists); ``method``;
-        ``methods`` {'output_error', 'paper'} -> {``mse``, ``models``, ``params``, ``simulated``};
-        ``online`` {'output_error', 'paper'} -> the online estimates' validation MSE by model;
-        ``identification`` and ``validation`` records: ``time`` [s], ``input`` [V], ``velocity``
-        [rad/s] (what the models are fitted on), ``true_velocity`` [rad/s], ``angle`` [rad], ``run``
-        (min/max position, end stop, CVODE steps); the validation record also has ``simulated``
-        {'output_error', 'paper'} -> {'ARX': array, ...}, the models' free-run velocities;
-        ``parameters``; ``seconds`` (wall time of each stage); with ``robustness``, ``robustness``:
-        one {'output_error': mse, 'paper': mse} per trajectory.
-    
-    Raises
-    ------
-    ValueError
-        For non-physical parameters or an unknown method.
-    """
 def initial_state(parameters: typing.Any, position: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
     """
     Initial state of plant.md's experiment at piston position h0.
@@ -666,28 +606,6 @@ def initial_state(parameters: typing.Any, position: typing.SupportsFloat | typin
     -------
     numpy.ndarray
         The state (h [m], v [m/s], p1 [Pa], p2 [Pa], xv [-]).
-    """
-def low_pass(x: typing.Any, cutoff_hz: typing.SupportsFloat | typing.SupportsIndex, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
-    """
-    First-order low-pass z[k] = z[k-1] + alpha (x[k] - z[k-1]), alpha = 1 - exp(-2 pi fc ts), z[0] = x[0].
-    
-    Parameters
-    ----------
-    x : array_like, 1-D
-        Finite samples.
-    cutoff_hz : float
-        fc [Hz].
-    ts : float
-        Sample time [s].
-    
-    Returns
-    -------
-    numpy.ndarray
-    
-    Raises
-    ------
-    ValueError
-        When ``x`` is not 1-D or not finite, or fc or ts is not > 0.
     """
 def simulate(command: typing.Any, parameters: typing.Any = None, *, duration: typing.SupportsFloat | typing.SupportsIndex = 50.0, sample_time: typing.SupportsFloat | typing.SupportsIndex = 0.01, command_rate: typing.SupportsFloat | typing.SupportsIndex = 1000.0, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: typing.Any = None, max_steps_per_interval: typing.SupportsInt | typing.SupportsIndex = 5000, sensor_noise: bool = True, noise_seed: typing.SupportsInt | typing.SupportsIndex = 1, initial_position: typing.Any = None, load: typing.Any = None) -> dict:
     """

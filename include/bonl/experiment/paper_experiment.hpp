@@ -1,0 +1,171 @@
+#pragma once
+// The paper's experiment (section 5) on the simulated plant: the records of records.hpp, then
+// every model of PaperModels identified with the paper's orders and settings by both methods
+// (bonl's default, output error, and the paper's), validated by free-run simulation, the online
+// estimate alone (one pass, no refinement) validated the same way, and a robustness check on eight
+// further trajectories. One call, run_paper_experiment, gives all of it in one PaperExperimentResult;
+// bonl_demo and `python -m bonl demo` only format that result.
+
+#include <Eigen/Core>
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "../estimator/method.hpp"
+#include "../models.hpp"
+#include "records.hpp"
+
+namespace bonl::experiment {
+
+/// The models of the paper's experiment, in the order of its equations (the paper's tables list
+/// them the other way round). Adding a model to the experiment is one entry here.
+using PaperModels = ModelList<PaperARX, PaperHammerstein, PaperHammersteinWiener, PaperPseudoHammersteinWiener>;
+
+/// The methods the experiment compares: bonl's default and the paper's (eqs. 21-31).
+inline constexpr std::array<Method, 2> kPaperMethods = {Method::OutputError, Method::Paper};
+
+/// The paper's order called `name` (na = 3, nb = 2, nk = 8, r = r1 = 3); std::invalid_argument for
+/// an order the paper does not give.
+Eigen::Index paper_order(const std::string& name);
+
+/// A model of type Model at the paper's orders, each looked up by its name in the model's description.
+template <class Model>
+Model paper_model() {
+  std::array<Eigen::Index, Model::kDescription.orders.size()> orders{};
+  for (std::size_t i = 0; i < orders.size(); ++i) orders[i] = paper_order(Model::kDescription.orders[i].name);
+  return make_model<Model>(orders);
+}
+
+/// The paper's Table 2 (the real excavator) for a model: its validation MSE as published
+/// [(rad/s)^2], and how much lower the proposed model's (the last of PaperModels) is, in percent, as
+/// the paper states it from its unrounded values (0 for the proposed model itself).
+struct PublishedScore {
+  double mse = 0.0;
+  int proposed_lower_percent = 0;
+};
+
+/// The paper's published score of the model called `name`; empty for a model the paper does not report.
+std::optional<PublishedScore> published_score(const std::string& name);
+
+/// How the paper writes a model's name in its tables, derived from the name itself: the initials of
+/// a name of several words joined by '-' ("PseudoHammersteinWiener": "P-H-W"), a one-word name as it
+/// is ("Hammerstein", "ARX").
+std::string paper_label(const std::string& name);
+
+/// The index the paper gives the first entry of a parameter block (a_1..a_na: 1, b_0..b_nb: 0), as
+/// the block's description states it in its first words.
+int first_index(const ParameterDescription& parameter);
+
+/// A model's parameters as the rows of the paper's Table 1: ("b0", b_0), ("a1", a_1), ..., ("c", c).
+template <class Model>
+std::vector<std::pair<std::string, double>> labelled_parameters(const Model& model) {
+  std::vector<std::pair<std::string, double>> rows;
+  for (std::size_t i = 0; i < Model::kDescription.parameters.size(); ++i) {
+    const ParameterDescription& parameter = Model::kDescription.parameters[i];
+    const auto values = model.parameter(i);
+    if (parameter.shape == ParameterShape::Number) {
+      rows.emplace_back(parameter.name, static_cast<double>(values[0]));
+      continue;
+    }
+    for (Eigen::Index k = 0; k < values.size(); ++k) {
+      rows.emplace_back(parameter.name + std::to_string(first_index(parameter) + k), static_cast<double>(values[k]));
+    }
+  }
+  return rows;
+}
+
+/// What the experiment measured of one identified model, whatever its type.
+struct ModelScores {
+  double mse = 0.0;           ///< validation MSE of the velocity, free-run [(rad/s)^2]; inf: unstable on it
+  Eigen::VectorXd simulated;  ///< the free-run validation velocity [rad/s]; NaN when unstable
+  double online_mse = 0.0;    ///< the same for the recursive estimate alone (one pass, no refinement)
+  std::vector<double> robustness_mse;  ///< validation MSE on each robustness trajectory, in order
+  double seconds = 0.0;         ///< wall time of identify() [s]
+  double online_seconds = 0.0;  ///< wall time of the one-pass recursive estimate [s]
+};
+
+/// One model of the experiment: the identified model, the online estimate and their scores.
+template <class Model_>
+struct ModelResult : ModelScores {
+  using Model = Model_;
+  static constexpr const char* kName = Model::kName;
+  Model model = paper_model<Model>();         ///< identify(): the recursive estimate refined
+  Model online_model = paper_model<Model>();  ///< the recursive estimator alone after one pass
+};
+
+/// One method's results: a ModelResult for every model of PaperModels, in its order.
+struct MethodResult {
+  using ModelResults = typename ApplyModels<typename MapModels<PaperModels, ModelResult>::type, std::tuple>::type;
+
+  Method method = Method::OutputError;
+  ModelResults models;
+
+  template <class Model>
+  const ModelResult<Model>& get() const {
+    return std::get<ModelResult<Model>>(models);
+  }
+  template <class Model>
+  ModelResult<Model>& get() {
+    return std::get<ModelResult<Model>>(models);
+  }
+  /// f(model_result) for every model, in PaperModels' order.
+  template <class F>
+  void for_each(F&& f) const {
+    std::apply([&](const auto&... result) { (f(result), ...); }, models);
+  }
+  template <class F>
+  void for_each(F&& f) {
+    std::apply([&](auto&... result) { (f(result), ...); }, models);
+  }
+};
+
+struct PaperExperimentOptions {
+  MeasurementOptions measurement;  ///< the identification and validation records
+  bool robustness = true;          ///< also validate on robustness_commands' trajectories
+  int refine_iterations = 100;     ///< identify()'s refinement (IdentifyOptions::refine_iterations)
+};
+
+/// Wall times of the stages [s].
+struct Timings {
+  double plant = 0.0;           ///< simulation and processing of the two records
+  double identification = 0.0;  ///< identification and validation, both methods, identify() and online
+  double robustness = 0.0;      ///< the robustness check (0 when it was not run)
+};
+
+/// Everything the paper's experiment gives.
+struct PaperExperimentResult {
+  plant::Parameters parameters;
+  PaperExperimentOptions options;
+  Records records;
+  std::vector<MethodResult> methods;      ///< one per entry of kPaperMethods, in its order
+  std::size_t robustness_trajectories = 0;  ///< trajectories of the robustness check (0: not run)
+  Timings seconds;
+
+  /// The results of `method`; std::invalid_argument for a method the experiment did not run.
+  const MethodResult& method(Method method) const;
+};
+
+/// Eight further validation trajectories for a robustness check, fixed in advance: smooth random
+/// signals like the default validation one (seeds 100-103), and multi-sines of 0.4 V per tone on
+/// other tones (0.15, 0.3, 0.45, 0.7, 0.9 Hz) with four sets of phases.
+std::vector<plant::Command> robustness_commands(const plant::Parameters& parameters,
+                                                const MeasurementOptions& options = {});
+
+/// Every model of PaperModels identified on records.identification by `method` (identify() with the
+/// method's default settings and `refine_iterations`, and the online estimate alone) and validated
+/// on records.validation. Leaves the robustness scores empty.
+MethodResult identify_paper_models(const Records& records, Method method, int refine_iterations = 100);
+
+/// Adds to every model of `result` its validation MSE on `record` (robustness_mse).
+void add_robustness_scores(MethodResult& result, const Record& record);
+
+/// The paper's experiment: acquire, identify_paper_models for every method of kPaperMethods, and the
+/// robustness check (measured with the records' options, seeds 5000, 5001, ...).
+PaperExperimentResult run_paper_experiment(const plant::Parameters& parameters = {},
+                                           const PaperExperimentOptions& options = {});
+
+}  // namespace bonl::experiment

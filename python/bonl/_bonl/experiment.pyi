@@ -1,0 +1,299 @@
+"""
+The paper's experiment on the simulated plant (bonl/experiment.hpp): ``run_paper_experiment`` and its
+result, and the records' signal processing (``low_pass``, ``differentiate``).
+"""
+from __future__ import annotations
+import bonl._bonl.plant
+import numpy
+import typing
+__all__: tuple = ('run_paper_experiment', 'PaperExperimentResult', 'MethodResult', 'ModelResult', 'Record', 'published_score', 'low_pass', 'differentiate')
+class Record:
+    """
+    One processed record of the experiment, on the output grid (bonl/experiment/records.hpp).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def angle(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: the averaged, low-passed measured angle [rad].
+        """
+    @property
+    def input(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: u = V - V0 [V], the identification input.
+        """
+    @property
+    def max_position(self) -> float:
+        """
+        float: largest piston position of the plant's run [m].
+        """
+    @property
+    def min_position(self) -> float:
+        """
+        float: smallest piston position of the plant's run [m].
+        """
+    @property
+    def reached_end_stop(self) -> bool:
+        """
+        bool: the piston left the stroke during the run.
+        """
+    @property
+    def steps(self) -> int:
+        """
+        int: CVODE's internal steps for the run.
+        """
+    @property
+    def time(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: [s].
+        """
+    @property
+    def true_velocity(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: the plant's joint rate, noise-free and unfiltered [rad/s].
+        """
+    @property
+    def velocity(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: y, its numerical derivative [rad/s]: what the models are fitted on.
+        """
+class ModelResult:
+    """
+    One model of one method: the identified model, the online estimate and their scores.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def label(self) -> str:
+        """
+        str: how the paper's tables write it (e.g. 'H-W').
+        """
+    @property
+    def model(self) -> typing.Any:
+        """
+        The identified model (identify(): the recursive estimate refined), as its bonl class; None if
+        its parameters are not finite.
+        """
+    @property
+    def mse(self) -> float:
+        """
+        float: validation MSE of the velocity, free-run [(rad/s)^2]; inf when unstable.
+        """
+    @property
+    def name(self) -> str:
+        """
+        str: the model's name (its class name, e.g. 'HammersteinWiener').
+        """
+    @property
+    def online_model(self) -> typing.Any:
+        """
+        The recursive estimator's model alone after one pass (no refinement); None if not finite.
+        """
+    @property
+    def online_mse(self) -> float:
+        """
+        float: the online estimate's validation MSE [(rad/s)^2].
+        """
+    @property
+    def online_seconds(self) -> float:
+        """
+        float: wall time of the one-pass recursive estimate [s].
+        """
+    @property
+    def parameters(self) -> list[tuple[str, float]]:
+        """
+        list of (str, float): the parameters as the rows of the paper's Table 1, ('b0', b_0), ...
+        """
+    @property
+    def params(self) -> dict:
+        """
+        dict: every parameter block by name (lists of float, a float for a one-number block).
+        """
+    @property
+    def robustness_mse(self) -> list[float]:
+        """
+        list of float: validation MSE on each robustness trajectory (empty when not run).
+        """
+    @property
+    def seconds(self) -> float:
+        """
+        float: wall time of identify() [s].
+        """
+    @property
+    def simulated(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: the free-run validation velocity [rad/s]; NaN when unstable.
+        """
+class MethodResult:
+    """
+    One estimator method's results, for every model of the experiment.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def method(self) -> str:
+        """
+        str: 'output_error' or 'paper'.
+        """
+    @property
+    def models(self) -> dict:
+        """
+        dict[str, ModelResult]: by model name, in the order of the paper's equations (ARX first).
+        """
+    @property
+    def mse(self) -> dict:
+        """
+        dict[str, float]: validation MSE by model name [(rad/s)^2].
+        """
+    @property
+    def online_mse(self) -> dict:
+        """
+        dict[str, float]: the online estimates' validation MSE by model name [(rad/s)^2].
+        """
+class PaperExperimentResult:
+    """
+    Everything the paper's experiment gives (run_paper_experiment): the plant, the two records, both
+    methods' results for every model, and the wall times.
+    """
+    def __repr__(self) -> str:
+        ...
+    def method(self, name: str) -> MethodResult:
+        """
+        One method's results.
+        
+        Parameters
+        ----------
+        name : str
+            'output_error' or 'paper'.
+        
+        Returns
+        -------
+        MethodResult
+        
+        Raises
+        ------
+        ValueError
+            For a method the experiment did not run.
+        """
+    @property
+    def identification(self) -> Record:
+        """
+        Record: the identification record (the paper's multi-sine).
+        """
+    @property
+    def methods(self) -> dict:
+        """
+        dict[str, MethodResult]: {'output_error': ..., 'paper': ...}.
+        """
+    @property
+    def model_names(self) -> tuple:
+        """
+        tuple of str: the experiment's models, in the order of the paper's equations (ARX first).
+        """
+    @property
+    def parameters(self) -> bonl._bonl.plant.Parameters:
+        """
+        bonl.plant.Parameters: the plant the experiment ran on.
+        """
+    @property
+    def robustness_trajectories(self) -> int:
+        """
+        int: trajectories of the robustness check (0 when it was not run).
+        """
+    @property
+    def seconds(self) -> dict:
+        """
+        dict[str, float]: wall time of each stage [s]: 'plant' (records), 'identification' (both methods,
+        identify() and online), 'robustness'.
+        """
+    @property
+    def validation(self) -> Record:
+        """
+        Record: the validation record (a smooth random signal).
+        """
+def differentiate(x: typing.Any, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
+    """
+    Numerical derivative: central differences, one-sided at both ends.
+    
+    Parameters
+    ----------
+    x : array_like, 1-D
+        Finite samples, at least 2.
+    ts : float
+        Sample time [s].
+    
+    Returns
+    -------
+    numpy.ndarray
+    
+    Raises
+    ------
+    ValueError
+        When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.
+    """
+def low_pass(x: typing.Any, cutoff_hz: typing.SupportsFloat | typing.SupportsIndex, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
+    """
+    First-order low-pass z[k] = z[k-1] + alpha (x[k] - z[k-1]), alpha = 1 - exp(-2 pi fc ts), z[0] = x[0].
+    
+    Parameters
+    ----------
+    x : array_like, 1-D
+        Finite samples.
+    cutoff_hz : float
+        fc [Hz].
+    ts : float
+        Sample time [s].
+    
+    Returns
+    -------
+    numpy.ndarray
+    
+    Raises
+    ------
+    ValueError
+        When ``x`` is not 1-D or not finite, or fc or ts is not > 0.
+    """
+def published_score(name: str) -> typing.Any:
+    """
+    The paper's Table 2 (the real excavator) for a model, for comparison.
+    
+    Parameters
+    ----------
+    name : str
+        The model's name, e.g. 'HammersteinWiener'.
+    
+    Returns
+    -------
+    tuple of (float, int) or None
+        Its validation MSE as published [(rad/s)^2] and how much lower the proposed model's
+        (PseudoHammersteinWiener) is, in percent, as the paper states it (0 for the proposed model);
+        None for a model the paper does not report.
+    """
+def run_paper_experiment(parameters: typing.Any = None, *, robustness: bool = False) -> PaperExperimentResult:
+    """
+    The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/plant.md).
+    
+    Identification record from the paper's multi-sine, validation record from a smooth random
+    signal (each 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated); every model of
+    the experiment (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener) identified with the
+    paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3) by the output-error and the paper's methods
+    and validated by free-run simulation; also the online estimates alone (recursive estimator, one
+    pass, no refinement). The GIL is released during the computation.
+    
+    Parameters
+    ----------
+    parameters : bonl.plant.Parameters, optional
+        The plant; None: ``bonl.plant.default_parameters()``.
+    robustness : bool, optional
+        Also validate on the eight further trajectories of ``bonl_demo``'s robustness check.
+    
+    Returns
+    -------
+    PaperExperimentResult
+    
+    Raises
+    ------
+    ValueError
+        For non-physical parameters.
+    """

@@ -7,7 +7,9 @@
 
 #include <Eigen/Core>
 #include <bonl/bonl.hpp>
+#include <array>
 #include <cstdint>
+#include <string>
 #include <type_traits>
 
 namespace bonl_bench {
@@ -57,46 +59,30 @@ const Record<Scalar>& record() {
   }
 }
 
-/// The models by name, in scalar type S, fixed (paper-order) or run-time sizes.
+/// The benchmarked models at the paper's orders, in scalar type S, with fixed (paper-order template)
+/// or run-time sizes. Every model of bonl::Models, each named by its kName; a new model is one entry.
 template <typename S, bool Fixed>
-struct Models {
-  static constexpr int D = Eigen::Dynamic;
-  using Arx = bonl::ARX<S, Fixed ? 3 : D, Fixed ? 2 : D>;
-  using Hammerstein = bonl::Hammerstein<S, Fixed ? 3 : D, Fixed ? 2 : D, Fixed ? 3 : D>;
-  using HammersteinWiener = bonl::HammersteinWiener<S, Fixed ? 3 : D, Fixed ? 2 : D, Fixed ? 3 : D, Fixed ? 3 : D>;
-  using Phw = bonl::PseudoHammersteinWiener<S, Fixed ? 3 : D, Fixed ? 2 : D, Fixed ? 3 : D>;
+struct PaperOrderModels {
+  static constexpr int Na = Fixed ? 3 : Eigen::Dynamic;
+  static constexpr int Nb = Fixed ? 2 : Eigen::Dynamic;
+  static constexpr int R = Fixed ? 3 : Eigen::Dynamic;
+  using type = bonl::ModelList<bonl::ARX<S, Na, Nb>, bonl::Hammerstein<S, Na, Nb, R>,
+                               bonl::HammersteinWiener<S, Na, Nb, R, R>, bonl::PseudoHammersteinWiener<S, Na, Nb, R>,
+                               bonl::Wiener<S, Na, Nb, R>>;
 };
+static_assert(bonl::Models::size == PaperOrderModels<double, true>::type::size,
+              "bench/bench_data.hpp: every model of bonl::Models has an entry in PaperOrderModels");
 
-template <typename S, int Na, int Nb>
-bonl::ARX<S, Na, Nb> structure_of(bonl::ARX<S, Na, Nb>*) {
-  return bonl::ARX<S, Na, Nb>(kNa, kNb, kNk);
-}
-template <typename S, int Na, int Nb, int R>
-bonl::Hammerstein<S, Na, Nb, R> structure_of(bonl::Hammerstein<S, Na, Nb, R>*) {
-  return bonl::Hammerstein<S, Na, Nb, R>(kNa, kNb, kNk, kR);
-}
-template <typename S, int Na, int Nb, int R, int R1>
-bonl::HammersteinWiener<S, Na, Nb, R, R1> structure_of(bonl::HammersteinWiener<S, Na, Nb, R, R1>*) {
-  return bonl::HammersteinWiener<S, Na, Nb, R, R1>(kNa, kNb, kNk, kR, kR1);
-}
-template <typename S, int Na, int Nb, int R>
-bonl::PseudoHammersteinWiener<S, Na, Nb, R> structure_of(bonl::PseudoHammersteinWiener<S, Na, Nb, R>*) {
-  return bonl::PseudoHammersteinWiener<S, Na, Nb, R>(kNa, kNb, kNk, kR);
-}
-
-template <class M, class = void>
-struct has_r1 : std::false_type {};
-template <class M>
-struct has_r1<M, std::void_t<decltype(&M::r1)>> : std::true_type {};
-template <class M, class = void>
-struct has_c : std::false_type {};
-template <class M>
-struct has_c<M, std::void_t<decltype(&M::set_c)>> : std::true_type {};
-
-/// The structure of a model at the paper's orders (nk is always a run-time value).
+/// The structure of a model at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3), by the names
+/// its description gives its orders.
 template <class Model>
 Model make_structure() {
-  return structure_of(static_cast<Model*>(nullptr));
+  std::array<Eigen::Index, Model::kDescription.orders.size()> orders{};
+  for (std::size_t i = 0; i < orders.size(); ++i) {
+    const std::string name = Model::kDescription.orders[i].name;
+    orders[i] = name == "na" ? kNa : name == "nb" ? kNb : name == "nk" ? kNk : name == "r" ? kR : kR1;
+  }
+  return bonl::make_model<Model>(orders);
 }
 
 /// Updates an estimator of `structure` over the record `passes` times, each pass from the initial
@@ -116,19 +102,21 @@ long count_updates(const Model& structure, const bonl::EstimatorOptions& options
   return updated;
 }
 
-/// A stable model with the known parameters (ARX: b = true_b, a = true_a).
+/// A stable model with the known parameters, each block by its name (b, a, f, p, q, c).
 template <class Model>
 Model make_known_model() {
   using S = typename Model::Scalar;
   Model model = make_structure<Model>();
-  model.set_b(true_b().cast<S>());
-  model.set_a(true_a().cast<S>());
-  if constexpr (Model::kHasInternalVariables) {
-    model.set_f(true_f().cast<S>());
-    model.set_p(true_p().cast<S>());
+  for (std::size_t i = 0; i < Model::kDescription.parameters.size(); ++i) {
+    const std::string name = Model::kDescription.parameters[i].name;
+    const Eigen::VectorXd value = name == "b"   ? true_b()
+                                  : name == "a" ? true_a()
+                                  : name == "f" ? true_f()
+                                  : name == "p" ? true_p()
+                                  : name == "q" ? true_q()
+                                                : Eigen::VectorXd::Constant(1, kTrueC);
+    model.set_parameter(i, value.cast<S>());
   }
-  if constexpr (has_r1<Model>::value) model.set_q(true_q().cast<S>());
-  if constexpr (has_c<Model>::value) model.set_c(S(kTrueC));
   return model;
 }
 

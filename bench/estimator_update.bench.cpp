@@ -1,11 +1,10 @@
 // Cost of one online estimator update (Estimator<Model>::update) per model at the paper's orders
 // (na = 3, nb = 2, nk = 8, r = r1 = 3), on a recorded noisy response of the known P-H-W system:
-// fixed (paper-order template) sizes and run-time (Eigen::Dynamic) sizes, double and float, the
-// output-error method (the default), the equation-error method, and the paper method for P-H-W. One
-// benchmark iteration is one sample.
+// fixed (paper-order template) sizes and run-time (Eigen::Dynamic) sizes, double and float, each
+// method: output_error (the default), equation_error, paper. One benchmark iteration is one sample.
 //
-// Names: update/<model>/<fixed|dynamic>/<double|float>[/equation_error|/paper] (no suffix: the
-// output-error method). The counter `updated` is the fraction of samples that ran the RLS step
+// Names: update/<Model::kName>/<fixed|dynamic>/<double|float>[/equation_error|/paper] (no suffix:
+// the output-error method). The counter `updated` is the fraction of samples that ran the RLS step
 // (measured in an untimed pass over the record): the P-H-W equation-error method skips the samples
 // inside the backlash gap (about a quarter here), so its average is below the cost of a full update;
 // the output-error method updates on every sample. Float runs of the equation-error and paper
@@ -56,20 +55,14 @@ void update(benchmark::State& state, bonl::Method method) {
 
 template <typename S, bool Fixed>
 void register_sizes(const std::string& suffix) {
-  using M = bonl_bench::Models<S, Fixed>;
-  const auto add = [&](const std::string& model, auto* tag, bonl::Method method, const std::string& extra) {
-    using Model = std::remove_pointer_t<decltype(tag)>;
-    benchmark::RegisterBenchmark(("update/" + model + "/" + suffix + extra).c_str(),
-                                 [method](benchmark::State& s) { update<Model>(s, method); });
-  };
-  for (const bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError}) {
-    const std::string extra = method == bonl::Method::OutputError ? "" : std::string("/") + bonl::to_string(method);
-    add("arx", static_cast<typename M::Arx*>(nullptr), method, extra);
-    add("hammerstein", static_cast<typename M::Hammerstein*>(nullptr), method, extra);
-    add("hw", static_cast<typename M::HammersteinWiener*>(nullptr), method, extra);
-    add("phw", static_cast<typename M::Phw*>(nullptr), method, extra);
-  }
-  add("phw", static_cast<typename M::Phw*>(nullptr), bonl::Method::Paper, "/paper");
+  bonl::for_each_model(typename bonl_bench::PaperOrderModels<S, Fixed>::type{}, [&](auto tag) {
+    using Model = typename decltype(tag)::type;
+    for (const bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
+      const std::string extra = method == bonl::Method::OutputError ? "" : std::string("/") + bonl::to_string(method);
+      benchmark::RegisterBenchmark((std::string("update/") + Model::kName + "/" + suffix + extra).c_str(),
+                                   [method](benchmark::State& s) { update<Model>(s, method); });
+    }
+  });
 }
 
 const int registered = [] {

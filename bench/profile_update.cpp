@@ -2,7 +2,8 @@
 // of Google Benchmark would blur: `passes` passes over the benchmark record (4096 samples), each from
 // the initial estimate, at the paper's orders with fixed sizes in double.
 //   bonl_profile_update MODEL[-METHOD] [PASSES]
-//     MODEL: arx, hammerstein, hw, phw; METHOD: output_error (the default), equation_error, paper
+//     MODEL: a model's name (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, Wiener);
+//     METHOD: output_error (the default), equation_error, paper
 // Instructions per sample: run it under callgrind with 1 and 3 passes and divide the difference by
 // 2 * 4096 (docs/performance.md has the recipe and the latest profile).
 
@@ -23,8 +24,8 @@ long run(bonl::Method method, long passes) {
 }
 
 int usage() {
-  std::fprintf(stderr, "usage: bonl_profile_update MODEL[-METHOD] [PASSES]  (MODEL: arx, hammerstein, hw, phw;"
-                       " METHOD: output_error, equation_error, paper; PASSES >= 1, default 1)\n");
+  std::fprintf(stderr, "usage: bonl_profile_update MODEL[-METHOD] [PASSES]  (MODEL: a model's name, e.g. "
+                       "PseudoHammersteinWiener; METHOD: output_error, equation_error, paper; PASSES >= 1, default 1)\n");
   return 2;
 }
 
@@ -47,19 +48,12 @@ int main(int argc, char** argv) {
   const long passes = argc == 3 ? std::strtol(argv[2], &end, 10) : 1;
   if (argc == 3 && (end == argv[2] || *end != '\0' || passes < 1)) return usage();
 
-  using M = bonl_bench::Models<double, true>;
-  long updated = 0;
-  if (model == "arx") {
-    updated = run<M::Arx>(method, passes);
-  } else if (model == "hammerstein") {
-    updated = run<M::Hammerstein>(method, passes);
-  } else if (model == "hw") {
-    updated = run<M::HammersteinWiener>(method, passes);
-  } else if (model == "phw") {
-    updated = run<M::Phw>(method, passes);
-  } else {
-    return usage();
-  }
+  long updated = -1;
+  bonl::for_each_model(bonl_bench::PaperOrderModels<double, true>::type{}, [&](auto tag) {
+    using Model = typename decltype(tag)::type;
+    if (model == Model::kName) updated = run<Model>(method, passes);
+  });
+  if (updated < 0) return usage();
   // Printed, so that the loop cannot be optimised away; also a check that the estimator updated.
   std::printf("%s: %ld passes, %ld updates\n", name.c_str(), passes, updated);
   return 0;

@@ -21,10 +21,10 @@ import subprocess
 import sys
 
 PHW_PARAMS = 14
-# The keys of issue 5's --json are the equation-error update (the default method then); the
+# The models are those the benchmarks name (update/<Model::kName>/...), in the order they ran. The
+# --json key <model>_update_ns is issue 5's, the equation-error update (the default method then); the
 # output-error method (the default since issue 16) adds <model>_update_output_error_ns.
-MODELS = (("arx", "ARX", "arx_update_ns"), ("hammerstein", "Hammerstein", "hammerstein_update_ns"),
-          ("hw", "H-W", "hw_update_ns"), ("phw", "P-H-W", "phw_update_ns"))
+PHW = "PseudoHammersteinWiener"
 METHODS = (("", "output_error"), ("/equation_error", "equation_error"), ("/paper", "paper"))
 
 
@@ -132,11 +132,13 @@ def main() -> int:
     flat: dict = {}
     notes: list[str] = []
 
+    models = list(dict.fromkeys(name.split("/")[1] for name in cpp if name.startswith(("update/", "simulate/"))))
+
     # --- Estimator updates -------------------------------------------------------------------------
     rows = []
     for sizes in ("fixed", "dynamic"):
         for scalar in ("double", "float"):
-            for key, label, json_key in MODELS:
+            for key in models:
                 for suffix, method in METHODS:
                     name = f"update/{key}/{sizes}/{scalar}{suffix}"
                     if name not in cpp:
@@ -145,12 +147,12 @@ def main() -> int:
                     value = cpp_ns(name)
                     n = int(entry.get("params", 0))
                     updated = entry.get("updated", 1.0)
-                    rows.append([f"{label} update, {sizes}, {scalar}, {method} method", str(n), fmt_ns(value),
+                    rows.append([f"{key} update, {sizes}, {scalar}, {method} method", str(n), fmt_ns(value),
                                  fmt_ratio(textbook.get(n), value), fmt_ratio(padasip.get(n), value),
                                  f"{updated:.2f}"])
                     flat[f"{key}_update_{sizes}_{scalar}_{method}_ns"] = value
                     if sizes == "fixed" and scalar == "double" and method == "equation_error":
-                        flat[json_key] = value
+                        flat[f"{key}_update_ns"] = value
                     if sizes == "fixed" and scalar == "double" and method == "output_error":
                         flat[f"{key}_update_output_error_ns"] = value
                     if updated < 0.5:
@@ -162,11 +164,11 @@ def main() -> int:
     # --- Free-run simulation -----------------------------------------------------------------------
     rows = []
     for sizes in ("fixed", "dynamic"):
-        for key, label, _ in MODELS:
+        for key in models:
             name = f"simulate/{key}/{sizes}/double"
             if name in cpp:
                 value = cpp[name]["per_sample"] * 1e9
-                rows.append([f"{label} free-run simulation, {sizes}, double", fmt_ns(value)])
+                rows.append([f"{key} free-run simulation, {sizes}, double", fmt_ns(value)])
                 flat[f"{key}_simulate_{sizes}_ns"] = value
     simulate_table = table(["free-run simulation (C++, 4096 samples)", "ns/sample"], rows)
 
@@ -183,8 +185,8 @@ def main() -> int:
     flat["python_identify_output_error_5000_ms"] = bonl_py["identify_output_error_5000_ms"]
     flat["python_estimator_update_call_ns"] = bonl_py["estimator_update_call_ns"]
     flat["python_estimator_update_call_numpy_scalars_ns"] = bonl_py["estimator_update_call_numpy_scalars_ns"]
-    phw = flat.get("phw_update_ns")
-    phw_output_error = flat.get("phw_update_output_error_ns")
+    phw = flat.get(f"{PHW}_update_ns")
+    phw_output_error = flat.get(f"{PHW}_update_output_error_ns")
     tb, pa = flat["naive_rls_ns"], flat["padasip_rls_ns"]
 
     def row(label: str, value: float | None, vs: bool = True) -> list[str]:

@@ -3,7 +3,7 @@
 // Fixed (paper-order) and run-time sizes, double. One iteration simulates the whole record; the
 // counter `per_sample` is the time per sample.
 //
-// Names: simulate/<model>/<fixed|dynamic>/double.
+// Names: simulate/<Model::kName>/<fixed|dynamic>/double.
 
 #include <benchmark/benchmark.h>
 
@@ -32,11 +32,10 @@ void simulate(benchmark::State& state) {
 
 template <bool Fixed>
 void register_sizes(const std::string& suffix) {
-  using M = bonl_bench::Models<double, Fixed>;
-  benchmark::RegisterBenchmark(("simulate/arx/" + suffix).c_str(), simulate<typename M::Arx>);
-  benchmark::RegisterBenchmark(("simulate/hammerstein/" + suffix).c_str(), simulate<typename M::Hammerstein>);
-  benchmark::RegisterBenchmark(("simulate/hw/" + suffix).c_str(), simulate<typename M::HammersteinWiener>);
-  benchmark::RegisterBenchmark(("simulate/phw/" + suffix).c_str(), simulate<typename M::Phw>);
+  bonl::for_each_model(typename bonl_bench::PaperOrderModels<double, Fixed>::type{}, [&](auto tag) {
+    using Model = typename decltype(tag)::type;
+    benchmark::RegisterBenchmark((std::string("simulate/") + Model::kName + "/" + suffix).c_str(), simulate<Model>);
+  });
 }
 
 const int registered = [] {

@@ -16,7 +16,7 @@
 namespace bonl {
 
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic>
-class ARX {
+class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
  public:
   using Scalar = Scalar_;
   static constexpr int kNumParams = detail::add_sizes(detail::poly_size(Nb_), Na_);
@@ -78,34 +78,16 @@ class ARX {
     detail::assign_checked(m_theta.tail(m_na), a, "a");
   }
 
-  Linear linear_block() const {
-    Linear block(m_na, m_nb, m_nk);
-    block.set_a(a());
-    block.set_b(b());
-    return block;
-  }
-
-  /// Free-run simulation from rest. Throws NumericalError if the output leaves the finite numbers.
-  template <typename U>
-  VectorX simulate(const Eigen::MatrixBase<U>& u) const {
-    return detail::simulate_checked(*this, u);
-  }
   /// As simulate(), but reports divergence by returning false instead of throwing.
   template <typename U>
   bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
-    Linear linear = linear_block();
+    Linear linear = this->linear_block();
     y.resize(u.size());
     for (Eigen::Index k = 0; k < u.size(); ++k) {
       y[k] = linear.step(u[k]);
       if (!std::isfinite(y[k])) return false;
     }
     return true;
-  }
-
-  /// One-step-ahead prediction from measured u and y.
-  template <typename U, typename Y>
-  VectorX predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
-    return detail::predict_one_step(*this, u, y);
   }
 
   /// Where the recursive estimator starts (all zero).

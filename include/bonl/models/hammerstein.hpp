@@ -8,7 +8,8 @@
 namespace bonl {
 
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic>
-class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0> {
+class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
+                    public detail::ModelRuns<Hammerstein<Scalar_, Na_, Nb_, R_>> {
   using Front = detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>;
 
  public:
@@ -36,20 +37,10 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0> {
     this->set_front_parameter(i, value);
   }
 
-  /// Free-run simulation from rest. Throws NumericalError if the output leaves the finite numbers.
-  template <typename U>
-  VectorX simulate(const Eigen::MatrixBase<U>& u) const {
-    return detail::simulate_checked(*this, u);
-  }
+  /// As simulate(), but reports divergence by returning false instead of throwing.
   template <typename U>
   bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
-    return this->simulate_front(u, y, [](Scalar x) { return x; });
-  }
-
-  /// One-step-ahead prediction: past x are the measured outputs.
-  template <typename U, typename Y>
-  VectorX predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
-    return detail::predict_one_step(*this, u, y);
+    return this->simulate_front(u, y, this->linear_block(), [](Scalar x) { return x; });
   }
 
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }

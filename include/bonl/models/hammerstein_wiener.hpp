@@ -14,7 +14,10 @@ namespace bonl {
 
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
           int R1_ = Eigen::Dynamic>
-class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, (R1_ == Eigen::Dynamic ? Eigen::Dynamic : R1_ - 1)> {
+class HammersteinWiener
+    : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, (R1_ == Eigen::Dynamic ? Eigen::Dynamic : R1_ - 1)>,
+      public detail::ModelRuns<HammersteinWiener<Scalar_, Na_, Nb_, R_, R1_>>,
+      public detail::OutputPolynomialParameters<HammersteinWiener<Scalar_, Na_, Nb_, R_, R1_>> {
   using Front = detail::HammersteinFront<Scalar_, Na_, Nb_, R_, (R1_ == Eigen::Dynamic ? Eigen::Dynamic : R1_ - 1)>;
 
  public:
@@ -42,57 +45,29 @@ class HammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_,
   /// The parameter block kDescription.parameters[i]: b, a, f, p, q.
   VectorX parameter(std::size_t i) const {
     if (i < Front::kFrontBlocks) return this->front_parameter(i);
-    if (i == Front::kFrontBlocks) return q();
+    if (i == Front::kFrontBlocks) return this->q();
     detail::no_such_parameter(kName, i);
   }
   void set_parameter(std::size_t i, const VectorX& value) {
     if (i < Front::kFrontBlocks) return this->set_front_parameter(i, value);
-    if (i == Front::kFrontBlocks) return set_q(value);
+    if (i == Front::kFrontBlocks) return this->set_q(value);
     detail::no_such_parameter(kName, i);
   }
 
-  /// q_1..q_r1 with q_1 = 1.
-  VectorX q() const {
-    VectorX q(m_r1);
-    q[0] = Scalar(1);
-    q.tail(m_r1 - 1) = this->m_theta.tail(m_r1 - 1);
-    return q;
-  }
-  template <typename T>
-  void set_q(const Eigen::MatrixBase<T>& q) {
-    detail::require_size(q, m_r1, "q");
-    detail::require_finite(q, "q");
-    detail::require(q[0] == Scalar(1), "q[0] (q_1) must be 1: the H-W model is normalised so that q_1 = 1");
-    this->m_theta.tail(m_r1 - 1) = q.tail(m_r1 - 1);
-  }
-  OutputBlock output_block() const {
-    OutputBlock block(m_r1);
-    block.set_q(q());
-    return block;
-  }
-
-  template <typename U>
-  VectorX simulate(const Eigen::MatrixBase<U>& u) const {
-    return detail::simulate_checked(*this, u);
-  }
+  /// As simulate(), but reports divergence by returning false instead of throwing.
   template <typename U>
   bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
-    const VectorX qv = q();
-    return this->simulate_front(u, y, [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
-  }
-
-  /// One-step-ahead prediction: past x are the measured outputs mapped back through q^-1 (the
-  /// branch nearest the model's own estimate); where q cannot be inverted, the model's estimate.
-  template <typename U, typename Y>
-  VectorX predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
-    return detail::predict_one_step(*this, u, y);
+    const VectorX qv = this->q();
+    return this->simulate_front(u, y, this->linear_block(), [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
   }
 
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form: y(k) = x(k) + sum_{m>=2} q_m x(k)^m with x(k) the front's key-term expression,
   /// i.e. regressor [front, x^2(k), ..., x^r1(k)] with x(k) the a-priori estimate. The past x: the
-  /// equation-error method maps the measured y back through q^-1, the paper's keeps the model's own.
+  /// equation-error method maps the measured y back through q^-1 (the branch nearest the model's own
+  /// estimate; where q cannot be inverted, the model's estimate), the paper's keeps the model's own.
+  /// predict() runs the equation-error form.
   class KeyTerms {
    public:
     KeyTerms(const HammersteinWiener& model, KeyTermMethod method)

@@ -14,7 +14,8 @@
 namespace bonl {
 
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic>
-class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 1> {
+class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 1>,
+                                public detail::ModelRuns<PseudoHammersteinWiener<Scalar_, Na_, Nb_, R_>> {
   using Front = detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 1>;
 
  public:
@@ -68,21 +69,11 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     Front::set_theta(theta);
   }
 
-  template <typename U>
-  VectorX simulate(const Eigen::MatrixBase<U>& u) const {
-    return detail::simulate_checked(*this, u);
-  }
+  /// Free run from rest; false (instead of simulate()'s NumericalError) if it leaves the finite numbers.
   template <typename U>
   bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     Backlash<Scalar> play = backlash();
-    return this->simulate_front(u, y, [&play](Scalar x) { return play.step(x); });
-  }
-
-  /// One-step-ahead prediction: the backlash's memory is the measured y(k-1), and past x are the
-  /// model's estimates clipped to [y - c, y + c], the band the measured output allows.
-  template <typename U, typename Y>
-  VectorX predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
-    return detail::predict_one_step(*this, u, y);
+    return this->simulate_front(u, y, this->linear_block(), [&play](Scalar x) { return play.step(x); });
   }
 
   /// Projects an estimate onto the model's valid set: c >= 0.

@@ -23,7 +23,8 @@
 namespace bonl {
 
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R1_ = Eigen::Dynamic>
-class Wiener {
+class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
+               public detail::OutputPolynomialParameters<Wiener<Scalar_, Na_, Nb_, R1_>> {
   static constexpr int kLinearParams = detail::add_sizes(detail::poly_size(Nb_), Na_);  // b_0..b_nb, a
 
  public:
@@ -76,13 +77,6 @@ class Wiener {
 
   VectorX b() const { return m_theta.head(m_nb + 1); }
   VectorX a() const { return m_theta.segment(m_nb + 1, m_na); }
-  /// q_1..q_r1 with q_1 = 1.
-  VectorX q() const {
-    VectorX q(m_r1);
-    q[0] = Scalar(1);
-    q.tail(m_r1 - 1) = m_theta.tail(m_r1 - 1);
-    return q;
-  }
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
@@ -91,62 +85,32 @@ class Wiener {
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.segment(m_nb + 1, m_na), a, "a");
   }
-  template <typename T>
-  void set_q(const Eigen::MatrixBase<T>& q) {
-    detail::require_size(q, m_r1, "q");
-    detail::require_finite(q, "q");
-    detail::require(q[0] == Scalar(1), "q[0] (q_1) must be 1: the Wiener model is normalised so that q_1 = 1");
-    m_theta.tail(m_r1 - 1) = q.tail(m_r1 - 1);
-  }
 
   /// The parameter block kDescription.parameters[i]: b, a, q.
   VectorX parameter(std::size_t i) const {
     if (i == 0) return b();
     if (i == 1) return a();
-    if (i == 2) return q();
+    if (i == 2) return this->q();
     detail::no_such_parameter(kName, i);
   }
   void set_parameter(std::size_t i, const VectorX& value) {
     if (i == 0) return set_b(value);
     if (i == 1) return set_a(value);
-    if (i == 2) return set_q(value);
+    if (i == 2) return this->set_q(value);
     detail::no_such_parameter(kName, i);
   }
 
-  Linear linear_block() const {
-    Linear block(m_na, m_nb, m_nk);
-    block.set_a(a());
-    block.set_b(b());
-    return block;
-  }
-  OutputBlock output_block() const {
-    OutputBlock block(m_r1);
-    block.set_q(q());
-    return block;
-  }
-
-  /// Free-run simulation from rest. Throws NumericalError if the output leaves the finite numbers.
-  template <typename U>
-  VectorX simulate(const Eigen::MatrixBase<U>& u) const {
-    return detail::simulate_checked(*this, u);
-  }
+  /// As simulate(), but reports divergence by returning false instead of throwing.
   template <typename U>
   bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
-    Linear linear = linear_block();
-    const VectorX qv = q();
+    Linear linear = this->linear_block();
+    const VectorX qv = this->q();
     y.resize(u.size());
     for (Eigen::Index k = 0; k < u.size(); ++k) {
       y[k] = OutputBlock::evaluate(qv, linear.step(u[k]));
       if (!std::isfinite(y[k])) return false;
     }
     return true;
-  }
-
-  /// One-step-ahead prediction: past x are the measured outputs mapped back through q^-1 (the
-  /// branch nearest the model's own estimate); where q cannot be inverted, the model's estimate.
-  template <typename U, typename Y>
-  VectorX predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
-    return detail::predict_one_step(*this, u, y);
   }
 
   /// Where the recursive estimator starts (all zero).
@@ -156,8 +120,9 @@ class Wiener {
 
   /// Key-term form: regressor [u(k-nk..k-nk-nb), -x(k-1..k-na), x(k)^2..x(k)^r1], target y(k), with
   /// x(k) the a-priori estimate [u lags, -x lags] . [b, a]. The past x: the equation-error method maps
-  /// the measured y back through q^-1, the paper's method keeps the model's estimates (eq. 24: stored
-  /// a posteriori, at the next step).
+  /// the measured y back through q^-1 (the branch nearest the model's own estimate; where q cannot
+  /// be inverted, the model's estimate), the paper's method keeps the model's estimates (eq. 24:
+  /// stored a posteriori, at the next step). predict() runs the equation-error form.
   class KeyTerms {
    public:
     KeyTerms(const Wiener& model, KeyTermMethod method)

@@ -122,12 +122,6 @@ class HammersteinFront {
   void constrain(Params& /*theta*/) const noexcept {}
 
   InputBlock input_block() const { return InputBlock(f(), p()); }
-  Linear linear_block() const {
-    Linear block(m_na, m_nb, m_nk);
-    block.set_a(a());
-    block.set_b(b());
-    return block;
-  }
 
  protected:
   HammersteinFront(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index extra) {
@@ -145,11 +139,11 @@ class HammersteinFront {
     m_theta = Params::Zero(front_size() + extra);
   }
 
-  /// Free run from rest: w = N1(u), x = L(w), y = output(x). Returns false as soon as the
-  /// simulation leaves the finite numbers (an unstable or diverging model).
+  /// Free run from rest: w = N1(u), x = L(w) with L = `linear` (the model's linear_block()),
+  /// y = output(x). Returns false as soon as the simulation leaves the finite numbers (an unstable or
+  /// diverging model).
   template <typename U, typename OutputMap>
-  bool simulate_front(const Eigen::MatrixBase<U>& u, VectorX& y, OutputMap&& output) const {
-    Linear linear = linear_block();
+  bool simulate_front(const Eigen::MatrixBase<U>& u, VectorX& y, Linear linear, OutputMap&& output) const {
     const VectorX fv = f();
     const VectorX pv = p();
     y.resize(u.size());

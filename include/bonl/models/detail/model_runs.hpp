@@ -1,8 +1,8 @@
 #pragma once
-// What every model's simulate() and predict() share. One-step-ahead prediction runs the model's
-// key terms with the equation-error method's internal-variable estimates (those that use the
-// measured output) and fixed parameters, so a prediction and the estimator's regressor come from
-// the same code.
+// What every model's simulate(), predict() and linear_block() share, written once (ModelRuns, a
+// CRTP base). One-step-ahead prediction runs the model's key terms with the equation-error method's
+// internal-variable estimates (those that use the measured output) and fixed parameters, so a
+// prediction and the estimator's regressor come from the same code.
 
 #include <Eigen/Core>
 
@@ -36,5 +36,33 @@ typename Model::VectorX predict_one_step(const Model& model, const Eigen::Matrix
   for (Eigen::Index k = 0; k < u.size(); ++k) prediction[k] = terms.step(model.theta(), u[k], y[k]).prediction;
   return prediction;
 }
+
+/// simulate(), predict() and linear_block() for a model Derived with try_simulate(u, y), KeyTerms,
+/// a(), b(), na(), nb(), nk() and the type Linear.
+template <class Derived>
+class ModelRuns {
+ public:
+  /// Free-run simulation from rest. Throws NumericalError if the output leaves the finite numbers.
+  template <typename U>
+  auto simulate(const Eigen::MatrixBase<U>& u) const {
+    return simulate_checked(self(), u);
+  }
+  /// One-step-ahead prediction from the measured u and y: the internal variables are what the
+  /// measured past says (the model's KeyTerms with KeyTermMethod::EquationError).
+  template <typename U, typename Y>
+  auto predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
+    return predict_one_step(self(), u, y);
+  }
+  /// The linear block B / A with the model's delay.
+  auto linear_block() const {
+    typename Derived::Linear block(self().na(), self().nb(), self().nk());
+    block.set_a(self().a());
+    block.set_b(self().b());
+    return block;
+  }
+
+ private:
+  const Derived& self() const noexcept { return static_cast<const Derived&>(*this); }
+};
 
 }  // namespace bonl::detail

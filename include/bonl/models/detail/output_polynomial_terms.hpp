@@ -1,15 +1,58 @@
 #pragma once
-// The output polynomial's part of a model's key-term form and of its output-error step, shared by the
-// H-W and Wiener models: y = x + sum_{m=2..r1} q_m x^m, with q_1 = 1 outside theta and q_2..q_r1 the
-// last r1 - 1 entries of theta (of n).
+// The output polynomial of the H-W and Wiener models, y = x + sum_{m=2..r1} q_m x^m, with q_1 = 1
+// outside theta and q_2..q_r1 the last r1 - 1 entries of theta (of n): its parameters (a CRTP base)
+// and its part of the key-term form and of the output-error step.
 
 #include <Eigen/Core>
 
 #include <algorithm>
 
+#include <string>
+
 #include "../../blocks/output_polynomial.hpp"
+#include "../../detail/validate.hpp"
 
 namespace bonl::detail {
+
+/// q(), set_q() and output_block() for a model Derived with r1(), theta(), set_theta(), the type
+/// OutputBlock and a parameter block "q" in its description (whose normalisation set_q() enforces).
+template <class Derived>
+class OutputPolynomialParameters {
+ public:
+  /// q_1..q_r1 with q_1 = 1.
+  auto q() const {
+    const Derived& model = self();
+    typename Derived::VectorX q(model.r1());
+    q[0] = 1;
+    q.tail(model.r1() - 1) = model.theta().tail(model.r1() - 1);
+    return q;
+  }
+  /// q_1..q_r1 with q_1 = 1.
+  template <typename T>
+  void set_q(const Eigen::MatrixBase<T>& q) {
+    Derived& model = static_cast<Derived&>(*this);
+    require_size(q, model.r1(), "q");
+    require_finite(q, "q");
+    require(q[0] == 1, std::string("q[0] (q_1) must be 1: ") + normalisation());
+    typename Derived::Params theta = model.theta();
+    theta.tail(model.r1() - 1) = q.tail(model.r1() - 1);
+    model.set_theta(theta);
+  }
+  auto output_block() const {
+    typename Derived::OutputBlock block(self().r1());
+    block.set_q(q());
+    return block;
+  }
+
+ private:
+  const Derived& self() const noexcept { return static_cast<const Derived&>(*this); }
+  static const char* normalisation() noexcept {
+    for (const auto& parameter : Derived::kDescription.parameters) {
+      if (std::string(parameter.name) == "q" && parameter.normalised) return parameter.normalised;
+    }
+    return "q_1 = 1";
+  }
+};
 
 template <typename Scalar>
 class OutputPolynomialTerms {

@@ -108,11 +108,6 @@ inline double to_scalar(const py::handle& object, const std::string& name) {
   return value;
 }
 
-/// ValueError "bonl: <name> must be finite, got <value>" for a NaN or an infinity (validate.hpp
-/// checks arrays only).
-inline void require_finite_number(double value, const std::string& name) {
-  bonl::detail::require(std::isfinite(value), name + " must be finite, got " + bonl::detail::format_number(value));
-}
 
 /// Eigen vector -> numpy float64 array without copying the data (the array owns the moved vector).
 inline py::array to_numpy(Eigen::VectorXd&& vector) { return py::cast(std::move(vector)); }

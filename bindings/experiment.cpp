@@ -91,8 +91,7 @@ const experiment::MethodResult& method_named(const experiment::PaperExperimentRe
     if (method == name) return result.methods[i];
     names += (i == 0 ? "" : i + 1 == result.methods.size() ? " or " : ", ") + ("'" + method + "'");
   }
-  bonl::detail::require(false, "method must be " + names + ", got '" + name + "'");
-  return result.methods.front();
+  bonl::detail::fail("method must be " + names + ", got '" + name + "'");
 }
 
 void bind_record(py::module_& sub) {

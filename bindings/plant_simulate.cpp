@@ -77,7 +77,7 @@ py::dict simulate(const py::object& command, const py::object& parameters, doubl
       else if (key == "velocity") options.tolerances.absolute_velocity = value;
       else if (key == "pressure") options.tolerances.absolute_pressure = value;
       else if (key == "spool") options.tolerances.absolute_spool = value;
-      else bonl::detail::require(false, "atol: unknown key '" + key + "' (position, velocity, pressure, spool)");
+      else bonl::detail::fail("atol: unknown key '" + key + "' (position, velocity, pressure, spool)");
     }
   }
   options.sensor_noise = sensor_noise;
@@ -150,7 +150,7 @@ void bind_plant_simulate(py::module_& sub) {
       [](const py::object& parameters, double position) {
         const plant::Parameters p = parameters_argument(parameters);
         p.validate();
-        require_finite_number(position, "position");
+        bonl::detail::require_finite(position, "position");
         return state_to_numpy(plant::initial_state(p, position));
       },
       py::arg("parameters"), py::arg("position"),
@@ -170,8 +170,8 @@ void bind_plant_simulate(py::module_& sub) {
         bonl::detail::require(x.size() == 5, "state must have 5 entries " + std::string(kStateOrder) + ", got " +
                                                  std::to_string(x.size()));
         bonl::detail::require_finite(x, "state");
-        require_finite_number(pilot, "pilot");
-        require_finite_number(load, "load");
+        bonl::detail::require_finite(pilot, "pilot");
+        bonl::detail::require_finite(load, "load");
         plant::State s;
         s.position = x[0];
         s.velocity = x[1];

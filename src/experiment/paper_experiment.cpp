@@ -53,8 +53,7 @@ Eigen::Index paper_order(const std::string& name) {
   for (const Order& order : kOrders) {
     if (name == order.name) return order.value;
   }
-  detail::require(false, "experiment: the paper gives no order '" + name + "' (it gives na, nb, nk, r, r1)");
-  return 0;
+  detail::fail("experiment: the paper gives no order '" + name + "' (it gives na, nb, nk, r, r1)");
 }
 
 std::optional<PublishedScore> published_score(const std::string& name) {
@@ -98,9 +97,8 @@ const MethodResult& PaperExperimentResult::method(Method method) const {
   for (const MethodResult& result : methods) {
     if (result.method == method) return result;
   }
-  detail::require(false, std::string("experiment: the method ") + to_string(method) +
-                             " was not run (the paper's experiment runs output_error and paper)");
-  return methods.front();
+  detail::fail(std::string("experiment: the method ") + to_string(method) +
+               " was not run (the paper's experiment runs output_error and paper)");
 }
 
 std::vector<plant::Command> robustness_commands(const plant::Parameters& parameters, const MeasurementOptions& options) {

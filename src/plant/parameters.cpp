@@ -18,7 +18,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// std::invalid_argument("bonl: plant: <name> <requirement>, got <value>").
 void fail(const char* name, const std::string& requirement, double value) {
-  bonl::detail::require(false, "plant: " + std::string(name) + ' ' + requirement + ", got " + bonl::detail::format_number(value));
+  bonl::detail::fail("plant: " + std::string(name) + ' ' + requirement + ", got " + bonl::detail::format_number(value));
 }
 
 void require_positive(const char* name, double value) {

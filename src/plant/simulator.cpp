@@ -38,8 +38,8 @@ using detail::kVelocity;
 
 /// std::invalid_argument("bonl: simulate: <name> <requirement>, got <value>").
 void bad_option(const char* name, const std::string& requirement, double value) {
-  bonl::detail::require(false, "simulate: " + std::string(name) + ' ' + requirement + ", got " +
-                                   bonl::detail::format_number(value));
+  bonl::detail::fail("simulate: " + std::string(name) + ' ' + requirement + ", got " +
+                     bonl::detail::format_number(value));
 }
 
 void require_positive(const char* name, double value) {
@@ -303,16 +303,16 @@ Trajectory simulate(const Parameters& parameters, const Command& command, const 
     const double tj = data.grid_time(j);
     voltage = command(tj);
     if (!std::isfinite(voltage))
-      bonl::detail::require(false, "simulate: the command is not finite at t = " + bonl::detail::format_number(tj) +
-                                  " s, got " + bonl::detail::format_number(voltage));
+      bonl::detail::fail("simulate: the command is not finite at t = " + bonl::detail::format_number(tj) + " s, got " +
+                         bonl::detail::format_number(voltage));
     const double opening = commanded_opening(parameters, voltage);
     pilot = j == 0 ? opening : bonl::Backlash<double>::map(opening, previous_pilot, hv);
     load = 0.0;
     if (options.load) {
       load = options.load(tj);
       if (!std::isfinite(load))
-        bonl::detail::require(false, "simulate: the load is not finite at t = " + bonl::detail::format_number(tj) +
-                                    " s, got " + bonl::detail::format_number(load));
+        bonl::detail::fail("simulate: the load is not finite at t = " + bonl::detail::format_number(tj) + " s, got " +
+                           bonl::detail::format_number(load));
     }
   };
 

@@ -18,8 +18,16 @@ inline std::string format_number(double value) {
   return text;
 }
 
+/// Bad input: std::invalid_argument with the library's one prefix, "bonl: ".
+[[noreturn]] inline void fail(const std::string& message) { throw std::invalid_argument("bonl: " + message); }
+
 inline void require(bool condition, const std::string& message) {
-  if (!condition) throw std::invalid_argument("bonl: " + message);
+  if (!condition) fail(message);
+}
+
+/// A number that must be finite: "<name> must be finite, got <value>".
+inline void require_finite(double value, const std::string& name) {
+  require(std::isfinite(value), name + " must be finite, got " + format_number(value));
 }
 
 /// Largest order (na, nb, nk, r, r1, a number of parameters) bonl accepts. Far beyond any

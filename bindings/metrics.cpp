@@ -23,7 +23,7 @@ void bind_metrics(py::module_& m) {
       pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::nrmse(y, yhat); }),
       py::arg("y"), py::arg("yhat"), "Normalised error ||y - yhat|| / ||y - mean(y)|| (0 is perfect).");
   metrics.def(
-      "nrmse_fit",
+      "fit_percent",
       pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::fit_percent(y, yhat); }),
       py::arg("y"), py::arg("yhat"),
       "Fit in percent, 100 (1 - ||y - yhat|| / ||y - mean(y)||), as the System Identification Toolbox's compare.");

@@ -1,6 +1,16 @@
 """Error measures for simulated or predicted outputs: :func:`mse`, :func:`rmse`, :func:`nrmse` and
-:func:`nrmse_fit` (the System Identification Toolbox's fit, in percent)."""
+:func:`fit_percent` (the System Identification Toolbox's fit, in percent), spelled as in C++
+(``bonl::metrics``)."""
 
-from ._bonl.metrics import mse, nrmse, nrmse_fit, rmse
+import warnings
 
-__all__ = ["mse", "nrmse", "nrmse_fit", "rmse"]
+from ._bonl.metrics import fit_percent, mse, nrmse, rmse
+
+__all__ = ["fit_percent", "mse", "nrmse", "rmse"]
+
+
+def nrmse_fit(y, yhat):
+    """Deprecated: the former name of :func:`fit_percent`."""
+    warnings.warn("bonl.metrics.nrmse_fit is now bonl.metrics.fit_percent, as in C++", DeprecationWarning,
+                  stacklevel=2)
+    return fit_percent(y, yhat)

@@ -311,7 +311,7 @@ def test_e15_e16_estimator_reset_to_and_update_arguments():
 
 # --- Metrics -------------------------------------------------------------------------------------
 
-METRICS = [bonl.metrics.mse, bonl.metrics.rmse, bonl.metrics.nrmse, bonl.metrics.nrmse_fit]
+METRICS = [bonl.metrics.mse, bonl.metrics.rmse, bonl.metrics.nrmse, bonl.metrics.fit_percent]
 
 
 @pytest.mark.parametrize("metric", METRICS, ids=lambda f: f.__name__)
@@ -325,7 +325,7 @@ def test_s1_s2_s3_metrics_check_their_data(metric):
 
 
 @pytest.mark.parametrize("y", [[1.0] * 3, [0.1] * 3, [-0.3] * 7, [1e-300] * 2], ids=repr)
-@pytest.mark.parametrize("metric", [bonl.metrics.nrmse, bonl.metrics.nrmse_fit], ids=lambda f: f.__name__)
+@pytest.mark.parametrize("metric", [bonl.metrics.nrmse, bonl.metrics.fit_percent], ids=lambda f: f.__name__)
 def test_s4_constant_y_has_no_normalised_error(metric, y):
     # Before: nrmse([0.1] * 3, [0] * 3) was 7205759403792795.0 (the mean of 0.1, 0.1, 0.1 rounds up).
     raises(ValueError, "y is constant: the normalised error is undefined", metric, y, np.zeros(len(y)))
@@ -335,7 +335,7 @@ def test_s5_s6_metrics_near_the_ends_of_the_double_range():
     # Before: nan, "y is constant", inf.
     assert bonl.metrics.nrmse([1e200, -1e200], [0.0, 0.0]) == 1.0
     assert bonl.metrics.nrmse([1e-200, -1e-200], [0.0, 0.0]) == 1.0
-    assert bonl.metrics.nrmse_fit([3e-300, -1e-300], [1e-300, -1e-300]) == pytest.approx(100 * (1 - 2**-0.5), rel=1e-14)
+    assert bonl.metrics.fit_percent([3e-300, -1e-300], [1e-300, -1e-300]) == pytest.approx(100 * (1 - 2**-0.5), rel=1e-14)
     assert bonl.metrics.rmse([1e200, -1e200], [0.0, 0.0]) == pytest.approx(1e200, rel=1e-15)
     assert bonl.metrics.mse([1e200, -1e200], [0.0, 0.0]) == INF  # 1e400 is not a double
     y, yhat = signal(500, 8), signal(500, 9)

@@ -3,7 +3,11 @@ Error measures for simulated or predicted outputs.
 """
 from __future__ import annotations
 import typing
-__all__: list[str] = ['mse', 'nrmse', 'nrmse_fit', 'rmse']
+__all__: list[str] = ['fit_percent', 'mse', 'nrmse', 'rmse']
+def fit_percent(y: typing.Any, yhat: typing.Any) -> float:
+    """
+    Fit in percent, 100 (1 - ||y - yhat|| / ||y - mean(y)||), as the System Identification Toolbox's compare.
+    """
 def mse(y: typing.Any, yhat: typing.Any) -> float:
     """
     Mean squared error, mean((y - yhat)^2).
@@ -11,10 +15,6 @@ def mse(y: typing.Any, yhat: typing.Any) -> float:
 def nrmse(y: typing.Any, yhat: typing.Any) -> float:
     """
     Normalised error ||y - yhat|| / ||y - mean(y)|| (0 is perfect).
-    """
-def nrmse_fit(y: typing.Any, yhat: typing.Any) -> float:
-    """
-    Fit in percent, 100 (1 - ||y - yhat|| / ||y - mean(y)||), as the System Identification Toolbox's compare.
     """
 def rmse(y: typing.Any, yhat: typing.Any) -> float:
     """

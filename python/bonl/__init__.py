@@ -8,11 +8,18 @@ in :mod:`bonl.plant`, and :mod:`bonl.experiment`, the paper's experiment on it
 (:func:`bonl.experiment.run_paper_experiment`).
 """
 
+import importlib as _importlib
+
 # Every public name of the C++ core: the model classes (one per entry of C++'s bonl::Models, so a
 # new model needs no edit here), MODELS, identify, Estimator, load_model, ...
 from ._bonl import *  # noqa: F401,F403
 from ._bonl import __all__ as _core_names
 from ._bonl import __version__
-from . import experiment, metrics, plant
+
+# The Python modules over the C++ submodules. Imported by name: the star import above already bound
+# these names to the C++ submodules, and `from . import metrics` would keep those.
+experiment = _importlib.import_module(".experiment", __name__)
+metrics = _importlib.import_module(".metrics", __name__)
+plant = _importlib.import_module(".plant", __name__)
 
 __all__ = sorted({*_core_names, "__version__", "experiment", "metrics", "plant"})

@@ -9,6 +9,10 @@ import pathlib
 import subprocess
 import sys
 
+import pytest
+
+import bonl
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
@@ -23,3 +27,12 @@ def test_stubs_are_current(tmp_path):
     assert sorted(generated) == sorted(committed), "stub files differ: regenerate them (see this test's docstring)"
     stale = [str(path) for path in generated if generated[path] != committed[path]]
     assert not stale, f"stale stubs: {stale}; regenerate them (see this test's docstring)"
+
+
+@pytest.mark.parametrize("name", ["experiment", "metrics", "plant"])
+def test_the_package_exposes_its_python_modules_not_the_bare_cpp_submodules(name):
+    # bonl.<name> is python/bonl/<name>.py (its docstring, its additions), which re-exports the C++
+    # submodule bonl._bonl.<name>.
+    module = getattr(bonl, name)
+    assert module.__name__ == f"bonl.{name}"
+    assert module.__file__.endswith(f"{name}.py")

@@ -82,17 +82,6 @@ std::string paper_label(const std::string& name) {
   return initials.size() > 1 ? initials : name;
 }
 
-int first_index(const ParameterDescription& parameter) {
-  // "a_1..a_na": the name, '_', then the first index.
-  const std::string meaning = parameter.meaning;
-  const std::string start = std::string(parameter.name) + "_";
-  if (meaning.compare(0, start.size(), start) != 0 || meaning.size() == start.size() ||
-      !std::isdigit(static_cast<unsigned char>(meaning[start.size()]))) {
-    return 0;
-  }
-  return meaning[start.size()] - '0';
-}
-
 const MethodResult& PaperExperimentResult::method(Method method) const {
   for (const MethodResult& result : methods) {
     if (result.method == method) return result;

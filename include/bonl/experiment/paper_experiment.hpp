@@ -56,10 +56,6 @@ std::optional<PublishedScore> published_score(const std::string& name);
 /// is ("Hammerstein", "ARX").
 std::string paper_label(const std::string& name);
 
-/// The index the paper gives the first entry of a parameter block (a_1..a_na: 1, b_0..b_nb: 0), as
-/// the block's description states it in its first words.
-int first_index(const ParameterDescription& parameter);
-
 /// A model's parameters as the rows of the paper's Table 1: ("b0", b_0), ("a1", a_1), ..., ("c", c).
 template <class Model>
 std::vector<std::pair<std::string, double>> labelled_parameters(const Model& model) {
@@ -72,7 +68,7 @@ std::vector<std::pair<std::string, double>> labelled_parameters(const Model& mod
       continue;
     }
     for (Eigen::Index k = 0; k < values.size(); ++k) {
-      rows.emplace_back(parameter.name + std::to_string(first_index(parameter) + k), static_cast<double>(values[k]));
+      rows.emplace_back(parameter.name + std::to_string(parameter.first_index + k), static_cast<double>(values[k]));
     }
   }
   return rows;

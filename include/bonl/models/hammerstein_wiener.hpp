@@ -32,7 +32,7 @@ class HammersteinWiener
       detail::concat(detail::front_orders<Na_, Nb_, R_>(),
                      std::array<OrderDescription, 1>{{{"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}}}),
       detail::concat(detail::kFrontParameters,
-                     std::array<ParameterDescription, 1>{{{"q", ParameterShape::Vector, "q_1..q_r1 with q_1 = 1",
+                     std::array<ParameterDescription, 1>{{{"q", ParameterShape::Vector, 1, "q_1..q_r1 with q_1 = 1",
                                                            "the H-W model is normalised so that q_1 = 1", false}}})};
 
   HammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index r1)

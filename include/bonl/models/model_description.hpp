@@ -42,6 +42,7 @@ enum class ParameterShape {
 struct ParameterDescription {
   const char* name;        ///< "b"
   ParameterShape shape;
+  int first_index;         ///< the index of the first entry: 0 for b_0..b_nb, 1 for a_1..a_na
   const char* meaning;     ///< one line for documentation: "b_0..b_nb"
   const char* normalised;  ///< not null: the first entry is fixed to 1, for this reason
   bool non_negative;       ///< the value must be >= 0 (the backlash half-width)

@@ -30,7 +30,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
       "else y(k-1).",
       detail::front_orders<Na_, Nb_, R_>(),
       detail::concat(detail::kFrontParameters, std::array<ParameterDescription, 1>{
-                                                   {{"c", ParameterShape::Number, "backlash half-width", nullptr, true}}})};
+                                                   {{"c", ParameterShape::Number, 0, "backlash half-width", nullptr, true}}})};
 
   PseudoHammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r) : Front(na, nb, nk, r, 1) {}
 

@@ -41,9 +41,9 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
         {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
         {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"},
         {"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}}},
-      {{{"b", ParameterShape::Vector, "b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain)", nullptr, false},
-        {"a", ParameterShape::Vector, "a_1..a_na", nullptr, false},
-        {"q", ParameterShape::Vector, "q_1..q_r1 with q_1 = 1", "the Wiener model is normalised so that q_1 = 1",
+      {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain)", nullptr, false},
+        {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false},
+        {"q", ParameterShape::Vector, 1, "q_1..q_r1 with q_1 = 1", "the Wiener model is normalised so that q_1 = 1",
          false}}}};
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;

@@ -187,9 +187,11 @@ bool options_valid(const bonl::EstimatorOptions& o) {
   const double p0_value = o.resolved_p0();
   const bool p0 = std::isfinite(p0_value) && p0_value > 0.0;
   const bool c0 = std::isfinite(o.c0) && o.c0 >= 0.0;
-  // In Scalar: P(0) = p0 I must be finite and positive, and (P-H-W) c(0) = c0 finite.
+  // In Scalar: P(0) = p0 I must be finite and positive, and (P-H-W, where the method starts from it:
+  // output_error starts at c = 0) c(0) = c0 finite.
   const bool p0_scalar = p0 && std::isfinite(to_scalar<Scalar>(p0_value)) && to_scalar<Scalar>(p0_value) > Scalar(0);
-  const bool c0_scalar = !uses_c0<Model>() || (c0 && std::isfinite(to_scalar<Scalar>(o.c0)));
+  const bool starts_from_c0 = uses_c0<Model>() && o.method != bonl::Method::OutputError;
+  const bool c0_scalar = !starts_from_c0 || (c0 && std::isfinite(to_scalar<Scalar>(o.c0)));
   const bool safeguards = o.resolved_trace_ceiling() >= 1.0 && o.recover_after >= 0;  // the ceiling may be +inf
   return schedule && p0 && c0 && o.internal_refresh >= 1 && p0_scalar && c0_scalar && safeguards;
 }

@@ -8,7 +8,9 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <variant>
+#include <vector>
 
 #include "bindings.hpp"
 #include "conversions.hpp"
@@ -96,16 +98,18 @@ bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
   return options;
 }
 
-const char* kIdentifyDoc = R"doc(Identify a model's parameters from an input/output record.
+const char* kIdentifyDoc = R"doc(Identify a model's parameters from an input/output record, or from several.
 
 Parameters
 ----------
 model : one of bonl.MODELS
     Gives the structure (orders); its parameter values are not used.
 u, y : array_like, shape (n,)
-    Input and measured output.
+    Input and measured output. For several records (experiments of the same system), give them as
+    a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
+    Each record is simulated from rest; no history is carried across records.
 passes : int, default 1
-    Passes of the recursive estimator over the record (the paper's step 5).
+    Passes of the recursive estimator over the record(s) (the paper's step 5).
 method : {'output_error', 'equation_error', 'paper'}
     The recursive stage. 'output_error' (default): recursive prediction-error method on the
     free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
@@ -134,6 +138,25 @@ ValueError
 bonl.NumericalError
     The estimator broke down numerically.)doc";
 
+/// identify(model, [(u1, y1), (u2, y2), ...]): the records' inputs and outputs, each checked by its index.
+void read_records(const py::object& records, std::vector<Eigen::VectorXd>& inputs, std::vector<Eigen::VectorXd>& outputs) {
+  const char* usage = "identify(model, u, y) for one record, identify(model, [(u1, y1), (u2, y2), ...]) for several";
+  bonl::detail::require(!py::isinstance<py::array>(records) && py::isinstance<py::sequence>(records) &&
+                            !py::isinstance<py::str>(records),
+                        std::string("y must be a 1-D array of real numbers, got None (") + usage + ")");
+  const py::sequence list = records.cast<py::sequence>();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string name = "records[" + std::to_string(i) + "]";
+    const py::object item = list[i];
+    bonl::detail::require(!py::isinstance<py::array>(item) && py::isinstance<py::sequence>(item) &&
+                              !py::isinstance<py::str>(item) && py::len(item) == 2,
+                          name + " must be a pair (u, y): " + usage);
+    const py::sequence pair = item.cast<py::sequence>();
+    inputs.push_back(to_vector(pair[0], (name + ".u").c_str()));
+    outputs.push_back(to_vector(pair[1], (name + ".y").c_str()));
+  }
+}
+
 template <class Model>
 void def_identify(py::module_& m) {
   m.def(
@@ -144,12 +167,20 @@ void def_identify(py::module_& m) {
         static_cast<bonl::EstimatorOptions&>(options) = estimator_options({method, forgetting, p0, c0, std::nullopt});
         options.passes = passes;
         options.refine_iterations = refine_iterations;
-        const Eigen::VectorXd input = to_vector(u, "u");
-        const Eigen::VectorXd output = to_vector(y, "y");
+        if (!y.is_none()) {
+          const Eigen::VectorXd input = to_vector(u, "u");
+          const Eigen::VectorXd output = to_vector(y, "y");
+          py::gil_scoped_release release;
+          return bonl::identify(model, input, output, options);
+        }
+        std::vector<Eigen::VectorXd> inputs, outputs;
+        read_records(u, inputs, outputs);
+        bonl::Records<double> records;
+        for (std::size_t i = 0; i < inputs.size(); ++i) records.emplace_back(inputs[i], outputs[i]);
         py::gil_scoped_release release;
-        return bonl::identify(model, input, output, options);
+        return bonl::identify(model, records, options);
       },
-      py::arg("model"), py::arg("u"), py::arg("y"), py::kw_only(), py::arg("passes") = 1,
+      py::arg("model"), py::arg("u"), py::arg("y") = py::none(), py::kw_only(), py::arg("passes") = 1,
       py::arg("method") = "output_error", py::arg("forgetting") = py::none(), py::arg("p0") = py::none(),
       py::arg("c0") = 0.01, py::arg("refine_iterations") = 100, kIdentifyDoc);
 }

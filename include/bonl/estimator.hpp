@@ -6,5 +6,6 @@
 #include "estimator/identify.hpp"
 #include "estimator/method.hpp"
 #include "estimator/output_error.hpp"
+#include "estimator/record_view.hpp"
 #include "estimator/recursive_estimator.hpp"
 #include "estimator/rls.hpp"

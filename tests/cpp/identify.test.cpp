@@ -165,3 +165,65 @@ TEMPLATE_LIST_TEST_CASE("the output-error and equation-error recursions started 
     CHECK(near(estimator.theta(), truth.theta(), 1e-9));
   }
 }
+
+TEMPLATE_LIST_TEST_CASE("several records identify one model, each record from rest", "[identify][records]", bonl::Models) {
+  // Two records of a known system, each simulated from rest: identification over both recovers it
+  // (fresh validation input), and the identified model simulates each record from rest. The same
+  // samples joined into one record would carry the first record's end into the second's start,
+  // which the system never saw: the identified model must not depend on that.
+  const TestType truth = known<TestType>();
+  const Eigen::VectorXd u_all = identification_input(Input::RandomLevels);
+  const Eigen::Index half = u_all.size() / 2;
+  const Eigen::VectorXd u1 = u_all.head(half);
+  const Eigen::VectorXd u2 = u_all.tail(u_all.size() - half);
+  const Eigen::VectorXd y1 = truth.simulate(u1);
+  const Eigen::VectorXd y2 = truth.simulate(u2);
+  const bonl::Records<double> records{{u1, y1}, {u2, y2}};
+  const TestType fitted = bonl::identify(truth, records);
+  const Eigen::VectorXd u_val = validation_input(Input::RandomLevels);
+  const double validation = bonl::metrics::nrmse(truth.simulate(u_val), fitted.simulate(u_val));
+  INFO(TestType::kName << ": validation NRMSE " << validation);
+  CHECK(validation <= 1e-6);
+  CHECK(bonl::metrics::nrmse(y2, fitted.simulate(u2)) <= 1e-6);
+}
+
+TEMPLATE_LIST_TEST_CASE("one record given as records identifies exactly as (u, y)", "[identify][records]", bonl::Models) {
+  const TestType truth = known<TestType>();
+  const Eigen::VectorXd u = identification_input(Input::RandomLevels);
+  const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 5);
+  for (bonl::Method method : {bonl::Method::OutputError, bonl::Method::Paper}) {
+    bonl::IdentifyOptions options;
+    options.method = method;
+    options.refine_iterations = 5;
+    INFO(TestType::kName << " " << bonl::to_string(method));
+    CHECK(bonl::identify(truth, bonl::Records<double>{{u, y}}, options).theta() ==
+          bonl::identify(truth, u, y, options).theta());
+  }
+}
+
+TEST_CASE("the records are checked, each by its index", "[identify][records][bad_input]") {
+  const bonl::PaperARX model(3, 2, 1);
+  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(50, -1.0, 1.0);
+  const Eigen::VectorXd y = u;
+  const Eigen::VectorXd shorter = u.head(40);
+  Eigen::VectorXd with_nan = u;
+  with_nan[7] = std::numeric_limits<double>::quiet_NaN();
+  const Eigen::VectorXd empty;
+  const Eigen::VectorXd three = u.head(3);
+  const auto message = [&](const bonl::Records<double>& records) {
+    try {
+      bonl::identify(model, records);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(message({}) == "bonl: records must hold at least one record (u, y)");
+  CHECK(message({{u, y}, {u, shorter}}) ==
+        "bonl: records[1].u and records[1].y must have the same length, got 50 and 40");
+  CHECK(message({{u, y}, {with_nan, y}}) == "bonl: records[1].u has a non-finite value at index 7");
+  CHECK(message({{u, y}, {empty, empty}}) == "bonl: records[1] is empty");
+  CHECK(message({{three, three}, {three, three}}) ==
+        "bonl: the records must be longer together than the number of parameters (6), got 6 samples");
+  CHECK_NOTHROW(bonl::identify(model, bonl::Records<double>{{three, three}, {u, y}}));  // short ones join long ones
+}

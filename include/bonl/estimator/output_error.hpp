@@ -1,6 +1,6 @@
 #pragma once
 // Refinement of an identified model by minimising its free-run simulation error on the
-// identification record (output-error / simulation-error criterion), by Levenberg-Marquardt.
+// identification record or records (output-error / simulation-error criterion), by Levenberg-Marquardt.
 // Under white output noise the key-term regressions are biased (their regressors carry the noise);
 // the simulation error is not, and it is the criterion models are judged by.
 // The Jacobian comes from central differences of the simulation: models with a backlash are only
@@ -15,6 +15,7 @@
 #include <string>
 
 #include "../detail/validate.hpp"
+#include "record_view.hpp"
 
 namespace bonl {
 
@@ -25,33 +26,37 @@ struct RefinementReport {
 };
 
 namespace detail {
-template <class Model, typename U, typename Y>
-double simulation_cost(const Model& model, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
+/// Mean squared free-run simulation error over the records (each from rest); `y` is their outputs
+/// one after another (stacked_outputs). Infinity where the simulation diverges.
+template <class Model>
+double simulation_cost(const Model& model, const Records<typename Model::Scalar>& records,
+                       const typename Model::VectorX& y, typename Model::VectorX& simulated,
                        typename Model::VectorX& buffer) {
-  if (!model.try_simulate(u, buffer)) return std::numeric_limits<double>::infinity();
-  const double cost = static_cast<double>((y - buffer).squaredNorm()) / static_cast<double>(y.size());
+  if (!simulate_records(model, records, simulated, buffer)) return std::numeric_limits<double>::infinity();
+  const double cost = static_cast<double>((y - simulated).squaredNorm()) / static_cast<double>(y.size());
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
 }  // namespace detail
 
-/// Levenberg-Marquardt on the mean squared free-run simulation error. Only steps that lower it are
-/// taken, so the result is never worse than `start` on this record. Stops after `max_iterations`,
-/// or when a step improves the cost by less than a relative 1e-10.
-template <class Model, typename U, typename Y>
-Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
+/// Levenberg-Marquardt on the mean squared free-run simulation error over the records, each
+/// simulated from rest. Only steps that lower it are taken, so the result is never worse than `start`
+/// on these records. Stops after `max_iterations`, or when a step improves the cost by less than a
+/// relative 1e-10.
+template <class Model>
+Model refine_output_error(const Model& start, const Records<typename Model::Scalar>& records,
                           int max_iterations = 100, RefinementReport* report = nullptr) {
   using Scalar = typename Model::Scalar;
   using VectorX = typename Model::VectorX;
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
   const Eigen::Index n = start.num_params();
-  const Eigen::Index samples = u.size();
-  detail::require_record(u, y, n);
+  const Eigen::Index samples = detail::require_records(records, n);
   detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
+  const VectorX y = detail::stacked_outputs(records);
 
   Model best = start;
   Model trial = start;
-  VectorX simulated;
-  double cost = detail::simulation_cost(best, u, y, simulated);
+  VectorX simulated, scratch;
+  double cost = detail::simulation_cost(best, records, y, simulated, scratch);
   RefinementReport local;
   local.initial_cost = cost;
   if (!std::isfinite(cost)) {
@@ -74,11 +79,11 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
       shifted[i] = theta[i] + step;
       start.constrain(shifted);
       trial.set_theta(shifted);
-      const bool ok_plus = trial.try_simulate(u, plus);
+      const bool ok_plus = detail::simulate_records(trial, records, plus, scratch);
       shifted[i] = theta[i] - step;
       start.constrain(shifted);
       trial.set_theta(shifted);
-      const bool ok_minus = trial.try_simulate(u, minus);
+      const bool ok_minus = detail::simulate_records(trial, records, minus, scratch);
       if (ok_plus && ok_minus) {
         jacobian.col(i) = (plus - minus) / (Scalar(2) * step);
       } else {
@@ -99,7 +104,7 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
       start.constrain(candidate);
       if (candidate.allFinite()) {
         trial.set_theta(candidate);
-        new_cost = detail::simulation_cost(trial, u, y, plus);
+        new_cost = detail::simulation_cost(trial, records, y, plus, scratch);
         if (new_cost < cost) {
           accepted = true;
           break;
@@ -122,6 +127,15 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
   local.iterations = iteration;
   if (report) *report = local;
   return best;
+}
+
+/// The same on one record (u, y).
+template <class Model, typename U, typename Y>
+Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
+                          int max_iterations = 100, RefinementReport* report = nullptr) {
+  detail::require_record(u, y, start.num_params());
+  const typename Model::VectorX input = u, output = y;
+  return refine_output_error(start, Records<typename Model::Scalar>{{input, output}}, max_iterations, report);
 }
 
 }  // namespace bonl

@@ -974,18 +974,20 @@ class Estimator:
         numpy.ndarray: current estimate (eq. 19 order).
         """
 @typing.overload
-def identify(model: ARX, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> ARX:
+def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> ARX:
     """
-    Identify a model's parameters from an input/output record.
+    Identify a model's parameters from an input/output record, or from several.
     
     Parameters
     ----------
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output.
+        Input and measured output. For several records (experiments of the same system), give them as
+        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
+        Each record is simulated from rest; no history is carried across records.
     passes : int, default 1
-        Passes of the recursive estimator over the record (the paper's step 5).
+        Passes of the recursive estimator over the record(s) (the paper's step 5).
     method : {'output_error', 'equation_error', 'paper'}
         The recursive stage. 'output_error' (default): recursive prediction-error method on the
         free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
@@ -1015,18 +1017,20 @@ def identify(model: ARX, u: typing.Any, y: typing.Any, *, passes: typing.Support
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Hammerstein, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Hammerstein:
+def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Hammerstein:
     """
-    Identify a model's parameters from an input/output record.
+    Identify a model's parameters from an input/output record, or from several.
     
     Parameters
     ----------
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output.
+        Input and measured output. For several records (experiments of the same system), give them as
+        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
+        Each record is simulated from rest; no history is carried across records.
     passes : int, default 1
-        Passes of the recursive estimator over the record (the paper's step 5).
+        Passes of the recursive estimator over the record(s) (the paper's step 5).
     method : {'output_error', 'equation_error', 'paper'}
         The recursive stage. 'output_error' (default): recursive prediction-error method on the
         free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
@@ -1056,18 +1060,20 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any, *, passes: typing
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> HammersteinWiener:
+def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> HammersteinWiener:
     """
-    Identify a model's parameters from an input/output record.
+    Identify a model's parameters from an input/output record, or from several.
     
     Parameters
     ----------
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output.
+        Input and measured output. For several records (experiments of the same system), give them as
+        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
+        Each record is simulated from rest; no history is carried across records.
     passes : int, default 1
-        Passes of the recursive estimator over the record (the paper's step 5).
+        Passes of the recursive estimator over the record(s) (the paper's step 5).
     method : {'output_error', 'equation_error', 'paper'}
         The recursive stage. 'output_error' (default): recursive prediction-error method on the
         free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
@@ -1097,18 +1103,20 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any, *, passes: 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> PseudoHammersteinWiener:
+def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> PseudoHammersteinWiener:
     """
-    Identify a model's parameters from an input/output record.
+    Identify a model's parameters from an input/output record, or from several.
     
     Parameters
     ----------
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output.
+        Input and measured output. For several records (experiments of the same system), give them as
+        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
+        Each record is simulated from rest; no history is carried across records.
     passes : int, default 1
-        Passes of the recursive estimator over the record (the paper's step 5).
+        Passes of the recursive estimator over the record(s) (the paper's step 5).
     method : {'output_error', 'equation_error', 'paper'}
         The recursive stage. 'output_error' (default): recursive prediction-error method on the
         free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
@@ -1138,18 +1146,20 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any, *, pa
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Wiener, u: typing.Any, y: typing.Any, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Wiener:
+def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Wiener:
     """
-    Identify a model's parameters from an input/output record.
+    Identify a model's parameters from an input/output record, or from several.
     
     Parameters
     ----------
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output.
+        Input and measured output. For several records (experiments of the same system), give them as
+        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
+        Each record is simulated from rest; no history is carried across records.
     passes : int, default 1
-        Passes of the recursive estimator over the record (the paper's step 5).
+        Passes of the recursive estimator over the record(s) (the paper's step 5).
     method : {'output_error', 'equation_error', 'paper'}
         The recursive stage. 'output_error' (default): recursive prediction-error method on the
         free-run simulation error. 'equation_error': internal variables from the measured output (ARX:

@@ -145,6 +145,11 @@ void bind_model(py::module_& m) {
   static const std::string doc = class_doc<Model>();
   py::class_<Model> cls(m, description.name, doc.c_str());
   def_init(cls, std::make_index_sequence<kOrders>{}, std::make_index_sequence<kParameters>{});
+  py::list order_names;
+  for (const bonl::OrderDescription& order : description.orders) order_names.append(order.name);
+  cls.attr("ORDERS") = py::tuple(order_names);  // the constructor's order arguments, in order
+  cls.def_property_readonly(
+      "orders", [](const Model& model) { return py::tuple(py::cast(model.orders())); }, "tuple of int: the orders, as ORDERS names them.");
   for (std::size_t i = 0; i < kOrders; ++i) {
     const bonl::OrderDescription& order = description.orders[i];
     cls.def_property_readonly(

@@ -25,7 +25,7 @@ bash examples/consumer/check.sh build/ci
 
 step "Python: build and install the package in a virtual environment (build/venv)"
 [[ -x build/venv/bin/python ]] || python3 -m venv build/venv
-build/venv/bin/python -m pip install -q --disable-pip-version-check numpy scipy matplotlib pytest pybind11-stubgen==3.0.0
+build/venv/bin/python -m pip install -q --disable-pip-version-check numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm
 build/venv/bin/python -m pip install -q --disable-pip-version-check .
 
 step "pytest"

@@ -28,6 +28,7 @@ class ARX:
     a : array_like, optional
         a_1..a_na.
     """
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk')
     def __copy__(self) -> ARX:
         ...
     def __deepcopy__(self, memo: dict) -> ARX:
@@ -120,6 +121,11 @@ class ARX:
         int: number of identified parameters.
         """
     @property
+    def orders(self) -> tuple:
+        """
+        tuple of int: the orders, as ORDERS names them.
+        """
+    @property
     def params(self) -> dict:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
@@ -155,6 +161,7 @@ class Hammerstein:
     p : array_like, optional
         p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
     """
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r')
     def __copy__(self) -> Hammerstein:
         ...
     def __deepcopy__(self, memo: dict) -> Hammerstein:
@@ -255,6 +262,11 @@ class Hammerstein:
         int: number of identified parameters.
         """
     @property
+    def orders(self) -> tuple:
+        """
+        tuple of int: the orders, as ORDERS names them.
+        """
+    @property
     def p(self) -> typing.Any:
         """
         numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
@@ -307,6 +319,7 @@ class HammersteinWiener:
     q : array_like, optional
         q_1..q_r1 with q_1 = 1.
     """
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'r1')
     def __copy__(self) -> HammersteinWiener:
         ...
     def __deepcopy__(self, memo: dict) -> HammersteinWiener:
@@ -407,6 +420,11 @@ class HammersteinWiener:
         int: number of identified parameters.
         """
     @property
+    def orders(self) -> tuple:
+        """
+        tuple of int: the orders, as ORDERS names them.
+        """
+    @property
     def p(self) -> typing.Any:
         """
         numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
@@ -470,6 +488,7 @@ class PseudoHammersteinWiener:
     c : float, optional
         backlash half-width, >= 0.
     """
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r')
     def __copy__(self) -> PseudoHammersteinWiener:
         ...
     def __deepcopy__(self, memo: dict) -> PseudoHammersteinWiener:
@@ -578,6 +597,11 @@ class PseudoHammersteinWiener:
         int: number of identified parameters.
         """
     @property
+    def orders(self) -> tuple:
+        """
+        tuple of int: the orders, as ORDERS names them.
+        """
+    @property
     def p(self) -> typing.Any:
         """
         numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
@@ -624,6 +648,7 @@ class Wiener:
     q : array_like, optional
         q_1..q_r1 with q_1 = 1.
     """
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r1')
     def __copy__(self) -> Wiener:
         ...
     def __deepcopy__(self, memo: dict) -> Wiener:
@@ -714,6 +739,11 @@ class Wiener:
     def num_params(self) -> int:
         """
         int: number of identified parameters.
+        """
+    @property
+    def orders(self) -> tuple:
+        """
+        tuple of int: the orders, as ORDERS names them.
         """
     @property
     def params(self) -> dict:

@@ -1,0 +1,225 @@
+"""Order and structure selection (``bonl.select``, ``bonl.grid``): :func:`select` fits every candidate
+of a grid and ranks them.
+
+- :func:`grid`: the structures of one model class over lists of orders,
+  ``grid(bonl.HammersteinWiener, na=[1, 2, 3], nb=[0, 1], nk=[0], r=[2, 3], r1=[2, 3])``;
+- :func:`select`: identifies each candidate and scores it. ``criterion="validation"`` (the default)
+  fits on the first part of every record and scores the free-run simulation error on the held-out
+  last part (each record simulated whole, from rest, and scored on its tail only);
+  ``criterion="aic"`` or ``"bic"`` fits on all the data and scores ``N log(mse) + 2 p`` or
+  ``N log(mse) + p log(N)`` of the free-run simulation. The best candidate is refitted on all the
+  data. Candidates run in parallel: on the local cores by default (``identify`` releases the GIL),
+  or on any :class:`concurrent.futures.Executor`, such as a Dask cluster's
+  (``distributed.Client(...).get_executor()``).
+
+Examples
+--------
+>>> import numpy as np, bonl
+>>> truth = bonl.Hammerstein(2, 1, 2, 2, b=[1, 0.5], a=[-0.6, 0.1], f=[0, 1, 0.3], p=[0, 0, -0.2])
+>>> u = np.repeat(np.random.default_rng(1).uniform(-1, 1, 400), 5)
+>>> y = truth.simulate(u)
+>>> result = bonl.select(bonl.grid(bonl.Hammerstein, na=[2], nb=[1], nk=[1, 2, 3], r=[2]), u, y)
+>>> result.best.nk
+2
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+import dataclasses
+import itertools
+import math
+import os
+import sys
+import time
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+from . import _bonl
+
+__all__ = ["Candidate", "Selection", "grid", "select"]
+
+CRITERIA = ("validation", "aic", "bic")
+
+
+@dataclasses.dataclass(frozen=True)
+class Candidate:
+    """One row of a selection's ranked table."""
+
+    name: str                       #: the model's class name
+    orders: Dict[str, int]          #: its orders by name
+    num_params: int
+    score: float                    #: the criterion (lower is better; inf when the fit failed)
+    fit_mse: float                  #: free-run simulation MSE on the data it was fitted on
+    validation_mse: Optional[float]  #: on the held-out parts (criterion "validation"), else None
+    seconds: float                  #: wall time of its identification
+    error: Optional[str]            #: why the fit failed, None when it did not
+    model: Any                      #: the identified model (None when the fit failed)
+
+
+@dataclasses.dataclass(frozen=True)
+class Selection:
+    """What :func:`select` found: the ranked table and the best candidate refitted on all the data."""
+
+    criterion: str
+    table: List[Candidate]          #: best first
+    best: Any                       #: the best structure identified on all the data
+
+    def __str__(self) -> str:
+        lines = [f"{'rank':>4}  {'model':<24} {'orders':<32} {'params':>6} {'score':>12}"]
+        for rank, row in enumerate(self.table, 1):
+            orders = ", ".join(f"{k}={v}" for k, v in row.orders.items())
+            score = f"{row.score:.4e}" if math.isfinite(row.score) else ("failed" if row.error else "inf")
+            lines.append(f"{rank:>4}  {row.name:<24} {orders:<32} {row.num_params:>6} {score:>12}")
+        return "\n".join(lines)
+
+
+def grid(model_class: type, **orders: Iterable[int]) -> List[Any]:
+    """Every structure of ``model_class`` over the lists of orders given by name (one value or a list
+    per order; every order of ``model_class.ORDERS`` must be given)."""
+    if model_class not in _bonl.MODELS:
+        raise ValueError(f"bonl: grid: model_class must be one of bonl.MODELS, got {model_class!r}")
+    names = model_class.ORDERS
+    unknown = sorted(set(orders) - set(names))
+    missing = [n for n in names if n not in orders]
+    if unknown or missing:
+        raise ValueError(f"bonl: grid: {model_class.__name__} takes the orders {', '.join(names)}"
+                         + (f"; unknown: {', '.join(unknown)}" if unknown else "")
+                         + (f"; missing: {', '.join(missing)}" if missing else ""))
+    values = [list(orders[n]) if isinstance(orders[n], Iterable) else [orders[n]] for n in names]
+    return [model_class(*combination) for combination in itertools.product(*values)]
+
+
+def _records(u: Any, y: Any) -> List[Tuple[np.ndarray, np.ndarray]]:
+    if y is not None:
+        return [(np.asarray(u, dtype=float), np.asarray(y, dtype=float))]
+    if isinstance(u, np.ndarray) or not isinstance(u, Sequence) or isinstance(u, str):
+        raise ValueError("bonl: select: y must be a 1-D array of real numbers, got None "
+                         "(select(candidates, u, y) for one record, select(candidates, [(u1, y1), ...]) for several)")
+    out = []
+    for i, item in enumerate(u):
+        if isinstance(item, np.ndarray) or not isinstance(item, Sequence) or len(item) != 2:
+            raise ValueError(f"bonl: select: records[{i}] must be a pair (u, y)")
+        out.append((np.asarray(item[0], dtype=float), np.asarray(item[1], dtype=float)))
+    return out
+
+
+def _simulation_mse(model: Any, records: Sequence[Tuple[np.ndarray, np.ndarray]], start: Sequence[int]) -> float:
+    """Free-run MSE of each record simulated whole from rest, over its samples from start[i] on."""
+    squared, count = 0.0, 0
+    for (u, y), first in zip(records, start):
+        try:
+            error = y[first:] - model.simulate(u)[first:]
+        except _bonl.NumericalError:
+            return math.inf
+        squared += float(error @ error)
+        count += error.size
+    mse = squared / count if count else math.inf
+    return mse if math.isfinite(mse) else math.inf
+
+
+def _fit(structure: Any, records: List[Tuple[np.ndarray, np.ndarray]], criterion: str, fraction: float,
+         options: Dict[str, Any]) -> Candidate:
+    """Identifies one candidate and scores it (runs where the executor puts it: keep it top-level)."""
+    name = type(structure).__name__
+    orders = dict(zip(type(structure).ORDERS, structure.orders))
+    t0 = time.perf_counter()
+    split = [len(u) - max(1, int(round(fraction * len(u)))) if criterion == "validation" else len(u)
+             for u, _ in records]
+    fit_records = [(u[:s], y[:s]) for (u, y), s in zip(records, split)]
+    try:
+        model = _bonl.identify(structure, fit_records, **options)
+    except _bonl.NumericalError as error:
+        return Candidate(name, orders, structure.num_params, math.inf, math.inf, None, time.perf_counter() - t0,
+                         str(error), None)
+    fit_mse = _simulation_mse(model, fit_records, [0] * len(records))
+    validation = _simulation_mse(model, records, split) if criterion == "validation" else None
+    n = sum(len(u) for u, _ in fit_records)
+    p = structure.num_params
+    if criterion == "validation":
+        score = validation
+    elif not (fit_mse > 0 and math.isfinite(fit_mse)):
+        score = -math.inf if fit_mse == 0 else math.inf
+    else:
+        score = n * math.log(fit_mse) + (2 * p if criterion == "aic" else p * math.log(n))
+    return Candidate(name, orders, p, score, fit_mse, validation, time.perf_counter() - t0, None, model)
+
+
+def _progress(total: int, progress: Optional[bool]):
+    show = sys.stderr.isatty() if progress is None else progress
+    if not show:
+        return None
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:
+        if progress:
+            raise ValueError("bonl: select: progress=True needs tqdm (pip install tqdm)") from None
+        return None
+    return tqdm(total=total, desc="bonl.select", unit="model")
+
+
+def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str = "validation",
+           validation_fraction: float = 0.25, executor: Optional[concurrent.futures.Executor] = None,
+           progress: Optional[bool] = None, **identify_options: Any) -> Selection:
+    """Fits every candidate structure, ranks them by ``criterion`` and refits the best on all the data.
+
+    Parameters
+    ----------
+    candidates : iterable of bonl models
+        The structures (their orders; parameter values are not used), e.g. from :func:`grid`.
+    u, y : array_like, or a list of (u, y) records with y left out
+        The estimation data.
+    criterion : {'validation', 'aic', 'bic'}
+        'validation' (default): the free-run simulation MSE on the last ``validation_fraction`` of every
+        record, the candidate fitted on the rest. 'aic', 'bic': information criteria of the free-run
+        simulation error on all the data.
+    executor : concurrent.futures.Executor, optional
+        Where the candidates run; default: threads on the local cores. A Dask cluster's
+        ``client.get_executor()`` spreads a large grid over many machines.
+    progress : bool, optional
+        A tqdm progress bar; default: when standard error is a terminal.
+    **identify_options
+        Passed to :func:`bonl.identify` (method, passes, refine_iterations, ...).
+
+    Returns
+    -------
+    Selection
+        ``table``: the candidates best first (failed fits last, with their error); ``best``: the best
+        structure identified on all the data.
+    """
+    structures = list(candidates)
+    if not structures:
+        raise ValueError("bonl: select: candidates is empty")
+    for i, structure in enumerate(structures):
+        if type(structure) not in _bonl.MODELS:
+            raise ValueError(f"bonl: select: candidates[{i}] must be a bonl model, got {type(structure).__name__}")
+    if criterion not in CRITERIA:
+        raise ValueError(f"bonl: select: criterion must be one of {', '.join(CRITERIA)}, got {criterion!r}")
+    if not (isinstance(validation_fraction, (int, float)) and 0.0 < validation_fraction < 1.0):
+        raise ValueError(f"bonl: select: validation_fraction must be in (0, 1), got {validation_fraction!r}")
+    records = _records(u, y)
+
+    own = executor is None
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) if own else executor
+    bar = _progress(len(structures), progress)
+    try:
+        futures = [pool.submit(_fit, s, records, criterion, validation_fraction, identify_options) for s in structures]
+        index = {future: i for i, future in enumerate(futures)}
+        rows: List[Optional[Candidate]] = [None] * len(futures)
+        for future in concurrent.futures.as_completed(futures):
+            rows[index[future]] = future.result()
+            if bar is not None:
+                bar.update(1)
+    finally:
+        if bar is not None:
+            bar.close()
+        if own:
+            pool.shutdown()
+    # Best first; ties (and failures, all inf) keep the candidates' order.
+    order = sorted(range(len(rows)), key=lambda i: rows[i].score)
+    table = [rows[i] for i in order]
+    if table[0].error is not None:
+        raise _bonl.NumericalError("bonl: select: every candidate failed; the first: " + table[0].error)
+    best = _bonl.identify(structures[order[0]], records, **identify_options)
+    return Selection(criterion, table, best)

@@ -1,0 +1,107 @@
+"""bonl.select and bonl.grid: order and structure selection, ranked by criteria recomputed here from
+bonl.identify and free-run simulation, on the local cores, on a given executor and on a Dask cluster."""
+
+import concurrent.futures
+import math
+
+import numpy as np
+import pytest
+
+import bonl
+
+
+def _system():
+    truth = bonl.Hammerstein(2, 1, 2, 2, b=[1, 0.5], a=[-0.6, 0.1], f=[0, 1, 0.3], p=[0, 0, -0.2])
+    u = np.repeat(np.random.default_rng(1).uniform(-1, 1, 400), 5)
+    y = truth.simulate(u) + np.random.default_rng(2).normal(0, 0.01, u.size)
+    return truth, u, y
+
+
+def _candidates():
+    return (bonl.grid(bonl.Hammerstein, na=[1, 2], nb=[1], nk=[1, 2, 3], r=[2])
+            + bonl.grid(bonl.ARX, na=[2], nb=[1], nk=[2]))
+
+
+def test_grid_is_every_combination_of_the_orders():
+    structures = bonl.grid(bonl.HammersteinWiener, na=[1, 2], nb=1, nk=[0, 3], r=[2], r1=[2, 3])
+    assert len(structures) == 8
+    assert {s.orders for s in structures} == {(na, 1, nk, 2, r1) for na in (1, 2) for nk in (0, 3) for r1 in (2, 3)}
+    assert bonl.HammersteinWiener.ORDERS == ("na", "nb", "nk", "r", "r1")
+
+
+@pytest.mark.parametrize("criterion", ["validation", "aic", "bic"])
+def test_the_true_structure_ranks_first_and_is_refitted_on_all_the_data(criterion):
+    truth, u, y = _system()
+    result = bonl.select(_candidates(), u, y, criterion=criterion)
+    scores = [row.score for row in result.table]
+    assert scores == sorted(scores)
+    assert (result.table[0].name, result.table[0].orders) == ("Hammerstein", {"na": 2, "nb": 1, "nk": 2, "r": 2})
+    np.testing.assert_array_equal(result.best.theta, bonl.identify(bonl.Hammerstein(2, 1, 2, 2), u, y).theta)
+
+
+def test_scores_are_the_criteria_recomputed_from_identify_and_free_run_simulation():
+    _, u, y = _system()
+    structure = bonl.Hammerstein(1, 1, 2, 2)
+    split = u.size - round(0.25 * u.size)
+    (row,) = bonl.select([structure], u, y).table
+    fitted = bonl.identify(structure, [(u[:split], y[:split])])
+    tail = y[split:] - fitted.simulate(u)[split:]
+    assert row.validation_mse == row.score == pytest.approx(float(tail @ tail) / tail.size, rel=1e-12)
+    (row,) = bonl.select([structure], u, y, criterion="bic").table
+    fitted = bonl.identify(structure, [(u, y)])
+    mse = float(np.mean((y - fitted.simulate(u)) ** 2))
+    assert row.fit_mse == pytest.approx(mse, rel=1e-12)
+    assert row.score == pytest.approx(u.size * math.log(mse) + structure.num_params * math.log(u.size), rel=1e-12)
+
+
+def test_several_records_hold_out_the_end_of_each():
+    truth, u, y = _system()
+    records = [(u[:1000], y[:1000]), (u[1000:], truth.simulate(u[1000:]))]
+    result = bonl.select(_candidates(), records)
+    assert result.table[0].orders == {"na": 2, "nb": 1, "nk": 2, "r": 2}
+
+
+def test_an_executor_of_ones_own_gives_the_same_table():
+    _, u, y = _system()
+    local = bonl.select(_candidates(), u, y)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=1) as executor:
+        given = bonl.select(_candidates(), u, y, executor=executor)
+    assert [(r.name, r.orders, r.score) for r in given.table] == [(r.name, r.orders, r.score) for r in local.table]
+
+
+def test_a_dask_cluster_runs_the_grid_and_gives_the_same_table():
+    import distributed
+    _, u, y = _system()
+    local = bonl.select(_candidates(), u, y)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            remote = bonl.select(_candidates(), u, y, executor=client.get_executor())
+    assert [(r.name, r.orders, r.score) for r in remote.table] == [(r.name, r.orders, r.score) for r in local.table]
+    np.testing.assert_array_equal(remote.best.theta, local.best.theta)
+
+
+def test_progress_bar_on_request(capsys):
+    _, u, y = _system()
+    bonl.select(_candidates()[:2], u, y, progress=True)
+    assert "bonl.select" in capsys.readouterr().err
+    bonl.select(_candidates()[:2], u, y, progress=False)
+    assert "bonl.select" not in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda u, y: bonl.select([], u, y), "candidates is empty"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0), "ARX"], u, y), r"candidates\[1\] must be a bonl model, got str"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, criterion="mdl"), "criterion must be one of validation, aic, bic"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, validation_fraction=1.0), r"validation_fraction must be in \(0, 1\)"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u), "y must be a 1-D array of real numbers, got None"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], [(u, y), u]), r"records\[1\] must be a pair \(u, y\)"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, method="best"), "method must be"),
+    (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1]), "ARX takes the orders na, nb, nk; missing: nk"),
+    (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1], nk=[0], r=[2]), "unknown: r"),
+    (lambda u, y: bonl.grid(int, na=[1]), "model_class must be one of bonl.MODELS"),
+], ids=["empty", "not a model", "criterion", "fraction", "no y", "not a pair", "identify option", "grid missing",
+        "grid unknown", "grid class"])
+def test_bad_input_is_a_value_error(call, message):
+    _, u, y = _system()
+    with pytest.raises(ValueError, match=message):
+        call(u, y)

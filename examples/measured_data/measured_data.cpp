@@ -1,4 +1,5 @@
-// ARX, Hammerstein, H-W and P-H-W on measured data (the hydraulic actuator and the cascaded tanks):
+// ARX, Hammerstein, HammersteinWiener and PseudoHammersteinWiener on measured data (the hydraulic
+// actuator and the cascaded tanks), each model of MeasuredModels named by its kName:
 // the same procedure as measured_data.py, which documents it (selection by a grid search scored on
 // the last 25 % of the estimation data only, refit on the whole estimation part, free-run
 // simulation from rest, RMS on the validation part), and the same table.
@@ -12,6 +13,7 @@
 #include <bonl/io.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -35,7 +37,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kFitFraction = 0.75;
-const char* const kModels[] = {"ARX", "Hammerstein", "H-W", "P-H-W"};
 
 // ------------------------------------------------------------------------------------------- data
 
@@ -76,11 +77,13 @@ Eigen::VectorXd column(const std::map<std::string, std::vector<double>>& csv, co
 
 // ------------------------------------------------------------------------------------- candidates
 
-struct Grid {
-  std::vector<int> na, nb, nk, r, r1;
-};
-const Grid kGrid{{1, 2, 3, 4}, {0, 1, 2, 3}, {0, 1, 2}, {1, 2, 3}, {2, 3}};
-const Grid kSmallGrid{{2, 3}, {1, 2}, {0, 1}, {2, 3}, {3}};
+/// The models, each named by its kName; their orders come from their descriptions.
+using MeasuredModels = bonl::ModelList<bonl::ARXd, bonl::Hammersteind, bonl::HammersteinWienerd, bonl::PseudoHammersteinWienerd>;
+
+/// Values of each order, by the order's name (a model takes those its description names).
+using Grid = std::map<std::string, std::vector<Eigen::Index>>;
+const Grid kGrid{{"na", {1, 2, 3, 4}}, {"nb", {0, 1, 2, 3}}, {"nk", {0, 1, 2}}, {"r", {1, 2, 3}}, {"r1", {2, 3}}};
+const Grid kSmallGrid{{"na", {2, 3}}, {"nb", {1, 2}}, {"nk", {0, 1}}, {"r", {2, 3}}, {"r1", {3}}};
 
 enum class Offset { None, Mean, First };
 const char* to_string(Offset offset) {
@@ -93,40 +96,50 @@ const char* to_string(Offset offset) {
 }
 
 struct Candidate {
-  int na = 0, nb = 0, nk = 0, r = 0, r1 = 0;  // r, r1 = 0 where the family has none
+  std::vector<Eigen::Index> orders;  // in the order the model's description lists them
   Offset offset = Offset::None;
 };
 
-std::string describe(const std::string& family, const Candidate& c) {
-  std::string text = "na=" + std::to_string(c.na) + " nb=" + std::to_string(c.nb) + " nk=" + std::to_string(c.nk);
-  if (family != "ARX") text += " r=" + std::to_string(c.r);
-  if (family == "H-W") text += " r1=" + std::to_string(c.r1);
+template <class Model>
+std::string describe(const Candidate& c) {
+  std::string text;
+  for (std::size_t i = 0; i < c.orders.size(); ++i) {
+    text += std::string(i == 0 ? "" : " ") + Model::kDescription.orders[i].name + "=" + std::to_string(c.orders[i]);
+  }
   if (c.offset != Offset::None) text += std::string(", offset ") + to_string(c.offset);
   return text;
 }
 
-/// Every candidate of a family, in the Python example's grid order (na, nb, nk, r, r1, offset).
-std::vector<Candidate> candidates(const std::string& family, const Grid& grid, const std::vector<Offset>& offsets) {
-  const std::vector<int> none{0};
-  const std::vector<int>& rs = family == "ARX" ? none : grid.r;
-  const std::vector<int>& r1s = family == "H-W" ? grid.r1 : none;
+/// Every candidate of Model, in the Python example's grid order (the orders as the description lists
+/// them, the last fastest, then the offset).
+template <class Model>
+std::vector<Candidate> candidates(const Grid& grid, const std::vector<Offset>& offsets) {
+  std::vector<const std::vector<Eigen::Index>*> values;
+  for (const auto& order : Model::kDescription.orders) values.push_back(&grid.at(order.name));
   std::vector<Candidate> result;
-  for (int na : grid.na)
-    for (int nb : grid.nb)
-      for (int nk : grid.nk)
-        for (int r : rs)
-          for (int r1 : r1s)
-            for (Offset offset : offsets) result.push_back({na, nb, nk, r, r1, offset});
-  return result;
+  std::vector<std::size_t> index(values.size(), 0);
+  while (true) {
+    Candidate c;
+    for (std::size_t i = 0; i < values.size(); ++i) c.orders.push_back((*values[i])[index[i]]);
+    for (Offset offset : offsets) {
+      c.offset = offset;
+      result.push_back(c);
+    }
+    std::size_t i = values.size();
+    while (i > 0 && ++index[i - 1] == values[i - 1]->size()) index[--i] = 0;
+    if (i == 0) return result;
+  }
 }
 
-/// The estimator settings: ARX by least squares (forgetting 1, P(0) = 1e6 I); the block models by
-/// the equation-error method with the paper's settings, then refinement (the settings the published
-/// figures in docs/measured_data.md were produced with; issue 18 redoes this example).
-bonl::IdentifyOptions settings(const std::string& family) {
+/// The estimator settings: a model without internal variables (ARX) is a linear regression, by least
+/// squares (forgetting 1, P(0) = 1e6 I); the block models by the equation-error method with the
+/// paper's settings, then refinement (the settings the published figures in docs/measured_data.md
+/// were produced with; issue 18 redoes this example).
+template <class Model>
+bonl::IdentifyOptions settings() {
   bonl::IdentifyOptions options;
   options.method = bonl::Method::EquationError;
-  if (family == "ARX") options.forgetting = bonl::ForgettingSchedule::constant(1.0);
+  if (!Model::kHasInternalVariables) options.forgetting = bonl::ForgettingSchedule::constant(1.0);
   return options;
 }
 
@@ -146,27 +159,20 @@ std::pair<double, double> offset_constants(Offset offset, const Eigen::VectorXd&
   return {0.0, 0.0};
 }
 
-/// A fitted model of any family: its file text and its free run (from rest, shifted back by y0).
+/// A fitted model: its file text and its free run (from rest).
 struct Fitted {
   std::string json;
   std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd&)> simulate;
 };
 
+/// Identifies Model at candidate `c` on (u, y) (already shifted). Throws NumericalError.
 template <class Model>
-Fitted fit_model(const Model& structure, const Eigen::VectorXd& u, const Eigen::VectorXd& y,
-                 const bonl::IdentifyOptions& options) {
-  const Model model = bonl::identify(structure, u, y, options);
+Fitted fit(const Candidate& c, const Eigen::VectorXd& u, const Eigen::VectorXd& y) {
+  std::array<Eigen::Index, Model::kDescription.orders.size()> orders{};
+  std::copy(c.orders.begin(), c.orders.end(), orders.begin());
+  const Model model = bonl::identify(bonl::make_model<Model>(orders), u, y, settings<Model>());
   return {bonl::io::to_json(model, 2),
           [model](const Eigen::VectorXd& input, Eigen::VectorXd& output) { return model.try_simulate(input, output); }};
-}
-
-/// Identifies family `family` at candidate `c` on (u, y) (already shifted). Throws NumericalError.
-Fitted fit(const std::string& family, const Candidate& c, const Eigen::VectorXd& u, const Eigen::VectorXd& y) {
-  const bonl::IdentifyOptions options = settings(family);
-  if (family == "ARX") return fit_model(bonl::ARXd(c.na, c.nb, c.nk), u, y, options);
-  if (family == "Hammerstein") return fit_model(bonl::Hammersteind(c.na, c.nb, c.nk, c.r), u, y, options);
-  if (family == "H-W") return fit_model(bonl::HammersteinWienerd(c.na, c.nb, c.nk, c.r, c.r1), u, y, options);
-  return fit_model(bonl::PseudoHammersteinWienerd(c.na, c.nb, c.nk, c.r), u, y, options);
 }
 
 double rms(const Eigen::VectorXd& error) { return std::sqrt(error.squaredNorm() / static_cast<double>(error.size())); }
@@ -180,13 +186,14 @@ bool simulate(const Fitted& model, const Eigen::VectorXd& u, double u0, double y
 }
 
 /// Fit on the first 75 % of the estimation record, simulate all of it from rest, RMS on the last 25 %.
-double check_score(const std::string& family, const Candidate& c, const Eigen::VectorXd& u, const Eigen::VectorXd& y) {
+template <class Model>
+double check_score(const Candidate& c, const Eigen::VectorXd& u, const Eigen::VectorXd& y) {
   const auto [u0, y0] = offset_constants(c.offset, u, y);
   const Eigen::Index n_fit = static_cast<Eigen::Index>(std::lround(kFitFraction * static_cast<double>(u.size())));
   try {
     const Eigen::VectorXd u_fit = u.head(n_fit).array() - u0;
     const Eigen::VectorXd y_fit = y.head(n_fit).array() - y0;
-    const Fitted model = fit(family, c, u_fit, y_fit);
+    const Fitted model = fit<Model>(c, u_fit, y_fit);
     Eigen::VectorXd simulated;
     if (!simulate(model, u, u0, y0, simulated)) return kInf;
     const double score = rms(simulated.tail(u.size() - n_fit) - y.tail(u.size() - n_fit));
@@ -198,6 +205,7 @@ double check_score(const std::string& family, const Candidate& c, const Eigen::V
 
 struct Result {
   Candidate chosen;
+  std::string description;  // the chosen orders and offset, by name
   double check_rms = kInf;
   double validation_rms = kInf;
   double u0 = 0.0, y0 = 0.0;
@@ -205,14 +213,15 @@ struct Result {
   Eigen::VectorXd simulated;
 };
 
-Result run_case(const std::string& family, const Eigen::VectorXd& u_est, const Eigen::VectorXd& y_est,
-                const Eigen::VectorXd& u_sim, const Eigen::VectorXd& y_sim, Eigen::Index score_from, const Grid& grid,
-                const std::vector<Offset>& offsets, unsigned jobs) {
-  const std::vector<Candidate> cands = candidates(family, grid, offsets);
+template <class Model>
+Result run_case(const Eigen::VectorXd& u_est, const Eigen::VectorXd& y_est, const Eigen::VectorXd& u_sim,
+                const Eigen::VectorXd& y_sim, Eigen::Index score_from, const Grid& grid, const std::vector<Offset>& offsets,
+                unsigned jobs) {
+  const std::vector<Candidate> cands = candidates<Model>(grid, offsets);
   std::vector<double> scores(cands.size(), kInf);
   std::atomic<std::size_t> next{0};
   const auto worker = [&] {
-    for (std::size_t i = next++; i < cands.size(); i = next++) scores[i] = check_score(family, cands[i], u_est, y_est);
+    for (std::size_t i = next++; i < cands.size(); i = next++) scores[i] = check_score<Model>(cands[i], u_est, y_est);
   };
   std::vector<std::thread> threads;
   for (unsigned t = 1; t < jobs; ++t) threads.emplace_back(worker);
@@ -222,7 +231,7 @@ Result run_case(const std::string& family, const Eigen::VectorXd& u_est, const E
   std::size_t best = 0;  // lowest score, first in grid order on ties
   for (std::size_t i = 1; i < cands.size(); ++i)
     if (scores[i] < scores[best]) best = i;
-  if (!std::isfinite(scores[best])) throw std::runtime_error(family + ": every candidate broke down");
+  if (!std::isfinite(scores[best])) throw std::runtime_error(std::string(Model::kName) + ": every candidate broke down");
 
   Result result;
   result.chosen = cands[best];
@@ -230,7 +239,8 @@ Result run_case(const std::string& family, const Eigen::VectorXd& u_est, const E
   std::tie(result.u0, result.y0) = offset_constants(result.chosen.offset, u_est, y_est);
   const Eigen::VectorXd u_shift = u_est.array() - result.u0;
   const Eigen::VectorXd y_shift = y_est.array() - result.y0;
-  result.model = fit(family, result.chosen, u_shift, y_shift);
+  result.model = fit<Model>(result.chosen, u_shift, y_shift);
+  result.description = describe<Model>(result.chosen);
   if (simulate(result.model, u_sim, result.u0, result.y0, result.simulated)) {
     const Eigen::Index n = u_sim.size() - score_from;
     result.validation_rms = rms(result.simulated.tail(n) - y_sim.tail(n));
@@ -283,26 +293,28 @@ int main(int argc, char** argv) {
   const Eigen::Index n_est = 512;
 
   std::map<std::string, std::map<std::string, Result>> results;
-  for (const char* family : kModels) {
-    results["actuator"][family] = run_case(family, u_act.head(n_est), y_act.head(n_est), u_act, y_act, n_est, grid,
-                                           {Offset::None}, jobs);
-    results["cascaded_tanks"][family] =
-        run_case(family, u_est, y_est, u_val, y_val, 0, grid, {Offset::Mean, Offset::First}, jobs);
-  }
+  std::vector<std::string> names;  // in MeasuredModels' order
+  bonl::for_each_model(MeasuredModels{}, [&](auto tag) {
+    using Model = typename decltype(tag)::type;
+    names.push_back(Model::kName);
+    results["actuator"][Model::kName] =
+        run_case<Model>(u_act.head(n_est), y_act.head(n_est), u_act, y_act, n_est, grid, {Offset::None}, jobs);
+    results["cascaded_tanks"][Model::kName] =
+        run_case<Model>(u_est, y_est, u_val, y_val, 0, grid, {Offset::Mean, Offset::First}, jobs);
+  });
 
   const std::pair<const char*, const char*> titles[] = {
       {"actuator", "Hydraulic actuator: simulation RMS on samples 513-1024"},
       {"cascaded_tanks", "Cascaded tanks: simulation RMS on the validation record (V)"}};
   std::string table = "{\n";
   for (const auto& [key, title] : titles) {
-    std::printf("%s\n  %-12s %10s %8s  chosen (from estimation data only)\n", title, "model", "validation", "check");
+    std::printf("%s\n  %-24s %10s %8s  chosen (from estimation data only)\n", title, "model", "validation", "check");
     table += std::string("  \"") + key + "\": {";
     bool first = true;
-    for (const char* family : kModels) {
-      const Result& r = results[key][family];
-      std::printf("  %-12s %10.4f %8.4f  %s\n", family, r.validation_rms, r.check_rms,
-                  describe(family, r.chosen).c_str());
-      table += std::string(first ? "" : ", ") + "\"" + family + "\": " + number(r.validation_rms);
+    for (const std::string& name : names) {
+      const Result& r = results[key][name];
+      std::printf("  %-24s %10.4f %8.4f  %s\n", name.c_str(), r.validation_rms, r.check_rms, r.description.c_str());
+      table += std::string(first ? "" : ", ") + "\"" + name + "\": " + number(r.validation_rms);
       first = false;
     }
     table += std::string("}") + (std::string(key) == "actuator" ? ",\n" : "\n");
@@ -313,19 +325,16 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(out);
     for (const auto& [key, title] : titles) {
       std::string simulated = "measured";
-      for (const char* family : kModels) {
-        std::string name = family;
-        name.erase(std::remove(name.begin(), name.end(), '-'), name.end());
-        const Result& r = results[key][family];
-        write_text(out + "/" + key + "_" + name + ".json", r.model.json + "\n");
-        simulated += std::string(",") + family;
+      for (const std::string& name : names) {
+        write_text(out + "/" + key + "_" + name + ".json", results[key][name].model.json + "\n");
+        simulated += "," + name;
       }
       simulated += "\n";
       const Eigen::VectorXd& measured = std::string(key) == "actuator" ? y_act : y_val;
       for (Eigen::Index k = 0; k < measured.size(); ++k) {
         simulated += number(measured[k]);
-        for (const char* family : kModels) {
-          const Eigen::VectorXd& s = results[key][family].simulated;
+        for (const std::string& name : names) {
+          const Eigen::VectorXd& s = results[key][name].simulated;
           simulated += "," + (k < s.size() ? number(s[k]) : std::string("nan"));
         }
         simulated += "\n";

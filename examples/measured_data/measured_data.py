@@ -1,4 +1,5 @@
-"""ARX, Hammerstein, H-W and P-H-W on measured data: the hydraulic actuator and the cascaded tanks.
+"""ARX, Hammerstein, HammersteinWiener and PseudoHammersteinWiener on measured data: the hydraulic
+actuator and the cascaded tanks.
 
 Data (data/*/SOURCE.md; nobody on this project produced them):
 - hydraulic-actuator (Sjoberg et al. 1995): u = valve opening, y = oil pressure, 1024 samples.
@@ -56,7 +57,9 @@ import bonl
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 DATA = ROOT / "data"
 
-MODELS = ("ARX", "Hammerstein", "H-W", "P-H-W")
+# The models, each named by its class name (bonl's one spelling); their orders come from the class (ORDERS).
+MODELS = (bonl.ARX, bonl.Hammerstein, bonl.HammersteinWiener, bonl.PseudoHammersteinWiener)
+NAMES = tuple(model.__name__ for model in MODELS)
 FIT_FRACTION = 0.75
 
 # The grid: every combination, in this order (the order breaks ties).
@@ -94,30 +97,21 @@ def load_cascaded_tanks(data: pathlib.Path = DATA) -> dict:
 # ------------------------------------------------------------------------------------ candidates
 
 
-def structure(name: str, orders: dict):
-    """A model of family `name` at `orders` (its parameters are not used by identify)."""
-    na, nb, nk = orders["na"], orders["nb"], orders["nk"]
-    if name == "ARX":
-        return bonl.ARX(na, nb, nk)
-    if name == "Hammerstein":
-        return bonl.Hammerstein(na, nb, nk, orders["r"])
-    if name == "H-W":
-        return bonl.HammersteinWiener(na, nb, nk, orders["r"], orders["r1"])
-    if name == "P-H-W":
-        return bonl.PseudoHammersteinWiener(na, nb, nk, orders["r"])
-    raise ValueError(f"unknown model {name!r}")
+def structure(model: type, orders: dict):
+    """A model of class `model` at `orders` (its parameters are not used by identify)."""
+    return model(*(orders[name] for name in model.ORDERS))
 
 
-def settings(name: str) -> dict:
-    """The estimator settings (fixed; see the module docstring)."""
-    if name == "ARX":
+def settings(model: type) -> dict:
+    """The estimator settings (fixed; see the module docstring): ARX, a linear regression, by least squares."""
+    if model is bonl.ARX:
         return {"method": "equation_error", "forgetting": 1.0, "p0": 1e6}
     return {"method": "equation_error"}  # the paper's forgetting, P(0), c(0), one pass; LM refinement
 
 
-def candidates(name: str, grid: dict, offsets: tuple) -> list:
-    """Every candidate of family `name`, in grid order: (orders, offset)."""
-    keys = ["na", "nb", "nk"] + {"ARX": [], "Hammerstein": ["r"], "H-W": ["r", "r1"], "P-H-W": ["r"]}[name]
+def candidates(model: type, grid: dict, offsets: tuple) -> list:
+    """Every candidate of class `model`, in grid order: (orders, offset)."""
+    keys = list(model.ORDERS)
     result = []
     for values in itertools.product(*(grid[key] for key in keys)):
         for offset in offsets:
@@ -149,13 +143,13 @@ def simulate(model, u: np.ndarray, y0: float) -> np.ndarray | None:
     return simulated if np.all(np.isfinite(simulated)) else None
 
 
-def check_score(name: str, orders: dict, offset: str, u: np.ndarray, y: np.ndarray) -> float:
+def check_score(model_class: type, orders: dict, offset: str, u: np.ndarray, y: np.ndarray) -> float:
     """Score of one candidate on the estimation record alone: fit on the first 75 %, simulate the
     whole record from rest, RMS error on the last 25 %. inf if it breaks down or diverges."""
     u0, y0 = offset_constants(offset, u, y)
     n_fit = int(round(FIT_FRACTION * len(u)))
     try:
-        model = bonl.identify(structure(name, orders), u[:n_fit] - u0, y[:n_fit] - y0, **settings(name))
+        model = bonl.identify(structure(model_class, orders), u[:n_fit] - u0, y[:n_fit] - y0, **settings(model_class))
     except bonl.NumericalError:
         return math.inf
     simulated = simulate(model, u - u0, y0)
@@ -165,14 +159,14 @@ def check_score(name: str, orders: dict, offset: str, u: np.ndarray, y: np.ndarr
     return score if math.isfinite(score) else math.inf
 
 
-def select(name: str, u: np.ndarray, y: np.ndarray, grid: dict, offsets: tuple, jobs: int) -> dict:
+def select(model: type, u: np.ndarray, y: np.ndarray, grid: dict, offsets: tuple, jobs: int) -> dict:
     """The grid search of the module docstring; returns the winner and its score."""
-    cands = candidates(name, grid, offsets)
+    cands = candidates(model, grid, offsets)
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:  # identify releases the GIL
-        scores = list(pool.map(lambda c: check_score(name, c[0], c[1], u, y), cands))
+        scores = list(pool.map(lambda c: check_score(model, c[0], c[1], u, y), cands))
     best = min(range(len(cands)), key=lambda i: (scores[i], i))
     if not math.isfinite(scores[best]):
-        raise RuntimeError(f"{name}: every candidate broke down")
+        raise RuntimeError(f"{model.__name__}: every candidate broke down")
     orders, offset = cands[best]
     return {"orders": orders, "offset": offset, "check_rms": scores[best], "candidates": len(cands)}
 
@@ -180,11 +174,11 @@ def select(name: str, u: np.ndarray, y: np.ndarray, grid: dict, offsets: tuple, 
 # ------------------------------------------------------------------------------------- pipeline
 
 
-def run_case(name: str, u_est, y_est, u_sim, y_sim, score_from: int, grid: dict, offsets: tuple, jobs: int):
+def run_case(model_class: type, u_est, y_est, u_sim, y_sim, score_from: int, grid: dict, offsets: tuple, jobs: int):
     """Select on (u_est, y_est), refit on all of it, simulate u_sim from rest, score y_sim[score_from:]."""
-    chosen = select(name, u_est, y_est, grid, offsets, jobs)
+    chosen = select(model_class, u_est, y_est, grid, offsets, jobs)
     u0, y0 = offset_constants(chosen["offset"], u_est, y_est)
-    model = bonl.identify(structure(name, chosen["orders"]), u_est - u0, y_est - y0, **settings(name))
+    model = bonl.identify(structure(model_class, chosen["orders"]), u_est - u0, y_est - y0, **settings(model_class))
     simulated = simulate(model, u_sim - u0, y0)
     score = math.inf if simulated is None else rms(simulated[score_from:] - y_sim[score_from:])
     chosen.update(u0=u0, y0=y0, validation_rms=score)
@@ -198,11 +192,11 @@ def run(grid: dict = GRID, jobs: int = 2, data: pathlib.Path = DATA) -> dict:
     tanks = load_cascaded_tanks(data)
     n_est = 512
     results = {"actuator": {}, "cascaded_tanks": {}}
-    for name in MODELS:
-        results["actuator"][name] = run_case(
-            name, act["u"][:n_est], act["y"][:n_est], act["u"], act["y"], n_est, grid, ("none",), jobs)
-        results["cascaded_tanks"][name] = run_case(
-            name, tanks["uEst"], tanks["yEst"], tanks["uVal"], tanks["yVal"], 0, grid, ("mean", "first"), jobs)
+    for model in MODELS:
+        results["actuator"][model.__name__] = run_case(
+            model, act["u"][:n_est], act["y"][:n_est], act["u"], act["y"], n_est, grid, ("none",), jobs)
+        results["cascaded_tanks"][model.__name__] = run_case(
+            model, tanks["uEst"], tanks["yEst"], tanks["uVal"], tanks["yVal"], 0, grid, ("mean", "first"), jobs)
     results["_signals"] = {
         "actuator": (act["u"], act["y"], n_est),
         "cascaded_tanks": (tanks["uVal"], tanks["yVal"], 0),
@@ -212,7 +206,7 @@ def run(grid: dict = GRID, jobs: int = 2, data: pathlib.Path = DATA) -> dict:
 
 def table(results: dict) -> dict:
     """{"actuator": {"ARX": rms, ...}, "cascaded_tanks": {...}}."""
-    return {case: {name: results[case][name][2]["validation_rms"] for name in MODELS}
+    return {case: {name: results[case][name][2]["validation_rms"] for name in NAMES}
             for case in ("actuator", "cascaded_tanks")}
 
 
@@ -226,10 +220,10 @@ def print_table(results: dict) -> None:
               "cascaded_tanks": "Cascaded tanks: simulation RMS on the validation record (V)"}
     for case, title in titles.items():
         print(title)
-        print(f"  {'model':<12} {'validation':>10} {'check':>8}  chosen (from estimation data only)")
-        for name in MODELS:
+        print(f"  {'model':<24} {'validation':>10} {'check':>8}  chosen (from estimation data only)")
+        for name in NAMES:
             info = results[case][name][2]
-            print(f"  {name:<12} {info['validation_rms']:>10.4f} {info['check_rms']:>8.4f}  {describe(info)}")
+            print(f"  {name:<24} {info['validation_rms']:>10.4f} {info['check_rms']:>8.4f}  {describe(info)}")
 
 
 def plot(results: dict, directory: pathlib.Path) -> list:
@@ -245,7 +239,7 @@ def plot(results: dict, directory: pathlib.Path) -> list:
         _, y, split = results["_signals"][case]
         t = np.arange(len(y)) * (4.0 if case == "cascaded_tanks" else 1.0)
         fig, axes = plt.subplots(len(MODELS), 1, figsize=(10, 9), sharex=True)
-        for ax, name in zip(axes, MODELS):
+        for ax, name in zip(axes, NAMES):
             _, simulated, info = results[case][name]
             ax.plot(t, y, color="black", linewidth=1.0, label="measured")
             if simulated is not None:
@@ -286,9 +280,9 @@ def main(argv=None) -> int:
     selection = {}
     for case in ("actuator", "cascaded_tanks"):
         selection[case] = {}
-        for name in MODELS:
+        for name in NAMES:
             model, _, info = results[case][name]
-            path = args.out / f"{case}_{name.replace('-', '')}.json"
+            path = args.out / f"{case}_{name}.json"
             path.write_text(model.to_json(2) + "\n")
             selection[case][name] = dict(info, model_file=path.name)
     (args.out / "selection.json").write_text(json.dumps(selection, indent=2) + "\n")

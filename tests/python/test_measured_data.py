@@ -51,7 +51,7 @@ def test_pipeline_runs_on_both_data_sets(first_run):
     table = json.loads((out / "results.json").read_text())
     assert set(table) == {"actuator", "cascaded_tanks"}
     for case in table:
-        assert set(table[case]) == set(md.MODELS)
+        assert set(table[case]) == set(md.NAMES)
         for name, value in table[case].items():
             assert math.isfinite(value) and 0.0 < value < 3.0, (case, name, value)
     # Every model file loads and is the model the table was computed with.
@@ -97,7 +97,7 @@ def batch_least_squares(u, y, na, nb, nk, p0):
 def test_arx_on_the_actuator_is_batch_least_squares(orders):
     act = md.load_actuator()
     u, y = act["u"][:512], act["y"][:512]
-    settings = md.settings("ARX")
+    settings = md.settings(bonl.ARX)
     assert settings == {"method": "equation_error", "forgetting": 1.0, "p0": 1e6}
     model = bonl.identify(bonl.ARX(*orders), u, y, **settings)
     expected = batch_least_squares(u, y, *orders, p0=settings["p0"])
@@ -110,9 +110,9 @@ def test_selection_never_reads_the_validation_part():
     act = md.load_actuator()
     u, y = act["u"], act["y"].copy()
     grid = {"na": (2, 3), "nb": (1, 2), "nk": (0, 1), "r": (2,), "r1": (3,)}
-    model, _, info = md.run_case("H-W", u[:512], y[:512], u, y, 512, grid, ("none",), 2)
+    model, _, info = md.run_case(bonl.HammersteinWiener, u[:512], y[:512], u, y, 512, grid, ("none",), 2)
     y[512:] = np.random.default_rng(5).normal(size=512)
-    model2, _, info2 = md.run_case("H-W", u[:512], y[:512], u, y, 512, grid, ("none",), 2)
+    model2, _, info2 = md.run_case(bonl.HammersteinWiener, u[:512], y[:512], u, y, 512, grid, ("none",), 2)
     assert (info2["orders"], info2["check_rms"]) == (info["orders"], info["check_rms"])
     assert model2.to_json() == model.to_json()
     assert info2["validation_rms"] != info["validation_rms"]

@@ -45,45 +45,22 @@ using bonl_test::vec;
 using bonl_test::Case;
 using bonl_test::check_cases;
 
-// Small known systems with run-time orders: na = 2, nb = 1, nk = 2, r = 2, r1 = 3.
-const Eigen::VectorXd kF = vec({0.01, 0.8, 0.1});
-const Eigen::VectorXd kP = vec({-0.01, -0.2, 0.05});
-const Eigen::VectorXd kB = vec({1.0, 0.4});
-const Eigen::VectorXd kA = vec({-1.2, 0.35});
+const Eigen::VectorXd kF = vec({0.01, 0.8, 0.1});  // an input polynomial for the block tests
 
-bonl::ARXd arx() {
-  bonl::ARXd model(2, 1, 2);
-  model.set_b(vec({0.5, 0.2}));
-  model.set_a(kA);
-  return model;
-}
+/// The small known system of Model (tests/data/known_systems.json, set "small": na = 2, nb = 1,
+/// nk = 2, r = 2, r1 = 3), as the Python bad-input tests have it too.
 template <class Model>
-Model with_front(Model model) {
-  model.set_f(kF);
-  model.set_p(kP);
-  model.set_b(kB);
-  model.set_a(kA);
-  return model;
-}
-bonl::Hammersteind hammerstein() { return with_front(bonl::Hammersteind(2, 1, 2, 2)); }
-bonl::HammersteinWienerd hammerstein_wiener() {
-  bonl::HammersteinWienerd model = with_front(bonl::HammersteinWienerd(2, 1, 2, 2, 3));
-  model.set_q(vec({1.0, 0.1, 0.02}));
-  return model;
-}
-bonl::PseudoHammersteinWienerd phw() {
-  bonl::PseudoHammersteinWienerd model = with_front(bonl::PseudoHammersteinWienerd(2, 1, 2, 2));
-  model.set_c(0.05);
-  return model;
+Model known() {
+  return bonl_test::known_system<Model>("small");
 }
 
-/// Calls f(model, name) for each of the four known systems.
+/// Calls f(model, name) for the small known system of each model of bonl::Models.
 template <class F>
 void for_each_model(F&& f) {
-  f(arx(), "ARX");
-  f(hammerstein(), "Hammerstein");
-  f(hammerstein_wiener(), "Hammerstein-Wiener");
-  f(phw(), "Pseudo-Hammerstein-Wiener");
+  bonl::for_each_model(bonl::Models{}, [&](auto tag) {
+    using Model = typename decltype(tag)::type;
+    f(known<Model>(), Model::kName);
+  });
 }
 
 Eigen::VectorXd input(Eigen::Index n, std::uint64_t seed) { return bonl::signals::random_levels(n, 3, 1.0, seed); }
@@ -151,10 +128,10 @@ TEST_CASE("M4 a run-time order that differs from the compile-time one is rejecte
 }
 
 TEST_CASE("M6 a parameter vector of the wrong length is rejected, naming it and both lengths", "[bad_input][models]") {
-  bonl::ARXd a = arx();
-  bonl::Hammersteind h = hammerstein();
-  bonl::HammersteinWienerd hw = hammerstein_wiener();
-  bonl::PseudoHammersteinWienerd p = phw();
+  bonl::ARXd a = known<bonl::ARXd>();
+  bonl::Hammersteind h = known<bonl::Hammersteind>();
+  bonl::HammersteinWienerd hw = known<bonl::HammersteinWienerd>();
+  bonl::PseudoHammersteinWienerd p = known<bonl::PseudoHammersteinWienerd>();
   check_cases<std::invalid_argument>({
       {"ARX b", [&] { a.set_b(vec({1.0})); }, "b must have 2 entries, got 1"},
       {"ARX a", [&] { a.set_a(vec({0.1, 0.2, 0.3})); }, "a must have 2 entries, got 3"},
@@ -168,17 +145,17 @@ TEST_CASE("M6 a parameter vector of the wrong length is rejected, naming it and 
       {"P-H-W theta", [&] { p.set_theta(Eigen::VectorXd::Zero(11)); }, "theta must have 10 entries, got 11"},
   });
   // A rejected setter leaves the model as it was.
-  CHECK(a.theta() == arx().theta());
-  CHECK(h.theta() == hammerstein().theta());
-  CHECK(hw.theta() == hammerstein_wiener().theta());
-  CHECK(p.theta() == phw().theta());
+  CHECK(a.theta() == known<bonl::ARXd>().theta());
+  CHECK(h.theta() == known<bonl::Hammersteind>().theta());
+  CHECK(hw.theta() == known<bonl::HammersteinWienerd>().theta());
+  CHECK(p.theta() == known<bonl::PseudoHammersteinWienerd>().theta());
 }
 
 TEST_CASE("M7 a NaN or infinite parameter is rejected with its index", "[bad_input][models]") {
-  bonl::ARXd a = arx();
-  bonl::Hammersteind h = hammerstein();
-  bonl::HammersteinWienerd hw = hammerstein_wiener();
-  bonl::PseudoHammersteinWienerd p = phw();
+  bonl::ARXd a = known<bonl::ARXd>();
+  bonl::Hammersteind h = known<bonl::Hammersteind>();
+  bonl::HammersteinWienerd hw = known<bonl::HammersteinWienerd>();
+  bonl::PseudoHammersteinWienerd p = known<bonl::PseudoHammersteinWienerd>();
   Eigen::VectorXd theta = p.theta();
   theta[9] = kInf;
   check_cases<std::invalid_argument>({
@@ -190,27 +167,27 @@ TEST_CASE("M7 a NaN or infinite parameter is rejected with its index", "[bad_inp
       {"H-W q NaN", [&] { hw.set_q(vec({1.0, kNaN, 0.0})); }, "q has a non-finite value at index 1"},
       {"P-H-W theta inf", [&] { p.set_theta(theta); }, "theta has a non-finite value at index 9"},
   });
-  CHECK(p.theta() == phw().theta());
-  CHECK(h.theta() == hammerstein().theta());
+  CHECK(p.theta() == known<bonl::PseudoHammersteinWienerd>().theta());
+  CHECK(h.theta() == known<bonl::Hammersteind>().theta());
 }
 
 TEST_CASE("M8 b_0 and q_1 other than 1 are rejected (the normalisation)", "[bad_input][models]") {
-  bonl::Hammersteind h = hammerstein();
-  bonl::HammersteinWienerd hw = hammerstein_wiener();
-  bonl::PseudoHammersteinWienerd p = phw();
+  bonl::Hammersteind h = known<bonl::Hammersteind>();
+  bonl::HammersteinWienerd hw = known<bonl::HammersteinWienerd>();
+  bonl::PseudoHammersteinWienerd p = known<bonl::PseudoHammersteinWienerd>();
   check_cases<std::invalid_argument>({
       {"Hammerstein b_0 = 0.5", [&] { h.set_b(vec({0.5, 0.1})); }, "b[0] (b_0) must be 1"},
       {"P-H-W b_0 = 0", [&] { p.set_b(vec({0.0, 0.1})); }, "b[0] (b_0) must be 1"},
       {"H-W q_1 = 2", [&] { hw.set_q(vec({2.0, 0.0, 0.0})); }, "q[0] (q_1) must be 1"},
   });
   // ARX keeps b_0 free.
-  bonl::ARXd a = arx();
+  bonl::ARXd a = known<bonl::ARXd>();
   a.set_b(vec({0.5, 0.1}));
   CHECK(a.b() == vec({0.5, 0.1}));
 }
 
 TEST_CASE("M9 a negative or non-finite backlash half-width c is rejected", "[bad_input][models]") {
-  bonl::PseudoHammersteinWienerd p = phw();
+  bonl::PseudoHammersteinWienerd p = known<bonl::PseudoHammersteinWienerd>();
   std::vector<Case> cases;
   for (double c : {-0.1, -kInf, kNaN, kInf}) {
     cases.push_back({"c = " + std::to_string(c), [&p, c] { p.set_c(c); }, "c (backlash half-width) must be finite and >= 0"});
@@ -222,7 +199,7 @@ TEST_CASE("M9 a negative or non-finite backlash half-width c is rejected", "[bad
 
   // The whole parameter vector: the same rule for its last entry (before: accepted, and the model
   // then wrote JSON that the reader rejects).
-  Eigen::VectorXd theta = phw().theta();
+  Eigen::VectorXd theta = known<bonl::PseudoHammersteinWienerd>().theta();
   theta[theta.size() - 1] = -0.1;
   check_cases<std::invalid_argument>(
       {{"set_theta with c = -0.1", [&p, &theta] { p.set_theta(theta); },
@@ -230,7 +207,7 @@ TEST_CASE("M9 a negative or non-finite backlash half-width c is rejected", "[bad
   CHECK(p.c() == 0.0);  // untouched
   // An estimate with c < 0 (the paper method's can have one) becomes a model with c = 0, which is
   // how it simulates.
-  bonl::Estimator<bonl::PseudoHammersteinWienerd> estimator(phw());
+  bonl::Estimator<bonl::PseudoHammersteinWienerd> estimator(known<bonl::PseudoHammersteinWienerd>());
   estimator.reset(theta);
   CHECK(estimator.theta()[theta.size() - 1] == -0.1);
   CHECK(estimator.model().c() == 0.0);
@@ -342,7 +319,7 @@ TEST_CASE("E1-E3 identify rejects mismatched, too short and non-finite records",
 }
 
 TEST_CASE("E4-E11 identify and Estimator reject settings out of range", "[bad_input][estimator]") {
-  const bonl::PseudoHammersteinWienerd model = phw();
+  const bonl::PseudoHammersteinWienerd model = known<bonl::PseudoHammersteinWienerd>();
   const Eigen::VectorXd u = input(100, 6);
   const Eigen::VectorXd y = model.simulate(u);
   const auto with = [](auto change) {
@@ -407,7 +384,7 @@ TEST_CASE("E4-E11 identify and Estimator reject settings out of range", "[bad_in
 }
 
 TEST_CASE("E17 estimate_recursively and refine_output_error check their record and settings", "[bad_input][estimator]") {
-  const bonl::Hammersteind model = hammerstein();
+  const bonl::Hammersteind model = known<bonl::Hammersteind>();
   const Eigen::VectorXd u = bonl::signals::random_levels(200, 5, 1.0, 7);
   const Eigen::VectorXd y = model.simulate(u);
   Eigen::VectorXd with_nan = y;
@@ -442,12 +419,12 @@ TEST_CASE("E18 the safeguard options and the recording capacity are checked", "[
   nan_ceiling.trace_ceiling = kNaN;
   bonl::EstimatorOptions negative_recover;
   negative_recover.recover_after = -1;
-  bonl::Estimator<bonl::ARXd> estimator(arx());
+  bonl::Estimator<bonl::ARXd> estimator(known<bonl::ARXd>());
   check_cases<std::invalid_argument>({
-      {"trace_ceiling 0.5", [&] { bonl::Estimator<bonl::ARXd>(arx(), low_ceiling); },
+      {"trace_ceiling 0.5", [&] { bonl::Estimator<bonl::ARXd>(known<bonl::ARXd>(), low_ceiling); },
        "trace_ceiling must be >= 1 (a multiple of trace(P(0))) or infinity, got 0.5"},
-      {"trace_ceiling NaN", [&] { bonl::Estimator<bonl::ARXd>(arx(), nan_ceiling); }, "trace_ceiling must be >= 1"},
-      {"recover_after -1", [&] { bonl::Estimator<bonl::ARXd>(arx(), negative_recover); },
+      {"trace_ceiling NaN", [&] { bonl::Estimator<bonl::ARXd>(known<bonl::ARXd>(), nan_ceiling); }, "trace_ceiling must be >= 1"},
+      {"recover_after -1", [&] { bonl::Estimator<bonl::ARXd>(known<bonl::ARXd>(), negative_recover); },
        "recover_after must be >= 0"},
       {"start_recording(0)", [&] { estimator.start_recording(0); }, "recording capacity must be >= 1"},
   });
@@ -492,7 +469,7 @@ TEST_CASE("E14 a non-finite sample in Estimator::update is refused and leaves no
 }
 
 TEST_CASE("E15 Estimator::reset with a wrong-length or non-finite start is rejected", "[bad_input][estimator]") {
-  const bonl::HammersteinWienerd model = hammerstein_wiener();
+  const bonl::HammersteinWienerd model = known<bonl::HammersteinWienerd>();
   bonl::Estimator<bonl::HammersteinWienerd> estimator(model);
   estimator.update(0.5, 0.1);
   const Eigen::VectorXd theta = estimator.theta();
@@ -564,7 +541,7 @@ TEST_CASE("S5-S6 metrics of data near the ends of double's range are numbers, no
 
 TEST_CASE("S7 simulation and prediction scores name u and y when their lengths differ", "[bad_input][metrics]") {
   // Before: simulation_scores reported "y and yhat", yhat being its own simulation.
-  const bonl::ARXd model = arx();
+  const bonl::ARXd model = known<bonl::ARXd>();
   check_cases<std::invalid_argument>({
       {"simulation", [&] { bonl::metrics::simulation_scores(model, input(3, 1), input(4, 2)); },
        "u and y must have the same length, got 3 and 4"},
@@ -619,9 +596,9 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 Json document(const std::string& text) { return Json::parse(text); }
-std::string hw_text() { return bonl::io::to_json(hammerstein_wiener()); }
-std::string phw_text() { return bonl::io::to_json(phw()); }
-std::string arx_text() { return bonl::io::to_json(arx()); }
+std::string hw_text() { return bonl::io::to_json(known<bonl::HammersteinWienerd>()); }
+std::string phw_text() { return bonl::io::to_json(known<bonl::PseudoHammersteinWienerd>()); }
+std::string arx_text() { return bonl::io::to_json(known<bonl::ARXd>()); }
 
 /// The P-H-W file with one change.
 template <class F>
@@ -765,8 +742,8 @@ TEST_CASE("J7-J15 the reader names the key at fault", "[bad_input][io]") {
       {"J15 c < 0", [&] { bonl::io::load_model(param("c", -0.1)); }, "params.c (backlash half-width) must be >= 0, got -0.1"},
   });
   // Controls: the unchanged files load, as the kind they name.
-  CHECK(std::get<bonl::PseudoHammersteinWienerd>(bonl::io::load_model(phw_text())).theta() == phw().theta());
-  CHECK(std::get<bonl::ARXd>(bonl::io::load_model(arx_text())).theta() == arx().theta());
+  CHECK(std::get<bonl::PseudoHammersteinWienerd>(bonl::io::load_model(phw_text())).theta() == known<bonl::PseudoHammersteinWienerd>().theta());
+  CHECK(std::get<bonl::ARXd>(bonl::io::load_model(arx_text())).theta() == known<bonl::ARXd>().theta());
 }
 
 // --- The caller's arrays are never modified ------------------------------------------------------

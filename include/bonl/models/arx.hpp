@@ -81,13 +81,7 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   /// As simulate(), but reports divergence by returning false instead of throwing.
   template <typename U>
   bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
-    Linear linear = this->linear_block();
-    y.resize(u.size());
-    for (Eigen::Index k = 0; k < u.size(); ++k) {
-      y[k] = linear.step(u[k]);
-      if (!std::isfinite(y[k])) return false;
-    }
-    return true;
+    return detail::free_run(this->linear_block(), u, y, detail::Identity{}, detail::Identity{});
   }
 
   /// Where the recursive estimator starts (all zero).

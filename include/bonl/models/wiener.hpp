@@ -103,14 +103,9 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   /// As simulate(), but reports divergence by returning false instead of throwing.
   template <typename U>
   bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
-    Linear linear = this->linear_block();
     const VectorX qv = this->q();
-    y.resize(u.size());
-    for (Eigen::Index k = 0; k < u.size(); ++k) {
-      y[k] = OutputBlock::evaluate(qv, linear.step(u[k]));
-      if (!std::isfinite(y[k])) return false;
-    }
-    return true;
+    return detail::free_run(this->linear_block(), u, y, detail::Identity{},
+                            [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
   }
 
   /// Where the recursive estimator starts (all zero).

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include "../../blocks/linear_block.hpp"
 #include "../../blocks/two_segment_polynomial.hpp"
@@ -16,6 +17,7 @@
 #include "../../detail/validate.hpp"
 #include "../model_description.hpp"
 #include "../model_steps.hpp"
+#include "model_runs.hpp"
 #include "simulated_lags.hpp"
 
 namespace bonl::detail {
@@ -140,19 +142,13 @@ class HammersteinFront {
   }
 
   /// Free run from rest: w = N1(u), x = L(w) with L = `linear` (the model's linear_block()),
-  /// y = output(x). Returns false as soon as the simulation leaves the finite numbers (an unstable or
-  /// diverging model).
+  /// y = output(x) (free_run).
   template <typename U, typename OutputMap>
   bool simulate_front(const Eigen::MatrixBase<U>& u, VectorX& y, Linear linear, OutputMap&& output) const {
     const VectorX fv = f();
     const VectorX pv = p();
-    y.resize(u.size());
-    for (Eigen::Index k = 0; k < u.size(); ++k) {
-      const Scalar x = linear.step(InputBlock::evaluate(fv, pv, u[k]));
-      y[k] = output(x);
-      if (!std::isfinite(y[k])) return false;
-    }
-    return true;
+    return free_run(
+        std::move(linear), u, y, [&fv, &pv](Scalar v) { return InputBlock::evaluate(fv, pv, v); }, output);
   }
 
   Params m_theta;

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <string>
 
 #include "../../detail/validate.hpp"
@@ -13,6 +14,27 @@
 #include "../model_steps.hpp"
 
 namespace bonl::detail {
+
+/// The free run every model's try_simulate() is: y(k) = output(L(input(u(k)))) with `linear` the
+/// model's linear block at rest, input and output its static maps (identity where it has none).
+/// Returns false as soon as y leaves the finite numbers (an unstable or diverging model).
+template <class Linear, typename U, typename VectorX, class InputMap, class OutputMap>
+bool free_run(Linear linear, const Eigen::MatrixBase<U>& u, VectorX& y, InputMap&& input, OutputMap&& output) {
+  y.resize(u.size());
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    y[k] = output(linear.step(input(u[k])));
+    if (!std::isfinite(y[k])) return false;
+  }
+  return true;
+}
+
+/// The identity map, for a model without an input or an output block.
+struct Identity {
+  template <typename Scalar>
+  Scalar operator()(Scalar value) const noexcept {
+    return value;
+  }
+};
 
 /// Free run from rest through model.try_simulate(); divergence becomes a NumericalError.
 template <class Model, typename U>

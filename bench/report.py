@@ -105,6 +105,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cpp", required=True, help="Google Benchmark JSON of bonl_bench")
     parser.add_argument("--plant", required=True, help="Google Benchmark JSON of bonl_bench_plant")
+    parser.add_argument("--identify", help="Google Benchmark JSON of bonl_bench_identify")
     parser.add_argument("--python", required=True, help="JSON of bench/python_baselines.py")
     parser.add_argument("--json", help="write the flat results here")
     parser.add_argument("--results-md", help="write the tables and the machine here (bench/RESULTS.md)")
@@ -230,6 +231,12 @@ def main() -> int:
     whole.append(["plant: bonl::plant::simulate, paper multi-sine, 50 s simulated",
                   f"{flat['plant_simulate_50s_ms']:.1f} ms wall, real-time factor {rtf:,.0f}, "
                   f"{flat['plant_cvode_steps']:,.0f} CVODE steps"])
+    if args.identify:
+        identify, _ = load_gbench(args.identify)
+        for name, entry in identify.items():
+            flat[name] = ns(entry) / 1e6
+            whole.append([f"bonl::identify, H-W (6, 5, 1, 3, 3), run-time orders, {name.split('/')[2]} samples",
+                          f"{flat[name]:.0f} ms CPU"])
     whole_table = table(["whole record", "time"], whole, "ll")
 
     # --- RLS sweep ---------------------------------------------------------------------------------

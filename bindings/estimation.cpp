@@ -125,6 +125,12 @@ c0 : float, default 0.01
     Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
 refine_iterations : int, default 100
     Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+    The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+normalise : bool, default True
+    Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+    the model in the data's units, so that the settings mean the same whatever the units. The recursive
+    estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+    estimator's, in the data's units.
 
 Returns
 -------
@@ -162,11 +168,12 @@ void def_identify(py::module_& m) {
   m.def(
       "identify",
       [](const Model& model, const py::object& u, const py::object& y, int passes, const std::string& method,
-         const py::object& forgetting, std::optional<double> p0, double c0, int refine_iterations) {
+         const py::object& forgetting, std::optional<double> p0, double c0, int refine_iterations, bool normalise) {
         bonl::IdentifyOptions options;
         static_cast<bonl::EstimatorOptions&>(options) = estimator_options({method, forgetting, p0, c0, std::nullopt});
         options.passes = passes;
         options.refine_iterations = refine_iterations;
+        options.normalise = normalise;
         if (!y.is_none()) {
           const Eigen::VectorXd input = to_vector(u, "u");
           const Eigen::VectorXd output = to_vector(y, "y");
@@ -182,7 +189,7 @@ void def_identify(py::module_& m) {
       },
       py::arg("model"), py::arg("u"), py::arg("y") = py::none(), py::kw_only(), py::arg("passes") = 1,
       py::arg("method") = "output_error", py::arg("forgetting") = py::none(), py::arg("p0") = py::none(),
-      py::arg("c0") = 0.01, py::arg("refine_iterations") = 100, kIdentifyDoc);
+      py::arg("c0") = 0.01, py::arg("refine_iterations") = 100, py::arg("normalise") = true, kIdentifyDoc);
 }
 
 /// One Python class over the estimators of every model of bonl::Models.

@@ -77,6 +77,17 @@ void bind_common(py::class_<Model>& cls) {
           [](Model& model, const py::object& theta) { model.set_theta(to_vector(theta, "theta")); },
           "numpy.ndarray: the parameter vector in the order of eq. (19).")
       .def_property_readonly("num_params", &Model::num_params, "int: number of identified parameters.")
+      .def_property_readonly(
+          "pole_radius", [](const Model& model) { return bonl::pole_radius(model); },
+          "float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely "
+          "damped.")
+      .def(
+          "rescaled",
+          [](const Model& model, double input_scale, double output_scale) {
+            return bonl::rescaled(model, input_scale, output_scale);
+          },
+          py::arg("input_scale"), py::arg("output_scale"),
+          "The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.")
       .def(
           "to_json", [](const Model& model, int indent) { return bonl::io::to_json(model, indent); },
           py::arg("indent") = -1,

@@ -19,7 +19,9 @@
 #include "models/hammerstein_wiener.hpp"
 #include "models/model_description.hpp"
 #include "models/model_steps.hpp"
+#include "models/poles.hpp"
 #include "models/pseudo_hammerstein_wiener.hpp"
+#include "models/rescale.hpp"
 #include "models/wiener.hpp"
 
 namespace bonl {

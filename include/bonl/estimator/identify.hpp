@@ -8,9 +8,11 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "../detail/validate.hpp"
 #include "../error.hpp"
+#include "../models/rescale.hpp"
 #include "output_error.hpp"
 #include "record_view.hpp"
 #include "recursive_estimator.hpp"
@@ -20,7 +22,56 @@ namespace bonl {
 struct IdentifyOptions : EstimatorOptions {
   int passes = 1;              ///< passes of the recursive estimator over the record (paper's step 5)
   int refine_iterations = 100; ///< Levenberg-Marquardt iterations of the refinement (0: none)
+  /// Where identify refines (below), run on the data divided by the power of two nearest each
+  /// signal's RMS (u and y, over all records) and return the model in the data's units (rescaled()),
+  /// so that the estimators' settings (p0, c0, the forgetting) mean the same on volts, newtons or
+  /// micrometres. Powers of two make the scaling exact in floating point. Where identify returns the
+  /// recursive estimate as it is, that estimate is the online estimator's, in the data's units.
+  bool normalise = true;
 };
+
+namespace detail {
+
+/// The powers of two nearest the RMS of the records' inputs and of their outputs (1 for a signal
+/// that is all zero): identify()'s units.
+struct DataScale {
+  double u = 1.0;
+  double y = 1.0;
+};
+
+template <typename Scalar>
+DataScale data_scale(const Records<Scalar>& records) {
+  double u_squares = 0.0, y_squares = 0.0, samples = 0.0;
+  for (const auto& record : records) {
+    u_squares += static_cast<double>(record.u.squaredNorm());
+    y_squares += static_cast<double>(record.y.squaredNorm());
+    samples += static_cast<double>(record.u.size());
+  }
+  const auto nearest_power_of_two = [samples](double squares) {
+    const double rms = std::sqrt(squares / samples);
+    return rms > 0.0 && std::isfinite(rms) ? std::exp2(std::round(std::log2(rms))) : 1.0;
+  };
+  return {nearest_power_of_two(u_squares), nearest_power_of_two(y_squares)};
+}
+
+/// The records divided by `scale`, owned, with views for identification.
+template <typename Scalar>
+struct ScaledRecords {
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  ScaledRecords(const Records<Scalar>& records, DataScale scale) {
+    inputs.reserve(records.size());
+    outputs.reserve(records.size());
+    for (const auto& record : records) {
+      inputs.push_back(record.u / static_cast<Scalar>(scale.u));
+      outputs.push_back(record.y / static_cast<Scalar>(scale.y));
+    }
+    for (std::size_t i = 0; i < records.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
+  }
+  std::vector<VectorX> inputs, outputs;
+  Records<Scalar> views;
+};
+
+}  // namespace detail
 
 /// The recursive estimator alone: `options.passes` passes over the records, each continuing from the
 /// previous pass's theta and P; every record starts from rest, as a pass does (Estimator::start_pass).
@@ -67,6 +118,9 @@ Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u
 ///   Levenberg-Marquardt on the free-run simulation error over the records, and the one that
 ///   simulates them better is returned. ARX under Method::EquationError is least squares and
 ///   keeps that estimate (that is what an ARX model is).
+/// Where it refines, all of it runs on the data in identify's own units (IdentifyOptions::normalise),
+/// and the model comes back in the data's units. Where it does not, the result is what
+/// Estimator::update gives over the records, in the data's units.
 template <class Model>
 Model identify(const Model& structure, const Records<typename Model::Scalar>& records,
                const IdentifyOptions& options = {}) {
@@ -79,34 +133,33 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
   if (options.method == Method::Paper || least_squares_arx || options.refine_iterations == 0) {
     return estimate_recursively(structure, records, options);
   }
+  if (options.normalise) {
+    const detail::DataScale scale = detail::data_scale(records);
+    if (scale.u != 1.0 || scale.y != 1.0) {
+      const detail::ScaledRecords<typename Model::Scalar> scaled(records, scale);
+      IdentifyOptions in_scale = options;
+      in_scale.normalise = false;
+      in_scale.c0 = options.c0 / scale.y;
+      return rescaled(identify(structure, scaled.views, in_scale), scale.u, scale.y);
+    }
+  }
   // Two starts for the refinement: the method's recursive estimate and the paper method's (with the
   // paper method's defaults where the options leave them unset). A start whose recursion broke down
   // numerically is dropped; if both did, the error is reported.
   IdentifyOptions paper_options = options;
   paper_options.method = Method::Paper;
-  const IdentifyOptions* starts[] = {&options, &paper_options};
-  Model best = structure;
-  double best_cost = std::numeric_limits<double>::infinity();
-  bool found = false;
+  const IdentifyOptions* settings[] = {&options, &paper_options};
+  std::vector<Model> starts;
   std::string failures;
-  const typename Model::VectorX y = detail::stacked_outputs(records);
-  typename Model::VectorX simulated, scratch;
-  for (const IdentifyOptions* start : starts) {
+  for (const IdentifyOptions* start : settings) {
     try {
-      const Model refined =
-          refine_output_error(estimate_recursively(structure, records, *start), records, options.refine_iterations);
-      const double cost = detail::simulation_cost(refined, records, y, simulated, scratch);
-      if (!found || cost < best_cost) {
-        best = refined;
-        best_cost = cost;
-        found = true;
-      }
+      starts.push_back(estimate_recursively(structure, records, *start));
     } catch (const NumericalError& error) {
       failures += std::string(failures.empty() ? "" : "; ") + error.what();
     }
   }
-  if (!found) throw NumericalError("bonl: identification failed from both starts: " + failures);
-  return best;
+  if (starts.empty()) throw NumericalError("bonl: identification failed from both starts: " + failures);
+  return refine_output_error(starts, records, options.refine_iterations);
 }
 
 /// The same on one record (u, y).

@@ -3,9 +3,12 @@
 // identification record or records (output-error / simulation-error criterion), by Levenberg-Marquardt.
 // Under white output noise the key-term regressions are biased (their regressors carry the noise);
 // the simulation error is not, and it is the criterion models are judged by.
-// The Jacobian comes from central differences of the simulation: models with a backlash are only
-// piecewise smooth in theta, where finite differences are as good as an analytic gradient and the
-// code stays the same for every model.
+// The Jacobian is analytic: one free run of the model's OutputErrorTerms with theta held fixed gives
+// each sample's simulated output and its sensitivity d y(k) / d theta, the same recursion the
+// recursive output-error estimator runs (models/model_steps.hpp). Models with a backlash are
+// piecewise smooth in theta; their sensitivity is the one of the piece the run is on.
+// The linear block is kept stable: a start with poles outside the unit circle is reflected inside
+// (models/poles.hpp) and a step that would leave the stable set is not taken.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -13,8 +16,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "../detail/validate.hpp"
+#include "../models/poles.hpp"
 #include "record_view.hpp"
 
 namespace bonl {
@@ -23,6 +28,8 @@ struct RefinementReport {
   double initial_cost = std::numeric_limits<double>::infinity();  ///< mean squared simulation error
   double final_cost = std::numeric_limits<double>::infinity();
   int iterations = 0;
+  bool reflected = false;  ///< a start's linear block was unstable and had its poles reflected inside
+  int start = 0;           ///< which start the result was refined from (refine_output_error of several)
 };
 
 namespace detail {
@@ -36,97 +43,204 @@ double simulation_cost(const Model& model, const Records<typename Model::Scalar>
   const double cost = static_cast<double>((y - simulated).squaredNorm()) / static_cast<double>(y.size());
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
+
+/// The Gauss-Newton normal equations of the simulation error e(k) = y(k) - y_sim(k) at the model's
+/// theta: normal = J'J and gradient = J'e with J(k, :) = d y_sim(k) / d theta, from one free run of
+/// each record from rest through the model's OutputErrorTerms with theta held fixed. The rows are
+/// gathered in blocks so that J'J is a matrix product, not one rank-one update per sample.
+/// Returns false if the run leaves the finite numbers.
+template <class Model, typename MatrixX>
+bool simulation_normal_equations(const Model& model, const Records<typename Model::Scalar>& records, MatrixX& normal,
+                                 typename Model::VectorX& gradient) {
+  using Scalar = typename Model::Scalar;
+  constexpr Eigen::Index kBlock = 256;
+  const Eigen::Index n = model.num_params();
+  const typename Model::Params theta = model.theta();
+  // Row-major: each sample writes one contiguous row.
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows(kBlock, n);
+  typename Model::VectorX errors(kBlock);
+  normal.setZero(n, n);
+  gradient.setZero(n);
+  Eigen::Index filled = 0;
+  const auto flush = [&] {
+    normal.template selfadjointView<Eigen::Lower>().rankUpdate(rows.topRows(filled).transpose());
+    gradient.noalias() += rows.topRows(filled).transpose() * errors.head(filled);
+    filled = 0;
+  };
+  typename Model::OutputErrorTerms terms(model);
+  for (const auto& record : records) {
+    terms.reset();
+    for (Eigen::Index k = 0; k < record.u.size(); ++k) {
+      const auto step = terms.step(theta, record.u[k]);
+      const Scalar error = record.y[k] - step.output;
+      if (!std::isfinite(error)) return false;
+      rows.row(filled) = step.sensitivity.transpose();
+      errors[filled] = error;
+      terms.accept();
+      if (++filled == kBlock) flush();
+    }
+  }
+  flush();
+  normal.template triangularView<Eigen::StrictlyUpper>() = normal.transpose();
+  return normal.allFinite() && gradient.allFinite();
+}
 }  // namespace detail
 
-/// Levenberg-Marquardt on the mean squared free-run simulation error over the records, each
-/// simulated from rest. Only steps that lower it are taken, so the result is never worse than `start`
-/// on these records. Stops after `max_iterations`, or when a step improves the cost by less than a
-/// relative 1e-10.
+namespace detail {
+
+/// Levenberg-Marquardt from `start` (stable, finite cost) on the records: the loop of
+/// refine_output_error, starting with `damping` and leaving there the damping it ended with. The
+/// damping follows the gain ratio rho (actual over predicted decrease of the cost) as Nielsen (1999)
+/// proposes: after a taken step it shrinks by max(1/3, 1 - (2 rho - 1)^3), so it falls fast where the
+/// Gauss-Newton model is good, and it grows by doubling factors after a step that is refused.
+/// Adds its iterations to report.iterations and sets report.final_cost.
 template <class Model>
-Model refine_output_error(const Model& start, const Records<typename Model::Scalar>& records,
-                          int max_iterations = 100, RefinementReport* report = nullptr) {
+Model levenberg_marquardt(const Model& start, const Records<typename Model::Scalar>& records, int max_iterations,
+                          double& damping, RefinementReport& report) {
   using Scalar = typename Model::Scalar;
   using VectorX = typename Model::VectorX;
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
-  const Eigen::Index n = start.num_params();
-  const Eigen::Index samples = detail::require_records(records, n);
-  detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
-  const VectorX y = detail::stacked_outputs(records);
-
+  const VectorX y = stacked_outputs(records);
+  const double samples = static_cast<double>(y.size());
   Model best = start;
   Model trial = start;
-  VectorX simulated, scratch;
-  double cost = detail::simulation_cost(best, records, y, simulated, scratch);
-  RefinementReport local;
-  local.initial_cost = cost;
-  if (!std::isfinite(cost)) {
-    if (report) *report = local;
-    return best;
-  }
+  typename Model::OutputErrorTerms checker(start);
+  VectorX simulated, candidate_simulated, scratch;
+  double cost = simulation_cost(best, records, y, simulated, scratch);
+  report.final_cost = cost;
+  if (!std::isfinite(cost)) return best;
 
-  VectorX plus, minus;
-  MatrixX jacobian(samples, n);
-  double damping = 1e-3;
+  MatrixX normal;
+  VectorX gradient;
   int iteration = 0;
   for (; iteration < max_iterations; ++iteration) {
-    const VectorX residual = y - simulated;
-    typename Model::Params theta = best.theta();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const Scalar step = Scalar(1e-6) * std::max(Scalar(1), std::abs(theta[i]));
-      typename Model::Params shifted = theta;
-      // Projected like every candidate: at a bound (c = 0) the difference becomes one-sided, with
-      // the same simulations as before (a model with c < 0 simulates as c = 0).
-      shifted[i] = theta[i] + step;
-      start.constrain(shifted);
-      trial.set_theta(shifted);
-      const bool ok_plus = detail::simulate_records(trial, records, plus, scratch);
-      shifted[i] = theta[i] - step;
-      start.constrain(shifted);
-      trial.set_theta(shifted);
-      const bool ok_minus = detail::simulate_records(trial, records, minus, scratch);
-      if (ok_plus && ok_minus) {
-        jacobian.col(i) = (plus - minus) / (Scalar(2) * step);
-      } else {
-        jacobian.col(i).setZero();  // this direction leaves the stable region: do not move along it
-      }
-    }
-    const MatrixX normal = jacobian.transpose() * jacobian;
-    const VectorX gradient = jacobian.transpose() * residual;
+    if (!simulation_normal_equations(best, records, normal, gradient)) break;
+    const typename Model::Params theta = best.theta();
     const VectorX scale = normal.diagonal().cwiseMax(Scalar(1e-12) * (normal.diagonal().maxCoeff() + Scalar(1e-300)));
 
     bool accepted = false;
     double new_cost = cost;
+    double growth = 2.0;
     while (damping < 1e12) {
       MatrixX damped = normal;
       damped.diagonal() += Scalar(damping) * scale;
-      const VectorX delta = damped.ldlt().solve(gradient);
-      typename Model::Params candidate = theta + delta;
+      const VectorX step = damped.ldlt().solve(gradient);
+      typename Model::Params candidate = theta + step;
       start.constrain(candidate);
-      if (candidate.allFinite()) {
+      if (candidate.allFinite() && checker.stable(candidate, Scalar(1))) {
         trial.set_theta(candidate);
-        new_cost = detail::simulation_cost(trial, records, y, plus, scratch);
+        new_cost = simulation_cost(trial, records, y, candidate_simulated, scratch);
         if (new_cost < cost) {
+          // Predicted decrease of the sum of squares: step' (gradient + damping D step).
+          const double predicted = static_cast<double>(
+              step.dot(gradient) + Scalar(damping) * step.dot(scale.cwiseProduct(step)));
+          const double rho = predicted > 0.0 ? (cost - new_cost) * samples / predicted : 1.0;
+          damping = std::max(damping * std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)), 1e-15);
           accepted = true;
           break;
         }
       }
-      damping *= 4.0;
+      damping *= growth;
+      growth *= 2.0;
     }
     if (!accepted) break;
     const double improvement = (cost - new_cost) / cost;
     best = trial;
-    simulated.swap(plus);
+    simulated.swap(candidate_simulated);
     cost = new_cost;
-    damping = std::max(damping / 3.0, 1e-12);
     if (improvement < 1e-10 || cost == 0.0) {
       ++iteration;
       break;
     }
   }
-  local.final_cost = cost;
-  local.iterations = iteration;
+  report.final_cost = cost;
+  report.iterations += iteration;
+  return best;
+}
+
+/// Records longer together than this are refined first on their first kCoarseSamples samples
+/// (in proportion to each record's length), then on all of them: most iterations happen far from the
+/// minimum, where a part of the data points the same way as all of it, at a fraction of the cost.
+inline constexpr Eigen::Index kCoarseSamples = 16384;
+
+}  // namespace detail
+
+/// Levenberg-Marquardt on the mean squared free-run simulation error over the records, each
+/// simulated from rest, with the analytic Jacobian (detail::simulation_normal_equations), from
+/// several starts (the criterion is not convex): each start is refined, and the one that simulates
+/// the records best is returned. Only steps that lower the cost and keep the linear block stable are
+/// taken, so the result is never worse on these records than the best (stabilised) start. Each
+/// refinement stops after `max_iterations`, or when a step improves the cost by less than a relative
+/// 1e-10. The report's initial_cost is the best start's.
+/// Long records (more than detail::kCoarseSamples samples together) are refined in two stages: every
+/// start on the records' first part, then only the one that simulates all the records best on all
+/// of them. Most iterations happen far from a minimum, where a part of the data points the same way
+/// as all of it, at a fraction of the cost.
+template <class Model>
+Model refine_output_error(const std::vector<Model>& starts, const Records<typename Model::Scalar>& records,
+                          int max_iterations = 100, RefinementReport* report = nullptr) {
+  using Scalar = typename Model::Scalar;
+  detail::require(!starts.empty(), "starts must hold at least one model");
+  const Eigen::Index samples = detail::require_records(records, starts.front().num_params());
+  detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
+  const typename Model::VectorX y = detail::stacked_outputs(records);
+  typename Model::VectorX simulated, scratch;
+
+  RefinementReport local;
+  local.initial_cost = std::numeric_limits<double>::infinity();
+  std::vector<Model> candidates = starts;
+  std::vector<double> costs(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    Model& candidate = candidates[i];
+    detail::require(candidate.num_params() == starts.front().num_params(),
+                    "starts must all have the same structure (starts[" + std::to_string(i) + "] differs)");
+    typename Model::OutputErrorTerms checker(candidate);
+    if (!checker.stable(candidate.theta(), Scalar(1)) && candidate.a().allFinite()) {
+      candidate.set_a(detail::reflected_inside(candidate.a(), Scalar(0.999)));
+      local.reflected = true;
+    }
+    costs[i] = detail::simulation_cost(candidate, records, y, simulated, scratch);
+  }
+  local.initial_cost = *std::min_element(costs.begin(), costs.end());
+  // Stage one: every start on the records' first part (all of them when they are short).
+  const bool two_stages = samples > detail::kCoarseSamples;
+  Records<Scalar> first_part;
+  for (const auto& record : records) {
+    first_part.push_back(two_stages ? record.head(record.u.size() * detail::kCoarseSamples / samples + 1) : record);
+  }
+  std::vector<double> dampings(candidates.size(), 1e-3);
+  for (std::size_t i = 0; i < candidates.size() && max_iterations > 0; ++i) {
+    if (!std::isfinite(costs[i])) continue;
+    RefinementReport stage;
+    const Model refined = detail::levenberg_marquardt(candidates[i], first_part, max_iterations, dampings[i], stage);
+    local.iterations += stage.iterations;
+    // Kept only where it simulates all the records better (on one stage, always).
+    const double cost = detail::simulation_cost(refined, records, y, simulated, scratch);
+    if (cost < costs[i]) {
+      candidates[i] = refined;
+      costs[i] = cost;
+    }
+  }
+  std::size_t chosen = 0;
+  for (std::size_t i = 1; i < candidates.size(); ++i) {
+    if (costs[i] < costs[chosen]) chosen = i;
+  }
+  local.start = static_cast<int>(chosen);
+  local.final_cost = costs[chosen];
+  Model best = candidates[chosen];
+  // Stage two: the best on all the records.
+  if (two_stages && std::isfinite(costs[chosen]) && max_iterations > 0) {
+    best = detail::levenberg_marquardt(best, records, max_iterations, dampings[chosen], local);
+  }
   if (report) *report = local;
   return best;
+}
+
+/// The same from one start.
+template <class Model>
+Model refine_output_error(const Model& start, const Records<typename Model::Scalar>& records,
+                          int max_iterations = 100, RefinementReport* report = nullptr) {
+  return refine_output_error(std::vector<Model>{start}, records, max_iterations, report);
 }
 
 /// The same on one record (u, y).

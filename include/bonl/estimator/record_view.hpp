@@ -23,8 +23,18 @@ struct RecordView {
   RecordView(const Vector&, Vector&&) = delete;
   RecordView(Vector&&, Vector&&) = delete;
 
+  /// The first `samples` samples of this record (at most all of them).
+  RecordView head(Eigen::Index samples) const {
+    const Eigen::Index n = samples < u.size() ? samples : u.size();
+    return RecordView(u.data(), y.data(), n);
+  }
+
   Eigen::Map<const Vector> u;
   Eigen::Map<const Vector> y;
+
+ private:
+  RecordView(const Scalar* input, const Scalar* output, Eigen::Index samples)
+      : u(input, samples), y(output, samples) {}
 };
 
 template <typename Scalar = double>

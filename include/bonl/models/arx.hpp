@@ -29,8 +29,8 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
       {{{"na", 1, detail::kMaxOrder, Na_, "poles of the linear block (na >= 1)"},
         {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
         {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"}}},
-      {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free for ARX)", nullptr, false},
-        {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false}}}};
+      {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free for ARX)", nullptr, false, {1, 0, -1, 0}},
+        {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}}}}};
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
@@ -120,8 +120,9 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
       const Scalar y = m_linear.step(theta, u, m_psi);
       return {y, m_psi, y};
     }
+    void accept() noexcept { m_linear.commit(m_psi); }
     void accept(const Params& delta) noexcept {
-      m_linear.commit(m_psi);
+      accept();
       m_linear.correct(delta);
     }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }

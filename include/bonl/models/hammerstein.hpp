@@ -77,8 +77,9 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
       const Scalar x = m_front.step(theta, u);
       return {x, m_front.sensitivity(), x};
     }
+    void accept() noexcept { m_front.commit(); }
     void accept(const Params& delta) noexcept {
-      m_front.commit();
+      accept();
       m_front.correct(delta);
     }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }

@@ -33,7 +33,8 @@ class HammersteinWiener
                      std::array<OrderDescription, 1>{{{"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}}}),
       detail::concat(detail::kFrontParameters,
                      std::array<ParameterDescription, 1>{{{"q", ParameterShape::Vector, 1, "q_1..q_r1 with q_1 = 1",
-                                                           "the H-W model is normalised so that q_1 = 1", false}}})};
+                                                           "the H-W model is normalised so that q_1 = 1", false,
+                                                           {1, -1, 0, 0}}}})};
 
   HammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index r1)
       : Front(na, nb, nk, r, checked_r1(r1) - 1), m_r1(r1) {}
@@ -106,8 +107,9 @@ class HammersteinWiener
       m_psi.head(m_front_size) = slope * m_front.sensitivity();
       return {y, m_psi, x};
     }
+    void accept() noexcept { m_front.commit(); }
     void accept(const Params& delta) noexcept {
-      m_front.commit();
+      accept();
       m_front.correct(delta.head(m_front_size));
     }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }

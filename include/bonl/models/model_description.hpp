@@ -38,6 +38,18 @@ enum class ParameterShape {
   Number,  ///< a single number (stored as one entry by parameter())
 };
 
+/// How a parameter block's entries carry the units of u and y. The model of y = sy * M(u / su), M a
+/// model of this type, is M with the entry of index i (first_index + its position) multiplied by
+///   sy^(y_power + y_power_per_index * i) * su^(u_power + u_power_per_index * i)
+/// (rescaled(), models/rescale.hpp). The input polynomial's f_l: sy su^-l; an output polynomial's q_m:
+/// sy^(1 - m); a backlash width: sy; the linear block's a: 1.
+struct ParameterUnits {
+  int y_power = 0;
+  int y_power_per_index = 0;
+  int u_power = 0;
+  int u_power_per_index = 0;
+};
+
 /// One block of parameters, named as the model's setter (set_b) and accessor (b()) name it.
 struct ParameterDescription {
   const char* name;        ///< "b"
@@ -46,6 +58,7 @@ struct ParameterDescription {
   const char* meaning;     ///< one line for documentation: "b_0..b_nb"
   const char* normalised;  ///< not null: the first entry is fixed to 1, for this reason
   bool non_negative;       ///< the value must be >= 0 (the backlash half-width)
+  ParameterUnits units;    ///< how its entries change with the units of u and y
 };
 
 template <std::size_t NumOrders, std::size_t NumParameters>

@@ -29,8 +29,9 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
       "backlash of half-width c. y(k) = x(k) - c if x(k) > y(k-1) + c; x(k) + c if x(k) < y(k-1) - c; "
       "else y(k-1).",
       detail::front_orders<Na_, Nb_, R_>(),
-      detail::concat(detail::kFrontParameters, std::array<ParameterDescription, 1>{
-                                                   {{"c", ParameterShape::Number, 0, "backlash half-width", nullptr, true}}})};
+      detail::concat(detail::kFrontParameters,
+                     std::array<ParameterDescription, 1>{
+                         {{"c", ParameterShape::Number, 0, "backlash half-width", nullptr, true, {1, 0, 0, 0}}}})};
 
   PseudoHammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r) : Front(na, nb, nk, r, 1) {}
 
@@ -190,10 +191,13 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     }
     /// Stores the step: x and its sensitivity in the front, y(k) and its sensitivity as the
     /// backlash memory; then moves them to first order along the estimate's change `delta`.
-    void accept(const Params& delta) noexcept {
+    void accept() noexcept {
       m_front.commit();
       m_y = m_output;
       m_dy = m_psi;
+    }
+    void accept(const Params& delta) noexcept {
+      accept();
       m_front.correct(delta.head(m_last));
       m_y += m_dy.dot(delta);
     }

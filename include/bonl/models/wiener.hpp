@@ -41,10 +41,11 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
         {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
         {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"},
         {"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}}},
-      {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain)", nullptr, false},
-        {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false},
+      {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain)", nullptr, false,
+         {1, 0, -1, 0}},
+        {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
         {"q", ParameterShape::Vector, 1, "q_1..q_r1 with q_1 = 1", "the Wiener model is normalised so that q_1 = 1",
-         false}}}};
+         false, {1, -1, 0, 0}}}}};
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
@@ -177,8 +178,9 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
       m_psi.head(m_dx.size()) = slope * m_dx;
       return {y, m_psi, x};
     }
+    void accept() noexcept { m_linear.commit(m_dx); }
     void accept(const Params& delta) noexcept {
-      m_linear.commit(m_dx);
+      accept();
       m_linear.correct(delta.template head<kLinearParams>(m_dx.size()));
     }
     bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }

@@ -59,6 +59,10 @@ class ARX:
             measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
             backlash memory is the measured y[k - 1]).
         """
+    def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> ARX:
+        """
+        The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        """
     def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         Free-run simulation from rest.
@@ -131,6 +135,11 @@ class ARX:
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
     @property
+    def pole_radius(self) -> float:
+        """
+        float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
+        """
+    @property
     def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
@@ -191,6 +200,10 @@ class Hammerstein:
             The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
             measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
             backlash memory is the measured y[k - 1]).
+        """
+    def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> Hammerstein:
+        """
+        The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
     def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
@@ -278,6 +291,11 @@ class Hammerstein:
     def params(self) -> dict:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
+        """
+    @property
+    def pole_radius(self) -> float:
+        """
+        float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
         """
     @property
     def r(self) -> int:
@@ -350,6 +368,10 @@ class HammersteinWiener:
             measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
             backlash memory is the measured y[k - 1]).
         """
+    def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> HammersteinWiener:
+        """
+        The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        """
     def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         Free-run simulation from rest.
@@ -436,6 +458,11 @@ class HammersteinWiener:
     def params(self) -> dict:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
+        """
+    @property
+    def pole_radius(self) -> float:
+        """
+        float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
         """
     @property
     def q(self) -> typing.Any:
@@ -518,6 +545,10 @@ class PseudoHammersteinWiener:
             The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
             measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
             backlash memory is the measured y[k - 1]).
+        """
+    def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> PseudoHammersteinWiener:
+        """
+        The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
     def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
@@ -615,6 +646,11 @@ class PseudoHammersteinWiener:
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
     @property
+    def pole_radius(self) -> float:
+        """
+        float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
+        """
+    @property
     def r(self) -> int:
         """
         int: degree of the input polynomials (r >= 1).
@@ -678,6 +714,10 @@ class Wiener:
             The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
             measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
             backlash memory is the measured y[k - 1]).
+        """
+    def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> Wiener:
+        """
+        The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
     def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
@@ -749,6 +789,11 @@ class Wiener:
     def params(self) -> dict:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
+        """
+    @property
+    def pole_radius(self) -> float:
+        """
+        float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
         """
     @property
     def q(self) -> typing.Any:
@@ -1004,7 +1049,7 @@ class Estimator:
         numpy.ndarray: current estimate (eq. 19 order).
         """
 @typing.overload
-def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> ARX:
+def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> ARX:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1033,6 +1078,12 @@ def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+    normalise : bool, default True
+        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+        the model in the data's units, so that the settings mean the same whatever the units. The recursive
+        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+        estimator's, in the data's units.
     
     Returns
     -------
@@ -1047,7 +1098,7 @@ def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Hammerstein:
+def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> Hammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1076,6 +1127,12 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes:
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+    normalise : bool, default True
+        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+        the model in the data's units, so that the settings mean the same whatever the units. The recursive
+        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+        estimator's, in the data's units.
     
     Returns
     -------
@@ -1090,7 +1147,7 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes:
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> HammersteinWiener:
+def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> HammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1119,6 +1176,12 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, p
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+    normalise : bool, default True
+        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+        the model in the data's units, so that the settings mean the same whatever the units. The recursive
+        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+        estimator's, in the data's units.
     
     Returns
     -------
@@ -1133,7 +1196,7 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, p
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> PseudoHammersteinWiener:
+def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> PseudoHammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1162,6 +1225,12 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+    normalise : bool, default True
+        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+        the model in the data's units, so that the settings mean the same whatever the units. The recursive
+        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+        estimator's, in the data's units.
     
     Returns
     -------
@@ -1176,7 +1245,7 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100) -> Wiener:
+def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> Wiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1205,6 +1274,12 @@ def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typi
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+    normalise : bool, default True
+        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+        the model in the data's units, so that the settings mean the same whatever the units. The recursive
+        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+        estimator's, in the data's units.
     
     Returns
     -------

@@ -32,10 +32,11 @@ constexpr std::array<OrderDescription, 4> front_orders() {
 }
 inline constexpr const char* kFrontNormalisation = "block models are normalised so that b_0 = 1";
 inline constexpr std::array<ParameterDescription, 4> kFrontParameters{
-    {{"b", ParameterShape::Vector, 0, "b_0..b_nb with b_0 = 1", kFrontNormalisation, false},
-     {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false},
-     {"f", ParameterShape::Vector, 0, "f_0..f_r, the input polynomial for u >= 0", nullptr, false},
-     {"p", ParameterShape::Vector, 0, "p_0..p_r, its change for u < 0 (p_l = g_l - f_l)", nullptr, false}}};
+    {{"b", ParameterShape::Vector, 0, "b_0..b_nb with b_0 = 1", kFrontNormalisation, false, {}},
+     {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
+     {"f", ParameterShape::Vector, 0, "f_0..f_r, the input polynomial for u >= 0", nullptr, false, {1, 0, 0, -1}},
+     {"p", ParameterShape::Vector, 0, "p_0..p_r, its change for u < 0 (p_l = g_l - f_l)", nullptr, false,
+      {1, 0, 0, -1}}}};
 
 /// Parameter count of the front: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na.
 constexpr int front_params(int na, int nb, int r) {

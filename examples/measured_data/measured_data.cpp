@@ -4,10 +4,14 @@
 // the last 25 % of the estimation data only, refit on the whole estimation part, free-run
 // simulation from rest, RMS on the validation part), and the same table.
 //
-//   bonl_measured_data [--data DIR] [--out DIR] [--json FILE] [--small-grid] [--jobs N]
+//   bonl_measured_data [--data DIR] [--out DIR] [--json FILE] [--selection FILE] [--markdown FILE]
+//                      [--small-grid] [--jobs N]
 //
 // DIR defaults to the repository's data/ (BONL_MEASURED_DATA_DIR, set by CMake). Writes the model
-// files (bonl JSON) and the simulated outputs (CSV) into --out, the table into --json.
+// files (bonl JSON) and the simulated outputs (CSV) into --out, the table into --json, the chosen
+// structures with their scores into --selection (docs/results/measured_data.json, which a test
+// re-identifies) and the tables with the published figures beside them into --markdown
+// (docs/results/measured_data_summary.md, quoted by the README and docs/measured_data.md).
 
 #include <bonl/bonl.hpp>
 #include <bonl/io.hpp>
@@ -254,6 +258,16 @@ void write_text(const std::string& path, const std::string& text) {
   file << text;
 }
 
+/// The published figures beside each model's row (from data/*/SOURCE.md), by case and model.
+const std::map<std::string, std::map<std::string, std::string>> kPublished = {
+    {"actuator",
+     {{"ARX", "linear ARX(3,2,1) about 0.99"}, {"HammersteinWiener", "1995 sigmoid neural network about 0.47"}}},
+    {"cascaded_tanks",
+     {{"ARX", "best linear 0.75"},
+      {"Hammerstein", "Volterra 0.54"},
+      {"HammersteinWiener", "best black-box about 0.34"},
+      {"PseudoHammersteinWiener", "physical grey-box 0.18"}}}};
+
 std::string number(double value) {
   if (!std::isfinite(value)) return "null";
   char buffer[40];
@@ -264,7 +278,7 @@ std::string number(double value) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string data = BONL_MEASURED_DATA_DIR, out = "measured_data_out", json;
+  std::string data = BONL_MEASURED_DATA_DIR, out = "measured_data_out", json, selection_file, markdown_file;
   bool small = false;
   unsigned jobs = std::max(1u, std::min(2u, std::thread::hardware_concurrency()));
   for (int i = 1; i < argc; ++i) {
@@ -276,10 +290,15 @@ int main(int argc, char** argv) {
     if (arg == "--data") data = value();
     else if (arg == "--out") out = value();
     else if (arg == "--json") json = value();
+    else if (arg == "--selection") selection_file = value();
+    else if (arg == "--markdown") markdown_file = value();
     else if (arg == "--small-grid") small = true;
     else if (arg == "--jobs") jobs = static_cast<unsigned>(std::max(1, std::stoi(value())));
     else {
-      std::fprintf(stderr, "usage: %s [--data DIR] [--out DIR] [--json FILE] [--small-grid] [--jobs N]\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--data DIR] [--out DIR] [--json FILE] [--selection FILE] [--markdown FILE] "
+                   "[--small-grid] [--jobs N]\n",
+                   argv[0]);
       return 2;
     }
   }
@@ -343,5 +362,41 @@ int main(int argc, char** argv) {
     }
   }
   if (!json.empty()) write_text(json, table);
+
+  // The chosen structures and their scores, and the tables for the docs.
+  std::string selection = "{\n";
+  std::string markdown;
+  std::map<std::string, std::vector<std::string>> order_names;
+  bonl::for_each_model(MeasuredModels{}, [&](auto tag) {
+    using Model = typename decltype(tag)::type;
+    for (const auto& order : Model::kDescription.orders) order_names[Model::kName].push_back(order.name);
+  });
+  const std::pair<const char*, const char*> headers[] = {{"actuator", "actuator, samples 513-1024"},
+                                                         {"cascaded_tanks", "cascaded tanks, validation record [V]"}};
+  for (const auto& [key, header] : headers) {
+    selection += std::string("  \"") + key + "\": {\n";
+    markdown += std::string(markdown.empty() ? "" : "\n") + "| " + header + " | orders chosen | ours | published |\n" +
+                "|---|---|---|---|\n";
+    for (std::size_t m = 0; m < names.size(); ++m) {
+      const Result& r = results[key][names[m]];
+      std::string orders;
+      for (std::size_t i = 0; i < r.chosen.orders.size(); ++i) {
+        orders += std::string(i == 0 ? "" : ", ") + "\"" + order_names[names[m]][i] + "\": " +
+                  std::to_string(r.chosen.orders[i]);
+      }
+      selection += "    \"" + names[m] + "\": {\"orders\": {" + orders + "}, \"offset\": \"" + to_string(r.chosen.offset) +
+                   "\", \"check_rms\": " + number(r.check_rms) + ", \"validation_rms\": " + number(r.validation_rms) +
+                   "}" + (m + 1 < names.size() ? ",\n" : "\n");
+      char rms_text[32];
+      std::snprintf(rms_text, sizeof rms_text, "%.3f", r.validation_rms);
+      const auto published = kPublished.at(key).find(names[m]);
+      markdown += "| " + names[m] + " | " + r.description + " | " + rms_text + " | " +
+                  (published == kPublished.at(key).end() ? std::string() : published->second) + " |\n";
+    }
+    selection += std::string("  }") + (std::string(key) == "actuator" ? ",\n" : "\n");
+  }
+  selection += "}\n";
+  if (!selection_file.empty()) write_text(selection_file, selection);
+  if (!markdown_file.empty()) write_text(markdown_file, markdown);
   return 0;
 }

@@ -17,22 +17,27 @@
 namespace bonl_python {
 namespace {
 
-const char* kSimulateDoc = R"doc(Free-run simulation from rest.
+const char* kSimulateDoc = R"doc(Free-run simulation, from rest or after a measured past.
 
 Parameters
 ----------
 u : array_like, shape (n,)
     Input sequence.
+initial : (u_past, y_past), optional
+    The measured samples just before u. They set the model's state (its internal variables are what
+    the measured past says, as predict() takes them); then the model runs on u alone. The
+    benchmarks' state-initialisation window of m samples is
+    ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
 
 Returns
 -------
 numpy.ndarray, shape (n,)
-    The model's output, driven by u alone (past inputs and outputs are zero).
+    The model's output, driven by u alone after the initial state.
 
 Raises
 ------
 ValueError
-    If u is not a finite 1-D array.
+    If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
 bonl.NumericalError
     If the simulation leaves the finite numbers (an unstable model).)doc";
 
@@ -44,6 +49,8 @@ u : array_like, shape (n,)
     Input sequence.
 y : array_like, shape (n,)
     Measured output; y[k] is used to predict y[k + 1].
+initial : (u_past, y_past), optional
+    The measured samples just before u and y (None: from rest at the operating point).
 
 Returns
 -------
@@ -52,26 +59,51 @@ numpy.ndarray, shape (n,)
     measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
     backlash memory is the measured y[k - 1]).)doc";
 
+/// initial=(u_past, y_past): the measured recent past, or None (rest): (u_past, y_past) as vectors.
+std::pair<Eigen::VectorXd, Eigen::VectorXd> read_initial(const py::object& initial) {
+  if (initial.is_none()) return {Eigen::VectorXd(0), Eigen::VectorXd(0)};
+  bonl::detail::require(!py::isinstance<py::array>(initial) && py::isinstance<py::sequence>(initial) &&
+                            !py::isinstance<py::str>(initial) && py::len(initial) == 2,
+                        "initial must be None or a pair (u_past, y_past) of the measured recent past, got " +
+                            type_name(initial));
+  const py::sequence pair = initial.cast<py::sequence>();
+  return {to_vector(pair[0], "u_past"), to_vector(pair[1], "y_past")};
+}
+
 /// Methods every model shares.
 template <class Model>
 void bind_common(py::class_<Model>& cls) {
   cls.def(
          "simulate",
-         [](const Model& model, const py::object& u) {
+         [](const Model& model, const py::object& u, const py::object& initial) {
            const Eigen::VectorXd input = to_vector(u, "u");
+           const auto [u_past, y_past] = read_initial(initial);
            py::gil_scoped_release release;
-           return Eigen::VectorXd(model.simulate(input));
+           if (u_past.size() == 0 && y_past.size() == 0) return Eigen::VectorXd(model.simulate(input));
+           return Eigen::VectorXd(model.simulate(input, u_past, y_past));
          },
-         py::arg("u"), kSimulateDoc)
+         py::arg("u"), py::arg("initial") = py::none(), kSimulateDoc)
       .def(
           "predict",
-          [](const Model& model, const py::object& u, const py::object& y) {
+          [](const Model& model, const py::object& u, const py::object& y, const py::object& initial) {
             const Eigen::VectorXd input = to_vector(u, "u");
             const Eigen::VectorXd output = to_vector(y, "y");
+            const auto [u_past, y_past] = read_initial(initial);
             py::gil_scoped_release release;
-            return Eigen::VectorXd(model.predict(input, output));
+            return Eigen::VectorXd(model.predict(input, output, u_past, y_past));
           },
-          py::arg("u"), py::arg("y"), kPredictDoc)
+          py::arg("u"), py::arg("y"), py::arg("initial") = py::none(), kPredictDoc)
+      .def_property(
+          "operating_point", [](const Model& model) { return py::make_tuple(model.u0(), model.y0()); },
+          [](Model& model, const py::object& point) {
+            bonl::detail::require(!py::isinstance<py::str>(point) && py::isinstance<py::sequence>(point) &&
+                                      py::len(point) == 2,
+                                  "operating_point must be a pair (u0, y0), got " + type_name(point));
+            const py::sequence pair = point.cast<py::sequence>();
+            model.set_operating_point(to_scalar(pair[0], "u0"), to_scalar(pair[1], "y0"));
+          },
+          "tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. "
+          "(0, 0) unless set. identify() keeps the structure's.")
       .def_property(
           "theta", [](const Model& model) { return Eigen::VectorXd(model.theta()); },
           [](Model& model, const py::object& theta) { model.set_theta(to_vector(theta, "theta")); },

@@ -5,7 +5,8 @@
 //
 // Model concept (what Estimator<Model> needs):
 //   Scalar, kNumParams (or Eigen::Dynamic), Params, VectorX, kHasInternalVariables, kName;
-//   num_params(), theta(), set_theta(), try_simulate(u, y), initial_estimate(c0), constrain(theta);
+//   num_params(), theta(), set_theta(), try_simulate_deviations(u, y) (the free run of u - u0 to
+//   y - y0; detail::ModelRuns adds the operating point), initial_estimate(c0), constrain(theta);
 //   KeyTerms(model, KeyTermMethod) and OutputErrorTerms(model, hold), each with reset() and one
 //   step() per sample (models/model_steps.hpp);
 // and describes itself (kDescription, orders(), parameter(i), set_parameter(i, v): model_description.hpp),

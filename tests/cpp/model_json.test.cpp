@@ -169,17 +169,19 @@ TEST_CASE("the format, pinned: exact text of small models", "[io]") {
   hw.set_a(vec({-0.5}));
   hw.set_q(vec({1.0, 0.1}));
   CHECK(bonl::io::to_json(hw) ==
-        R"({"format":"bonl-model","version":1,"model":"HammersteinWiener",)"
+        R"({"format":"bonl-model","version":2,"model":"HammersteinWiener",)"
         R"("orders":{"na":1,"nb":1,"nk":0,"r":1,"r1":2},)"
-        R"("params":{"b":[1.0,0.5],"a":[-0.5],"f":[0.5,-0.25],"p":[0.0,0.125],"q":[1.0,0.1]}})");
+        R"("params":{"b":[1.0,0.5],"a":[-0.5],"f":[0.5,-0.25],"p":[0.0,0.125],"q":[1.0,0.1]},)"
+        R"("operating_point":{"u0":0.0,"y0":0.0}})");
 
   bonl::ARX<double, 1, 0> arx(1, 0, 3);
   arx.set_b(vec({0.2}));
   arx.set_a(vec({-0.9}));
+  arx.set_operating_point(2.5, -0.125);
   CHECK(bonl::io::to_json(arx, 2) ==
         "{\n"
         "  \"format\": \"bonl-model\",\n"
-        "  \"version\": 1,\n"
+        "  \"version\": 2,\n"
         "  \"model\": \"ARX\",\n"
         "  \"orders\": {\n"
         "    \"na\": 1,\n"
@@ -193,6 +195,10 @@ TEST_CASE("the format, pinned: exact text of small models", "[io]") {
         "    \"a\": [\n"
         "      -0.9\n"
         "    ]\n"
+        "  },\n"
+        "  \"operating_point\": {\n"
+        "    \"u0\": 2.5,\n"
+        "    \"y0\": -0.125\n"
         "  }\n"
         "}");
 
@@ -202,16 +208,44 @@ TEST_CASE("the format, pinned: exact text of small models", "[io]") {
   phw.set_a(vec({-0.5}));
   phw.set_c(0.25);
   CHECK(bonl::io::to_json(phw) ==
-        R"({"format":"bonl-model","version":1,"model":"PseudoHammersteinWiener",)"
+        R"({"format":"bonl-model","version":2,"model":"PseudoHammersteinWiener",)"
         R"("orders":{"na":1,"nb":0,"nk":1,"r":1},)"
-        R"("params":{"b":[1.0],"a":[-0.5],"f":[0.0,2.0],"p":[0.0,-1.0],"c":0.25}})");
+        R"("params":{"b":[1.0],"a":[-0.5],"f":[0.0,2.0],"p":[0.0,-1.0],"c":0.25},)"
+        R"("operating_point":{"u0":0.0,"y0":0.0}})");
 
   bonl::Hammersteind h(1, 0, 0, 1);
   h.set_f(vec({0.0, 1.0}));
   h.set_a(vec({0.5}));
   CHECK(bonl::io::to_json(h) ==
-        R"({"format":"bonl-model","version":1,"model":"Hammerstein","orders":{"na":1,"nb":0,"nk":0,"r":1},)"
-        R"("params":{"b":[1.0],"a":[0.5],"f":[0.0,1.0],"p":[0.0,0.0]}})");
+        R"({"format":"bonl-model","version":2,"model":"Hammerstein","orders":{"na":1,"nb":0,"nk":0,"r":1},)"
+        R"("params":{"b":[1.0],"a":[0.5],"f":[0.0,1.0],"p":[0.0,0.0]},"operating_point":{"u0":0.0,"y0":0.0}})");
+}
+
+TEST_CASE("version 1 files, written before the operating point, still load, at the operating point (0, 0)", "[io]") {
+  const std::string version_1 =
+      R"({"format":"bonl-model","version":1,"model":"Hammerstein","orders":{"na":1,"nb":0,"nk":0,"r":1},)"
+      R"("params":{"b":[1.0],"a":[0.5],"f":[0.0,1.0],"p":[0.0,0.0]}})";
+  const auto model = bonl::io::model_from_json<bonl::Hammersteind>(version_1);
+  CHECK(model.u0() == 0.0);
+  CHECK(model.y0() == 0.0);
+  CHECK(model.f() == vec({0.0, 1.0}));
+  // A version 1 file with an operating point is not a version 1 file.
+  CHECK_THROWS_WITH(bonl::io::model_from_json<bonl::Hammersteind>(
+                        version_1.substr(0, version_1.size() - 1) + R"(,"operating_point":{"u0":0.0,"y0":0.0}})"),
+                    Catch::Matchers::Contains("unknown key operating_point"));
+}
+
+TEST_CASE("the operating point is written and read back bit for bit", "[io]") {
+  bonl::Wienerd model = known_system<bonl::Wienerd>("small");
+  model.set_operating_point(0.1 + 0.2, -1.0 / 3.0);
+  const auto back = bonl::io::model_from_json<bonl::Wienerd>(bonl::io::to_json(model));
+  CHECK(back.u0() == model.u0());
+  CHECK(back.y0() == model.y0());
+  const Eigen::VectorXd u = bonl::signals::random_levels(300, 5, 1.0, 3);
+  CHECK(back.simulate(u) == model.simulate(u));
+  CHECK_THROWS_WITH(bonl::io::model_from_json<bonl::Wienerd>(
+                        std::string(bonl::io::to_json(model)).replace(bonl::io::to_json(model).find("\"y0\""), 4, "\"y1\"")),
+                    Catch::Matchers::Contains("operating_point"));
 }
 
 TEST_CASE("the shared fixture tests/data/phw_model.json loads", "[io]") {
@@ -264,11 +298,11 @@ TEST_CASE("bad files are rejected with a message naming the problem", "[io]") {
     check_rejected(edited(good, [](Json& d) { d["format"] = "bonl-modle"; }),
                    "format must be \"bonl-model\", got \"bonl-modle\"");
     check_rejected(edited(good, [](Json& d) { d.erase("version"); }), "missing key version");
-    check_rejected(edited(good, [](Json& d) { d["version"] = 2; }),
-                   "version 2 is newer than this bonl reads: it reads version 1");
+    check_rejected(edited(good, [](Json& d) { d["version"] = 3; }),
+                   "version 3 is newer than this bonl reads: it reads version 2");
     check_rejected(edited(good, [](Json& d) { d["version"] = 18446744073709551615u; }),
-                   "is newer than this bonl reads: it reads version 1");
-    check_rejected(edited(good, [](Json& d) { d["version"] = 0; }), "version must be 1, got 0");
+                   "is newer than this bonl reads: it reads version 2");
+    check_rejected(edited(good, [](Json& d) { d["version"] = 0; }), "version must be between 1 and 2, got 0");
     check_rejected(edited(good, [](Json& d) { d["version"] = "1"; }), "version must be an integer, got \"1\"");
     check_rejected(edited(good, [](Json& d) { d["version"] = 1.0; }), "version must be an integer, got 1.0");
   }

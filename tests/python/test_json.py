@@ -26,10 +26,24 @@ def test_round_trip_in_python(known):
     name, model = known
     text = model.to_json()
     document = json.loads(text)
-    assert document["format"] == "bonl-model" and document["version"] == 1
+    assert document["format"] == "bonl-model" and document["version"] == 2
     assert document["model"] == name
+    assert document["operating_point"] == {"u0": 0.0, "y0": 0.0}
     loaded = bonl.load_model(text)
     assert type(loaded) is type(model)
+    np.testing.assert_array_equal(loaded.theta, model.theta)
+    model.operating_point = (0.1 + 0.2, -1.0 / 3.0)
+    assert bonl.load_model(model.to_json()).operating_point == (0.1 + 0.2, -1.0 / 3.0)
+
+
+def test_version_1_files_load_at_operating_point_zero(known):
+    """Files written before the operating point (version 1) still load; the known systems are such files."""
+    name, model = known
+    document = json.loads(model.to_json())
+    del document["operating_point"]
+    document["version"] = 1
+    loaded = bonl.load_model(json.dumps(document))
+    assert loaded.operating_point == (0.0, 0.0)
     np.testing.assert_array_equal(loaded.theta, model.theta)
 
 

@@ -54,16 +54,16 @@ DataScale data_scale(const Records<Scalar>& records) {
   return {nearest_power_of_two(u_squares), nearest_power_of_two(y_squares)};
 }
 
-/// The records divided by `scale`, owned, with views for identification.
+/// The records less (u0, y0) and divided by `scale`, owned, with views for identification.
 template <typename Scalar>
 struct ScaledRecords {
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  ScaledRecords(const Records<Scalar>& records, DataScale scale) {
+  ScaledRecords(const Records<Scalar>& records, DataScale scale, double u0 = 0.0, double y0 = 0.0) {
     inputs.reserve(records.size());
     outputs.reserve(records.size());
     for (const auto& record : records) {
-      inputs.push_back(record.u / static_cast<Scalar>(scale.u));
-      outputs.push_back(record.y / static_cast<Scalar>(scale.y));
+      inputs.push_back((record.u.array() - static_cast<Scalar>(u0)).matrix() / static_cast<Scalar>(scale.u));
+      outputs.push_back((record.y.array() - static_cast<Scalar>(y0)).matrix() / static_cast<Scalar>(scale.y));
     }
     for (std::size_t i = 0; i < records.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
   }
@@ -110,8 +110,9 @@ Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u
   return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options);
 }
 
-/// Identifies the parameters of `structure` (its orders; its parameter values are not used) from
-/// records of input u and measured output y (one record or several, each from rest).
+/// Identifies the parameters of `structure` (its orders and its operating point; its parameter values
+/// are not used) from records of input u and measured output y (one record or several, each from rest
+/// at the operating point). The result has the structure's operating point.
 /// - Method::Paper: the recursive estimator of eqs. (21)-(31), `passes` passes.
 /// - Method::OutputError (the default) and Method::EquationError: that recursive estimator,
 ///   `passes` passes; then both its estimate and the paper method's are refined by
@@ -133,6 +134,16 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
   if (options.method == Method::Paper || least_squares_arx || options.refine_iterations == 0) {
     return estimate_recursively(structure, records, options);
   }
+  if (structure.u0() != 0.0 || structure.y0() != 0.0) {
+    // The blocks see the deviations from the operating point: identify them, then put it back.
+    const detail::ScaledRecords<typename Model::Scalar> deviations(records, {1.0, 1.0}, structure.u0(),
+                                                                   structure.y0());
+    Model at_zero = structure;
+    at_zero.set_operating_point(0.0, 0.0);
+    Model model = identify(at_zero, deviations.views, options);
+    model.set_operating_point(structure.u0(), structure.y0());
+    return model;
+  }
   if (options.normalise) {
     const detail::DataScale scale = detail::data_scale(records);
     if (scale.u != 1.0 || scale.y != 1.0) {
@@ -140,7 +151,8 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
       IdentifyOptions in_scale = options;
       in_scale.normalise = false;
       in_scale.c0 = options.c0 / scale.y;
-      return rescaled(identify(structure, scaled.views, in_scale), scale.u, scale.y);
+      return rescaled(identify(rescaled(structure, 1.0 / scale.u, 1.0 / scale.y), scaled.views, in_scale), scale.u,
+                      scale.y);
     }
   }
   // Two starts for the refinement: the method's recursive estimate and the paper method's (with the

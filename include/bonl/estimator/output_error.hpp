@@ -68,11 +68,13 @@ bool simulation_normal_equations(const Model& model, const Records<typename Mode
     filled = 0;
   };
   typename Model::OutputErrorTerms terms(model);
+  const Scalar u0 = static_cast<Scalar>(model.u0());  // the blocks see deviations from the operating point
+  const Scalar y0 = static_cast<Scalar>(model.y0());
   for (const auto& record : records) {
     terms.reset();
     for (Eigen::Index k = 0; k < record.u.size(); ++k) {
-      const auto step = terms.step(theta, record.u[k]);
-      const Scalar error = record.y[k] - step.output;
+      const auto step = terms.step(theta, record.u[k] - u0);
+      const Scalar error = record.y[k] - y0 - step.output;
       if (!std::isfinite(error)) return false;
       rows.row(filled) = step.sensitivity.transpose();
       errors[filled] = error;

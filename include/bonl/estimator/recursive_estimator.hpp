@@ -147,6 +147,8 @@ class Estimator {
         m_outputs(structure, options.backlash_hold), m_rls(structure.num_params(), Scalar(options.resolved_p0())),
         m_theta_internal(Params::Zero(structure.num_params())), m_step(m_theta_internal), m_options(options),
         m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
+    m_u0 = static_cast<Scalar>(structure.u0());
+    m_y0 = static_cast<Scalar>(structure.y0());
     if (options.method == Method::OutputError) m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
     reset();
   }
@@ -227,6 +229,9 @@ class Estimator {
   /// rejected and leaves the state untouched.
   UpdateStatus update(Scalar u, Scalar y) noexcept {
     if (!std::isfinite(u) || !std::isfinite(y)) return UpdateStatus::RejectedNonFinite;
+    // The model's blocks see the deviations from its operating point (0, 0 unless set).
+    u -= m_u0;
+    y -= m_y0;
     const Method method = m_options.method;
     if (method == Method::OutputError) return update_output_error(u, y);
     // Paper: internal variables from the running estimate, as eqs. (24)-(27) write it. Default: from
@@ -274,7 +279,7 @@ class Estimator {
   /// used: y - last_prediction() is the innovation (for monitoring and fault detection). For the
   /// output-error method it is the model's free-run (simulated) output; for the others the key-term
   /// one-step prediction from the measured past.
-  Scalar last_prediction() const noexcept { return m_prediction; }
+  Scalar last_prediction() const noexcept { return m_prediction + m_y0; }
   /// Samples since the last pass started.
   Eigen::Index samples() const noexcept { return m_sample; }
   /// True once an update was refused for numerical reasons (cleared by recover() and reset()).
@@ -445,6 +450,7 @@ class Estimator {
   }
 
   Model m_model;
+  Scalar m_u0 = Scalar(0), m_y0 = Scalar(0);  // the structure's operating point
   typename Model::KeyTerms m_terms;           // equation_error and paper
   typename Model::OutputErrorTerms m_outputs; // output_error
   Rls<Scalar, Model::kNumParams> m_rls;

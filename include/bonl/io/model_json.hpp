@@ -2,12 +2,14 @@
 // The bonl model file: one JSON format, read and written by C++ and (through the bindings) Python,
 // so that a model identified in one loads in the other and simulates the same output.
 //
-// Format, version 1 (keys written in this order; readers are strict: no missing or unknown keys):
-//   {"format": "bonl-model", "version": 1,
+// Format, version 2 (keys written in this order; readers are strict: no missing or unknown keys):
+//   {"format": "bonl-model", "version": 2,
 //    "model": the model's name (kDescription.name: "ARX", "Hammerstein", ...),
 //    "orders": {one integer per order of kDescription.orders: "na": .., "nb": .., ...},
 //    "params": {one entry per block of kDescription.parameters: an array ("b": [b_0..b_nb], ...), or a
-//               number for a one-number block ("c")}}
+//               number for a one-number block ("c")},
+//    "operating_point": {"u0": .., "y0": ..}}
+// Version 1 is version 2 without "operating_point"; it is still read (as the operating point 0, 0).
 // Everything model-specific comes from the model's description (models/model_description.hpp): the
 // keys, their order, the ranges of the orders, which first entries are fixed to 1 (b_0 of the block
 // models, q_1), which values must be >= 0 (c). Version 1 files written before the descriptions existed
@@ -38,8 +40,8 @@
 
 namespace bonl::io {
 
-/// The model file format version this bonl reads and writes.
-inline constexpr int kModelFormatVersion = 1;
+/// The model file format version this bonl writes; it reads this one and every older one.
+inline constexpr int kModelFormatVersion = 2;
 /// Largest order (na, nb, nk, r) a model file may give, the models' own limit (bonl::detail::kMaxOrder);
 /// r1 is further limited to 32 by the model.
 inline constexpr std::int64_t kMaxModelOrder = bonl::detail::kMaxOrder;
@@ -189,10 +191,14 @@ inline std::string read_header(const Json& document) {
          std::to_string(kModelFormatVersion) + " (bonl " + std::to_string(version_major) + "." +
          std::to_string(version_minor) + "." + std::to_string(version_patch) + ")");
   }
-  if (version.get<std::int64_t>() != kModelFormatVersion) {
-    fail("version must be " + std::to_string(kModelFormatVersion) + ", got " + show(version));
+  if (version.get<std::int64_t>() < 1) {
+    fail("version must be between 1 and " + std::to_string(kModelFormatVersion) + ", got " + show(version));
   }
-  require_keys(document, "", {"format", "version", "model", "orders", "params"});
+  if (version.get<std::int64_t>() == 1) {
+    require_keys(document, "", {"format", "version", "model", "orders", "params"});
+  } else {
+    require_keys(document, "", {"format", "version", "model", "orders", "params", "operating_point"});
+  }
   const Json& model = document["model"];
   bool known = false;
   if (model.is_string()) {
@@ -320,6 +326,13 @@ Model model_from_document(const Json& document) {
       }
       model.set_parameter(i, value);
     }
+    if (document.contains("operating_point")) {
+      const Json& point = document["operating_point"];
+      if (!point.is_object()) fail("operating_point must be an object, got " + show(point));
+      require_keys(point, "operating_point", {"u0", "y0"});
+      model.set_operating_point(read_number<double>(point["u0"], "operating_point.u0"),
+                                read_number<double>(point["y0"], "operating_point.y0"));
+    }
     return model;
   });
 }
@@ -336,7 +349,7 @@ auto guard(F&& f) -> decltype(f()) {
 
 }  // namespace detail
 
-/// The model as a bonl model file (format version 1). indent < 0: one line; otherwise pretty-printed
+/// The model as a bonl model file (format version 2). indent < 0: one line; otherwise pretty-printed
 /// with that many spaces per level. Works for every model of bonl::Models, any Scalar, fixed or
 /// dynamic orders.
 template <class Model>
@@ -365,6 +378,10 @@ std::string to_json(const Model& model, int indent = -1) {
     document["model"] = description.name;
     document["orders"] = std::move(orders);
     document["params"] = std::move(params);
+    Json point = Json::object();
+    point["u0"] = model.u0();
+    point["y0"] = model.y0();
+    document["operating_point"] = std::move(point);
     return document.dump(indent);
   });
 }

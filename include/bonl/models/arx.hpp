@@ -78,9 +78,10 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
     detail::assign_checked(m_theta.tail(m_na), a, "a");
   }
 
-  /// As simulate(), but reports divergence by returning false instead of throwing.
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
   template <typename U>
-  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     return detail::free_run(this->linear_block(), u, y, detail::Identity{}, detail::Identity{});
   }
 
@@ -99,7 +100,7 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       m_linear.begin(u, m_phi);
       const Scalar prediction = m_phi.dot(theta);
-      m_linear.end(y);  // the lags are the measured outputs
+      m_linear.end(std::isnan(y) ? prediction : y);  // the lags are the measured outputs
       return {m_phi, y, prediction, prediction, true};
     }
 

@@ -2,6 +2,8 @@
 // Hammerstein model: two-segment input polynomial N1 (eqs. 3-5), then the linear block
 // (eqs. 6-8, b_0 = 1); y = x. Parameters in eq. (19) order: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na.
 
+#include <cmath>
+
 #include "detail/hammerstein_front.hpp"
 #include "detail/model_runs.hpp"
 
@@ -37,9 +39,10 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     this->set_front_parameter(i, value);
   }
 
-  /// As simulate(), but reports divergence by returning false instead of throwing.
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
   template <typename U>
-  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     return this->simulate_front(u, y, this->linear_block(), [](Scalar x) { return x; });
   }
 
@@ -56,7 +59,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_front.pending()) m_front.store_a_posteriori(theta, m_phi);
       const Scalar x = m_front.begin(theta, u, m_phi);
-      if (m_method == KeyTermMethod::EquationError) m_front.store(y);
+      if (m_method == KeyTermMethod::EquationError) m_front.store(std::isnan(y) ? x : y);
       return {m_phi, y, x, x, true};
     }
 

@@ -4,6 +4,7 @@
 // Parameters: eq. (19) front (f, p, b_1..b_nb, a), then q_2..q_r1.
 
 #include <algorithm>
+#include <cmath>
 
 #include "../blocks/output_polynomial.hpp"
 #include "detail/hammerstein_front.hpp"
@@ -55,9 +56,10 @@ class HammersteinWiener
     detail::no_such_parameter(kName, i);
   }
 
-  /// As simulate(), but reports divergence by returning false instead of throwing.
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
   template <typename U>
-  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     const VectorX qv = this->q();
     return this->simulate_front(u, y, this->linear_block(), [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
   }
@@ -80,7 +82,7 @@ class HammersteinWiener
       const Scalar x = m_front.begin(theta, u, m_phi);
       const Scalar prediction = m_output.output(theta, x);
       m_output.regress(x, m_phi);
-      if (m_method == KeyTermMethod::EquationError) m_front.store(m_output.invert(theta, y, x));
+      if (m_method == KeyTermMethod::EquationError) m_front.store(std::isnan(y) ? x : m_output.invert(theta, y, x));
       return {m_phi, y, prediction, x, true};
     }
 

@@ -18,6 +18,8 @@ enum class KeyTermMethod {
   /// From the measured output: x = y (Hammerstein), q^-1(y) (H-W, Wiener), x clipped to
   /// [y - c, y + c] (P-H-W), with w recomputed from the stored u with the theta of the step; the
   /// backlash's gap samples are not informative. Every step uses the theta it is given only.
+  /// A y that is NaN is a sample whose output was not measured: the model's own prediction stands
+  /// in for it, so that the step is one step of the free run (simulate() after an initial past).
   EquationError,
   /// The paper's eqs. (21)-(31): x and w from the model's own run, each stored a posteriori with
   /// the estimate updated since (eq. 24). So step k first stores sample k-1's x and w with the

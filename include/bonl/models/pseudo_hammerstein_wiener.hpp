@@ -70,9 +70,10 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     Front::set_theta(theta);
   }
 
-  /// Free run from rest; false (instead of simulate()'s NumericalError) if it leaves the finite numbers.
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
   template <typename U>
-  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     Backlash<Scalar> play = backlash();
     return this->simulate_front(u, y, this->linear_block(), [&play](Scalar x) { return play.step(x); });
   }
@@ -132,9 +133,9 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
           m_phi[m_last] = g4 - g3;
           informative = g3 + g4 > Scalar(0);
         }
-        m_front.store(std::min(std::max(x, y - c), y + c));
+        m_front.store(std::isnan(y) ? x : std::min(std::max(x, y - c), y + c));
       }
-      m_y_prev = y;
+      m_y_prev = std::isnan(y) ? prediction : y;
       return {m_phi, target, prediction, x, informative};
     }
 

@@ -12,7 +12,8 @@
 
 namespace bonl {
 
-/// The model of y = output_scale * model(u / input_scale). Both scales must be finite and > 0.
+/// The model of y = output_scale * model(u / input_scale), its operating point included. Both scales
+/// must be finite and > 0.
 template <class Model>
 Model rescaled(const Model& model, double input_scale, double output_scale) {
   detail::require(std::isfinite(input_scale) && input_scale > 0.0,
@@ -32,6 +33,7 @@ Model rescaled(const Model& model, double input_scale, double output_scale) {
     }
     out.set_parameter(i, value);
   }
+  out.set_operating_point(model.u0() * input_scale, model.y0() * output_scale);
   return out;
 }
 

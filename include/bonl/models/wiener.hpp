@@ -101,9 +101,10 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     detail::no_such_parameter(kName, i);
   }
 
-  /// As simulate(), but reports divergence by returning false instead of throwing.
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
   template <typename U>
-  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     const VectorX qv = this->q();
     return detail::free_run(this->linear_block(), u, y, detail::Identity{},
                             [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
@@ -135,7 +136,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
       const Scalar prediction = m_output.output(theta, x);
       m_output.regress(x, m_phi);
       if (m_method == KeyTermMethod::EquationError) {
-        m_linear.end(m_output.invert(theta, y, x));
+        m_linear.end(std::isnan(y) ? x : m_output.invert(theta, y, x));
       } else {
         m_pending = true;
       }

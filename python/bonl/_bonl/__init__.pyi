@@ -41,7 +41,7 @@ class ARX:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
         
@@ -51,6 +51,8 @@ class ARX:
             Input sequence.
         y : array_like, shape (n,)
             Measured output; y[k] is used to predict y[k + 1].
+        initial : (u_past, y_past), optional
+            The measured samples just before u and y (None: from rest at the operating point).
         
         Returns
         -------
@@ -63,24 +65,29 @@ class ARX:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
-        Free-run simulation from rest.
+        Free-run simulation, from rest or after a measured past.
         
         Parameters
         ----------
         u : array_like, shape (n,)
             Input sequence.
+        initial : (u_past, y_past), optional
+            The measured samples just before u. They set the model's state (its internal variables are what
+            the measured past says, as predict() takes them); then the model runs on u alone. The
+            benchmarks' state-initialisation window of m samples is
+            ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
         
         Returns
         -------
         numpy.ndarray, shape (n,)
-            The model's output, driven by u alone (past inputs and outputs are zero).
+            The model's output, driven by u alone after the initial state.
         
         Raises
         ------
         ValueError
-            If u is not a finite 1-D array.
+            If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
         bonl.NumericalError
             If the simulation leaves the finite numbers (an unstable model).
         """
@@ -124,6 +131,14 @@ class ARX:
         """
         int: number of identified parameters.
         """
+    @property
+    def operating_point(self) -> tuple[float, float]:
+        """
+        tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
+        """
+    @operating_point.setter
+    def operating_point(self, arg1: typing.Any) -> None:
+        ...
     @property
     def orders(self) -> tuple:
         """
@@ -183,7 +198,7 @@ class Hammerstein:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
         
@@ -193,6 +208,8 @@ class Hammerstein:
             Input sequence.
         y : array_like, shape (n,)
             Measured output; y[k] is used to predict y[k + 1].
+        initial : (u_past, y_past), optional
+            The measured samples just before u and y (None: from rest at the operating point).
         
         Returns
         -------
@@ -205,24 +222,29 @@ class Hammerstein:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
-        Free-run simulation from rest.
+        Free-run simulation, from rest or after a measured past.
         
         Parameters
         ----------
         u : array_like, shape (n,)
             Input sequence.
+        initial : (u_past, y_past), optional
+            The measured samples just before u. They set the model's state (its internal variables are what
+            the measured past says, as predict() takes them); then the model runs on u alone. The
+            benchmarks' state-initialisation window of m samples is
+            ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
         
         Returns
         -------
         numpy.ndarray, shape (n,)
-            The model's output, driven by u alone (past inputs and outputs are zero).
+            The model's output, driven by u alone after the initial state.
         
         Raises
         ------
         ValueError
-            If u is not a finite 1-D array.
+            If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
         bonl.NumericalError
             If the simulation leaves the finite numbers (an unstable model).
         """
@@ -274,6 +296,14 @@ class Hammerstein:
         """
         int: number of identified parameters.
         """
+    @property
+    def operating_point(self) -> tuple[float, float]:
+        """
+        tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
+        """
+    @operating_point.setter
+    def operating_point(self, arg1: typing.Any) -> None:
+        ...
     @property
     def orders(self) -> tuple:
         """
@@ -350,7 +380,7 @@ class HammersteinWiener:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
         
@@ -360,6 +390,8 @@ class HammersteinWiener:
             Input sequence.
         y : array_like, shape (n,)
             Measured output; y[k] is used to predict y[k + 1].
+        initial : (u_past, y_past), optional
+            The measured samples just before u and y (None: from rest at the operating point).
         
         Returns
         -------
@@ -372,24 +404,29 @@ class HammersteinWiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
-        Free-run simulation from rest.
+        Free-run simulation, from rest or after a measured past.
         
         Parameters
         ----------
         u : array_like, shape (n,)
             Input sequence.
+        initial : (u_past, y_past), optional
+            The measured samples just before u. They set the model's state (its internal variables are what
+            the measured past says, as predict() takes them); then the model runs on u alone. The
+            benchmarks' state-initialisation window of m samples is
+            ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
         
         Returns
         -------
         numpy.ndarray, shape (n,)
-            The model's output, driven by u alone (past inputs and outputs are zero).
+            The model's output, driven by u alone after the initial state.
         
         Raises
         ------
         ValueError
-            If u is not a finite 1-D array.
+            If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
         bonl.NumericalError
             If the simulation leaves the finite numbers (an unstable model).
         """
@@ -441,6 +478,14 @@ class HammersteinWiener:
         """
         int: number of identified parameters.
         """
+    @property
+    def operating_point(self) -> tuple[float, float]:
+        """
+        tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
+        """
+    @operating_point.setter
+    def operating_point(self, arg1: typing.Any) -> None:
+        ...
     @property
     def orders(self) -> tuple:
         """
@@ -528,7 +573,7 @@ class PseudoHammersteinWiener:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
         
@@ -538,6 +583,8 @@ class PseudoHammersteinWiener:
             Input sequence.
         y : array_like, shape (n,)
             Measured output; y[k] is used to predict y[k + 1].
+        initial : (u_past, y_past), optional
+            The measured samples just before u and y (None: from rest at the operating point).
         
         Returns
         -------
@@ -550,24 +597,29 @@ class PseudoHammersteinWiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
-        Free-run simulation from rest.
+        Free-run simulation, from rest or after a measured past.
         
         Parameters
         ----------
         u : array_like, shape (n,)
             Input sequence.
+        initial : (u_past, y_past), optional
+            The measured samples just before u. They set the model's state (its internal variables are what
+            the measured past says, as predict() takes them); then the model runs on u alone. The
+            benchmarks' state-initialisation window of m samples is
+            ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
         
         Returns
         -------
         numpy.ndarray, shape (n,)
-            The model's output, driven by u alone (past inputs and outputs are zero).
+            The model's output, driven by u alone after the initial state.
         
         Raises
         ------
         ValueError
-            If u is not a finite 1-D array.
+            If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
         bonl.NumericalError
             If the simulation leaves the finite numbers (an unstable model).
         """
@@ -627,6 +679,14 @@ class PseudoHammersteinWiener:
         """
         int: number of identified parameters.
         """
+    @property
+    def operating_point(self) -> tuple[float, float]:
+        """
+        tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
+        """
+    @operating_point.setter
+    def operating_point(self, arg1: typing.Any) -> None:
+        ...
     @property
     def orders(self) -> tuple:
         """
@@ -697,7 +757,7 @@ class Wiener:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def predict(self, u: typing.Any, y: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
         
@@ -707,6 +767,8 @@ class Wiener:
             Input sequence.
         y : array_like, shape (n,)
             Measured output; y[k] is used to predict y[k + 1].
+        initial : (u_past, y_past), optional
+            The measured samples just before u and y (None: from rest at the operating point).
         
         Returns
         -------
@@ -719,24 +781,29 @@ class Wiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
-        Free-run simulation from rest.
+        Free-run simulation, from rest or after a measured past.
         
         Parameters
         ----------
         u : array_like, shape (n,)
             Input sequence.
+        initial : (u_past, y_past), optional
+            The measured samples just before u. They set the model's state (its internal variables are what
+            the measured past says, as predict() takes them); then the model runs on u alone. The
+            benchmarks' state-initialisation window of m samples is
+            ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
         
         Returns
         -------
         numpy.ndarray, shape (n,)
-            The model's output, driven by u alone (past inputs and outputs are zero).
+            The model's output, driven by u alone after the initial state.
         
         Raises
         ------
         ValueError
-            If u is not a finite 1-D array.
+            If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
         bonl.NumericalError
             If the simulation leaves the finite numbers (an unstable model).
         """
@@ -780,6 +847,14 @@ class Wiener:
         """
         int: number of identified parameters.
         """
+    @property
+    def operating_point(self) -> tuple[float, float]:
+        """
+        tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
+        """
+    @operating_point.setter
+    def operating_point(self, arg1: typing.Any) -> None:
+        ...
     @property
     def orders(self) -> tuple:
         """

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "../../detail/validate.hpp"
@@ -15,7 +16,7 @@
 
 namespace bonl::detail {
 
-/// The free run every model's try_simulate() is: y(k) = output(L(input(u(k)))) with `linear` the
+/// The free run every model's try_simulate_deviations() is: y(k) = output(L(input(u(k)))) with `linear` the
 /// model's linear block at rest, input and output its static maps (identity where it has none).
 /// Returns false as soon as y leaves the finite numbers (an unstable or diverging model).
 template <class Linear, typename U, typename VectorX, class InputMap, class OutputMap>
@@ -48,32 +49,99 @@ typename Model::VectorX simulate_checked(const Model& model, const Eigen::Matrix
   return y;
 }
 
-template <class Model, typename U, typename Y>
-typename Model::VectorX predict_one_step(const Model& model, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) {
-  require_same_length(u, "u", y, "y");
-  require_finite(u, "u");
-  require_finite(y, "y");
-  typename Model::KeyTerms terms(model, KeyTermMethod::EquationError);
-  typename Model::VectorX prediction(u.size());
-  for (Eigen::Index k = 0; k < u.size(); ++k) prediction[k] = terms.step(model.theta(), u[k], y[k]).prediction;
-  return prediction;
+/// The recent past (u_past, y_past) checked: the same length, finite.
+template <typename P, typename Q>
+void require_past(const Eigen::MatrixBase<P>& u_past, const Eigen::MatrixBase<Q>& y_past) {
+  require_same_length(u_past, "u_past", y_past, "y_past");
+  require_finite(u_past, "u_past");
+  require_finite(y_past, "y_past");
 }
 
-/// simulate(), predict() and linear_block() for a model Derived with try_simulate(u, y), KeyTerms,
-/// a(), b(), na(), nb(), nk() and the type Linear.
+/// Runs the model's key terms with the equation-error method's internal-variable estimates over the
+/// measured past, then over (u, y) where y may be NaN (not measured: the model's own output stands in,
+/// a free-run step). Returns the outputs over (u, y) with the operating point added.
+template <class Model, typename P, typename Q, typename U, typename Y>
+typename Model::VectorX run_after_past(const Model& model, const Eigen::MatrixBase<P>& u_past,
+                                       const Eigen::MatrixBase<Q>& y_past, const Eigen::MatrixBase<U>& u,
+                                       const Y& y_at) {
+  using Scalar = typename Model::Scalar;
+  const Scalar u0 = static_cast<Scalar>(model.u0());
+  const Scalar y0 = static_cast<Scalar>(model.y0());
+  typename Model::KeyTerms terms(model, KeyTermMethod::EquationError);
+  for (Eigen::Index k = 0; k < u_past.size(); ++k) terms.step(model.theta(), u_past[k] - u0, y_past[k] - y0);
+  typename Model::VectorX out(u.size());
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    out[k] = terms.step(model.theta(), u[k] - u0, y_at(k) - y0).prediction + y0;
+    if (!std::isfinite(out[k])) {
+      throw NumericalError(std::string("bonl: ") + Model::kName +
+                           " simulation left the finite numbers (an unstable model?)");
+    }
+  }
+  return out;
+}
+
+/// simulate(), predict() and linear_block() for a model Derived with try_simulate_deviations(u, y),
+/// KeyTerms, a(), b(), na(), nb(), nk() and the type Linear; and the model's operating point.
 template <class Derived>
 class ModelRuns {
  public:
-  /// Free-run simulation from rest. Throws NumericalError if the output leaves the finite numbers.
+  /// The operating point: the input u0 and the output y0 at which the model rests. The model's
+  /// blocks map the deviation u - u0 to the deviation y - y0; (0, 0) unless set.
+  double u0() const noexcept { return m_u0; }
+  double y0() const noexcept { return m_y0; }
+  void set_operating_point(double u0, double y0) {
+    require_finite(u0, "u0");
+    require_finite(y0, "y0");
+    m_u0 = u0;
+    m_y0 = y0;
+  }
+
+  /// Free run from rest at the operating point; false (instead of simulate()'s NumericalError) if it
+  /// leaves the finite numbers.
+  template <typename U, typename VectorX>
+  bool try_simulate(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+    using Scalar = typename VectorX::Scalar;
+    if (m_u0 == 0.0 && m_y0 == 0.0) return self().try_simulate_deviations(u, y);
+    const VectorX deviations = u.array() - static_cast<Scalar>(m_u0);
+    const bool ok = self().try_simulate_deviations(deviations, y);
+    y.array() += static_cast<Scalar>(m_y0);
+    return ok && y.allFinite();
+  }
+  /// Free-run simulation from rest (at the operating point). Throws NumericalError if the output
+  /// leaves the finite numbers.
   template <typename U>
   auto simulate(const Eigen::MatrixBase<U>& u) const {
     return simulate_checked(self(), u);
   }
+  /// Free-run simulation of u after the measured recent past (u_past, y_past), which sets the
+  /// model's state: its internal variables are what the measured past says, as predict() takes them.
+  /// With a past as long as the model's memory (its lags) the simulation continues the record exactly
+  /// where the model can be inverted (not inside a backlash's gap). An empty past is rest.
+  /// The benchmarks' state-initialisation window of n samples: simulate(u.tail(N - n), u.head(n), y.head(n)).
+  template <typename U, typename P, typename Q>
+  auto simulate(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<P>& u_past,
+                const Eigen::MatrixBase<Q>& y_past) const {
+    require_finite(u, "u");
+    require_past(u_past, y_past);
+    using Scalar = typename Derived::Scalar;
+    return run_after_past(self(), u_past, y_past, u,
+                          [](Eigen::Index) { return std::numeric_limits<Scalar>::quiet_NaN(); });
+  }
   /// One-step-ahead prediction from the measured u and y: the internal variables are what the
-  /// measured past says (the model's KeyTerms with KeyTermMethod::EquationError).
+  /// measured past says (the model's KeyTerms with KeyTermMethod::EquationError); from rest.
   template <typename U, typename Y>
   auto predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) const {
-    return predict_one_step(self(), u, y);
+    return predict(u, y, u.head(0), y.head(0));
+  }
+  /// The same after the measured recent past (u_past, y_past).
+  template <typename U, typename Y, typename P, typename Q>
+  auto predict(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y, const Eigen::MatrixBase<P>& u_past,
+               const Eigen::MatrixBase<Q>& y_past) const {
+    require_same_length(u, "u", y, "y");
+    require_finite(u, "u");
+    require_finite(y, "y");
+    require_past(u_past, y_past);
+    return run_after_past(self(), u_past, y_past, u, [&y](Eigen::Index k) { return y[k]; });
   }
   /// The linear block B / A with the model's delay.
   auto linear_block() const {
@@ -85,6 +153,9 @@ class ModelRuns {
 
  private:
   const Derived& self() const noexcept { return static_cast<const Derived&>(*this); }
+
+  double m_u0 = 0.0;
+  double m_y0 = 0.0;
 };
 
 }  // namespace bonl::detail

@@ -1,0 +1,100 @@
+// The operating point (u0, y0) and the initial state from a measured past (models/detail/model_runs.hpp).
+// Oracles:
+// - a model with an operating point is the same model on the deviations: simulate(u) = y0 + the
+//   zero-point model's simulate(u - u0), bit for bit; so for predict, the estimator and identify;
+// - with a measured past at least as long as the model's memory, the simulation after it continues
+//   the noise-free record the model itself produced: equal to its free run from rest over the whole
+//   record (to round-off); an empty past is rest.
+
+#include "test_support.hpp"
+
+using namespace bonl_test;
+
+TEMPLATE_LIST_TEST_CASE("a model with an operating point is the same model on the deviations", "[operating_point]",
+                        bonl::Models) {
+  const TestType at_zero = known_system<TestType>("small");
+  TestType model = at_zero;
+  model.set_operating_point(2.5, -1.25);
+  const Eigen::VectorXd u = (bonl::signals::random_levels(400, 5, 1.0, 31).array() + 2.5).matrix();
+  const Eigen::VectorXd deviations = (u.array() - 2.5).matrix();
+  CHECK(model.simulate(u) == (at_zero.simulate(deviations).array() - 1.25).matrix());
+  const Eigen::VectorXd y = model.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 32);
+  const Eigen::VectorXd y_deviations = (y.array() + 1.25).matrix();
+  CHECK(model.predict(u, y) == (at_zero.predict(deviations, y_deviations).array() - 1.25).matrix());
+
+  // The estimator sees the deviations; its model keeps the operating point.
+  bonl::Estimator<TestType> with_point(model), without(at_zero);
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    with_point.update(u[k], y[k]);
+    without.update(deviations[k], y_deviations[k]);
+  }
+  CHECK(with_point.theta() == without.theta());
+  CHECK(with_point.last_prediction() == without.last_prediction() - 1.25);
+  CHECK(with_point.model().u0() == 2.5);
+  CHECK(with_point.model().y0() == -1.25);
+
+  // identify: the same as identifying the deviations, with the structure's operating point.
+  const TestType identified = bonl::identify(model, u, y);
+  const TestType identified_at_zero = bonl::identify(at_zero, deviations, y_deviations);
+  CHECK(identified.theta() == identified_at_zero.theta());
+  CHECK(identified.u0() == 2.5);
+  CHECK(identified.y0() == -1.25);
+
+  CHECK_THROWS_WITH(model.set_operating_point(std::nan(""), 0.0), Catch::Matchers::Contains("u0"));
+  CHECK(model.u0() == 2.5);  // unchanged
+}
+
+TEMPLATE_LIST_TEST_CASE("after a measured past the simulation continues the record", "[operating_point]",
+                        bonl::Models) {
+  TestType model = known_system<TestType>("small");
+  model.set_operating_point(0.5, 3.0);
+  const Eigen::VectorXd u = (bonl::signals::random_levels(600, 5, 1.0, 33).array() + 0.5).matrix();
+  const Eigen::VectorXd y = model.simulate(u);
+  const Eigen::Index window = 20;  // longer than the model's memory (na = 2, nb + nk = 3)
+  const Eigen::VectorXd continued = model.simulate(u.tail(u.size() - window), u.head(window), y.head(window));
+  const Eigen::VectorXd expected = y.tail(u.size() - window);
+  if constexpr (has_backlash<TestType>()) {
+    // Inside the backlash's gap the measured output does not say where x is: the past sets the
+    // output's memory exactly and x to within the gap, so the continuation stays within c of the record.
+    CHECK((continued - expected).cwiseAbs().maxCoeff() <= model.c() + 1e-12);
+  } else {
+    CHECK((continued - expected).cwiseAbs().maxCoeff() <= 1e-10 * expected.cwiseAbs().maxCoeff());
+  }
+  // An empty past is rest.
+  const Eigen::VectorXd none(0);
+  CHECK((model.simulate(u, none, none) - y).cwiseAbs().maxCoeff() <= 1e-10 * y.cwiseAbs().maxCoeff());
+  // predict after a past is predict over the whole record, from the window on.
+  const Eigen::VectorXd predicted = model.predict(u, y);
+  const Eigen::VectorXd predicted_after =
+      model.predict(u.tail(u.size() - window), y.tail(u.size() - window), u.head(window), y.head(window));
+  CHECK((predicted_after - predicted.tail(u.size() - window)).cwiseAbs().maxCoeff() <= 1e-12);
+}
+
+TEST_CASE("a record that does not start at rest simulates far better after its first samples", "[operating_point]") {
+  const bonl::Hammersteind model = known_system<bonl::Hammersteind>("small");
+  const Eigen::VectorXd u = bonl::signals::random_levels(1500, 5, 1.0, 34);
+  const Eigen::VectorXd y = model.simulate(u);
+  // The record starts at sample 1000, mid-way: the system is not at rest there.
+  const Eigen::VectorXd u_record = u.tail(500), y_record = y.tail(500);
+  const Eigen::Index window = 10;
+  const Eigen::VectorXd from_rest = model.simulate(u_record);
+  const Eigen::VectorXd initialised = model.simulate(u_record.tail(490), u_record.head(window), y_record.head(window));
+  const double rest_error = (from_rest.tail(490) - y_record.tail(490)).norm();
+  const double initialised_error = (initialised - y_record.tail(490)).norm();
+  CHECK(rest_error > 1e-3);
+  CHECK(initialised_error <= 1e-10 * rest_error);
+}
+
+TEST_CASE("a bad past is refused with a message naming it", "[operating_point][bad_input]") {
+  const bonl::ARXd model = known_system<bonl::ARXd>("small");
+  const Eigen::VectorXd u = bonl::signals::random_levels(50, 5, 1.0, 35);
+  Eigen::VectorXd y_past = Eigen::VectorXd::Zero(4);
+  CHECK_THROWS_WITH(model.simulate(u, Eigen::VectorXd(Eigen::VectorXd::Zero(5)), y_past),
+                    Catch::Matchers::Contains("u_past and y_past must have the same length, got 5 and 4"));
+  y_past[2] = std::nan("");
+  CHECK_THROWS_WITH(model.simulate(u, Eigen::VectorXd(Eigen::VectorXd::Zero(4)), y_past),
+                    Catch::Matchers::Contains("y_past has a non-finite value at index 2"));
+  CHECK_THROWS_WITH(model.predict(u, Eigen::VectorXd(u.head(10)), Eigen::VectorXd(Eigen::VectorXd::Zero(4)),
+                                  Eigen::VectorXd(Eigen::VectorXd::Zero(4))),
+                    Catch::Matchers::Contains("u and y must have the same length"));
+}

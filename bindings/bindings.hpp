@@ -4,10 +4,12 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 namespace bonl_python {
 namespace py = pybind11;
 
-void bind_models(py::module_& m);      // models.cpp: one class per model of bonl::Models, and MODELS
+void bind_models(py::module_& m);      // models.cpp: one class per model of bonl::Models, MODELS, the warnings
 void bind_estimation(py::module_& m);  // estimation.cpp: identify, Estimator, UpdateStatus
 void bind_metrics(py::module_& m);     // metrics.cpp: submodule metrics (mse, rmse, nrmse, nrmse_fit)
 void bind_io(py::module_& m);          // io.cpp: to_json on the models, load_model
@@ -18,5 +20,12 @@ void bind_experiment(py::module_& m);  // experiment.cpp: submodule experiment (
 void bind_plant_parameters(py::module_& plant);  // plant_parameters.cpp: Parameters, default/small_parameters
 void bind_excitation(py::module_& plant);        // excitation.cpp: Command, submodule excitation
 void bind_plant_simulate(py::module_& plant);    // plant_simulate.cpp: simulate, initial_state, derivative
+
+/// The warnings bonl gives (models.cpp creates them): a model simulated on inputs outside the range it
+/// was identified on; an identified model that is unstable or barely damped.
+py::handle extrapolation_warning();
+py::handle stability_warning();
+/// Issues a warning of `category` from the calling Python code; raises if a filter makes it an error.
+void warn(py::handle category, const std::string& message);
 
 }  // namespace bonl_python

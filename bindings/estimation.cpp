@@ -135,7 +135,14 @@ normalise : bool, default True
 Returns
 -------
 model
-    A new model of the same type with the identified parameters.
+    A new model of the same type with the identified parameters, the structure's operating point and
+    the records' input range (Model.input_range).
+
+Warns
+-----
+bonl.StabilityWarning
+    The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+    where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
 
 Raises
 ------
@@ -174,18 +181,28 @@ void def_identify(py::module_& m) {
         options.passes = passes;
         options.refine_iterations = refine_iterations;
         options.normalise = normalise;
-        if (!y.is_none()) {
-          const Eigen::VectorXd input = to_vector(u, "u");
-          const Eigen::VectorXd output = to_vector(y, "y");
-          py::gil_scoped_release release;
-          return bonl::identify(model, input, output, options);
-        }
         std::vector<Eigen::VectorXd> inputs, outputs;
-        read_records(u, inputs, outputs);
+        if (!y.is_none()) {
+          inputs.push_back(to_vector(u, "u"));
+          outputs.push_back(to_vector(y, "y"));
+          bonl::detail::require_record(inputs[0], outputs[0], model.num_params());
+        } else {
+          read_records(u, inputs, outputs);
+        }
         bonl::Records<double> records;
         for (std::size_t i = 0; i < inputs.size(); ++i) records.emplace_back(inputs[i], outputs[i]);
-        py::gil_scoped_release release;
-        return bonl::identify(model, records, options);
+        Model identified = [&] {
+          py::gil_scoped_release release;
+          return bonl::identify(model, records, options);
+        }();
+        const double radius = bonl::pole_radius(identified);
+        if (radius >= 0.999) {
+          warn(stability_warning(), std::string("the identified ") + Model::kName + " model is " +
+                                        (radius >= 1.0 ? "unstable" : "barely damped") +
+                                        ": its largest pole has magnitude " + bonl::detail::format_number(radius) +
+                                        " (Model.pole_radius); its free run may drift or diverge");
+        }
+        return identified;
       },
       py::arg("model"), py::arg("u"), py::arg("y") = py::none(), py::kw_only(), py::arg("passes") = 1,
       py::arg("method") = "output_error", py::arg("forgetting") = py::none(), py::arg("p0") = py::none(),

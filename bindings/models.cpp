@@ -59,6 +59,29 @@ numpy.ndarray, shape (n,)
     measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
     backlash memory is the measured y[k - 1]).)doc";
 
+py::handle g_extrapolation_warning;  // created in bind_models, kept for the module's life
+py::handle g_stability_warning;
+
+/// The ExtrapolationWarning for simulate() on inputs outside the model's input range, if any are.
+template <class Model>
+void warn_if_extrapolating(const Model& model, const Eigen::VectorXd& u) {
+  const Eigen::Index outside = model.extrapolated_samples(u);
+  if (outside == 0) return;
+  warn(extrapolation_warning(),
+       std::to_string(outside) + " of " + std::to_string(u.size()) + " samples of u lie outside the input range [" +
+           bonl::detail::format_number(model.input_min()) + ", " + bonl::detail::format_number(model.input_max()) +
+           "] the model was identified on (u from " + bonl::detail::format_number(u.minCoeff()) + " to " +
+           bonl::detail::format_number(u.maxCoeff()) + "): its output there is an extrapolation");
+}
+
+/// A pair of real numbers (first, second), or a ValueError naming `what` and its entries.
+std::pair<double, double> read_pair(const py::object& value, const char* what, const char* first, const char* second) {
+  bonl::detail::require(!py::isinstance<py::str>(value) && py::isinstance<py::sequence>(value) && py::len(value) == 2,
+                        std::string(what) + " must be a pair (" + first + ", " + second + "), got " + type_name(value));
+  const py::sequence pair = value.cast<py::sequence>();
+  return {to_scalar(pair[0], first), to_scalar(pair[1], second)};
+}
+
 /// initial=(u_past, y_past): the measured recent past, or None (rest): (u_past, y_past) as vectors.
 std::pair<Eigen::VectorXd, Eigen::VectorXd> read_initial(const py::object& initial) {
   if (initial.is_none()) return {Eigen::VectorXd(0), Eigen::VectorXd(0)};
@@ -78,6 +101,7 @@ void bind_common(py::class_<Model>& cls) {
          [](const Model& model, const py::object& u, const py::object& initial) {
            const Eigen::VectorXd input = to_vector(u, "u");
            const auto [u_past, y_past] = read_initial(initial);
+           warn_if_extrapolating(model, input);
            py::gil_scoped_release release;
            if (u_past.size() == 0 && y_past.size() == 0) return Eigen::VectorXd(model.simulate(input));
            return Eigen::VectorXd(model.simulate(input, u_past, y_past));
@@ -96,14 +120,19 @@ void bind_common(py::class_<Model>& cls) {
       .def_property(
           "operating_point", [](const Model& model) { return py::make_tuple(model.u0(), model.y0()); },
           [](Model& model, const py::object& point) {
-            bonl::detail::require(!py::isinstance<py::str>(point) && py::isinstance<py::sequence>(point) &&
-                                      py::len(point) == 2,
-                                  "operating_point must be a pair (u0, y0), got " + type_name(point));
-            const py::sequence pair = point.cast<py::sequence>();
-            model.set_operating_point(to_scalar(pair[0], "u0"), to_scalar(pair[1], "y0"));
+            const auto [u0, y0] = read_pair(point, "operating_point", "u0", "y0");
+            model.set_operating_point(u0, y0);
           },
           "tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. "
           "(0, 0) unless set. identify() keeps the structure's.")
+      .def_property(
+          "input_range", [](const Model& model) { return py::make_tuple(model.input_min(), model.input_max()); },
+          [](Model& model, const py::object& range) {
+            const auto [min, max] = read_pair(range, "input_range", "min", "max");
+            model.set_input_range(min, max);
+          },
+          "tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) "
+          "unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.")
       .def_property(
           "theta", [](const Model& model) { return Eigen::VectorXd(model.theta()); },
           [](Model& model, const py::object& theta) { model.set_theta(to_vector(theta, "theta")); },
@@ -233,8 +262,27 @@ void bind_model(py::module_& m) {
 
 }  // namespace
 
+py::handle extrapolation_warning() { return g_extrapolation_warning; }
+py::handle stability_warning() { return g_stability_warning; }
+
+void warn(py::handle category, const std::string& message) {
+  if (PyErr_WarnEx(category.ptr(), message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 void bind_models(py::module_& m) {
   py::register_exception<bonl::NumericalError>(m, "NumericalError", PyExc_ArithmeticError);
+  // Released never: the classes live as long as the interpreter.
+  g_extrapolation_warning = PyErr_NewExceptionWithDoc(
+      "bonl.ExtrapolationWarning",
+      "A model was simulated on inputs outside the range it was identified on (Model.input_range).",
+      PyExc_UserWarning, nullptr);
+  g_stability_warning = PyErr_NewExceptionWithDoc(
+      "bonl.StabilityWarning",
+      "identify() returned a model whose linear block is unstable or barely damped (Model.pole_radius >= 0.999).",
+      PyExc_UserWarning, nullptr);
+  if (!g_extrapolation_warning || !g_stability_warning) throw py::error_already_set();
+  m.attr("ExtrapolationWarning") = g_extrapolation_warning;
+  m.attr("StabilityWarning") = g_stability_warning;
   py::list classes;
   bonl::for_each_model(bonl::Models{}, [&](auto tag) {
     using Model = typename decltype(tag)::type;

@@ -32,6 +32,7 @@ import math
 import os
 import sys
 import time
+import warnings
 from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -203,19 +204,27 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
     own = executor is None
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) if own else executor
     bar = _progress(len(structures), progress)
-    try:
-        futures = [pool.submit(_fit, s, records, criterion, validation_fraction, identify_options) for s in structures]
-        index = {future: i for i, future in enumerate(futures)}
-        rows: List[Optional[Candidate]] = [None] * len(futures)
-        for future in concurrent.futures.as_completed(futures):
-            rows[index[future]] = future.result()
+    # Candidates are judged by their scores, not by warnings: the held-out part may leave the fitted
+    # part's input range, and poor candidates may be barely damped. The filters are set here, in the
+    # calling thread, for the local workers (warnings.catch_warnings is not thread-safe); the refitted
+    # best model warns as identify() does.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", _bonl.ExtrapolationWarning)
+        warnings.simplefilter("ignore", _bonl.StabilityWarning)
+        try:
+            futures = [pool.submit(_fit, s, records, criterion, validation_fraction, identify_options)
+                       for s in structures]
+            index = {future: i for i, future in enumerate(futures)}
+            rows: List[Optional[Candidate]] = [None] * len(futures)
+            for future in concurrent.futures.as_completed(futures):
+                rows[index[future]] = future.result()
+                if bar is not None:
+                    bar.update(1)
+        finally:
+            if own:
+                pool.shutdown()
             if bar is not None:
-                bar.update(1)
-    finally:
-        if bar is not None:
-            bar.close()
-        if own:
-            pool.shutdown()
+                bar.close()
     # Best first; ties (and failures, all inf) keep the candidates' order.
     order = sorted(range(len(rows)), key=lambda i: rows[i].score)
     table = [rows[i] for i in order]

@@ -172,12 +172,13 @@ TEST_CASE("the format, pinned: exact text of small models", "[io]") {
         R"({"format":"bonl-model","version":2,"model":"HammersteinWiener",)"
         R"("orders":{"na":1,"nb":1,"nk":0,"r":1,"r1":2},)"
         R"("params":{"b":[1.0,0.5],"a":[-0.5],"f":[0.5,-0.25],"p":[0.0,0.125],"q":[1.0,0.1]},)"
-        R"("operating_point":{"u0":0.0,"y0":0.0}})");
+        R"("operating_point":{"u0":0.0,"y0":0.0},"input_range":[null,null]})");
 
   bonl::ARX<double, 1, 0> arx(1, 0, 3);
   arx.set_b(vec({0.2}));
   arx.set_a(vec({-0.9}));
   arx.set_operating_point(2.5, -0.125);
+  arx.set_input_range(-1.5, 4.0);
   CHECK(bonl::io::to_json(arx, 2) ==
         "{\n"
         "  \"format\": \"bonl-model\",\n"
@@ -199,7 +200,11 @@ TEST_CASE("the format, pinned: exact text of small models", "[io]") {
         "  \"operating_point\": {\n"
         "    \"u0\": 2.5,\n"
         "    \"y0\": -0.125\n"
-        "  }\n"
+        "  },\n"
+        "  \"input_range\": [\n"
+        "    -1.5,\n"
+        "    4.0\n"
+        "  ]\n"
         "}");
 
   bonl::PseudoHammersteinWienerd phw(1, 0, 1, 1);
@@ -211,14 +216,15 @@ TEST_CASE("the format, pinned: exact text of small models", "[io]") {
         R"({"format":"bonl-model","version":2,"model":"PseudoHammersteinWiener",)"
         R"("orders":{"na":1,"nb":0,"nk":1,"r":1},)"
         R"("params":{"b":[1.0],"a":[-0.5],"f":[0.0,2.0],"p":[0.0,-1.0],"c":0.25},)"
-        R"("operating_point":{"u0":0.0,"y0":0.0}})");
+        R"("operating_point":{"u0":0.0,"y0":0.0},"input_range":[null,null]})");
 
   bonl::Hammersteind h(1, 0, 0, 1);
   h.set_f(vec({0.0, 1.0}));
   h.set_a(vec({0.5}));
   CHECK(bonl::io::to_json(h) ==
         R"({"format":"bonl-model","version":2,"model":"Hammerstein","orders":{"na":1,"nb":0,"nk":0,"r":1},)"
-        R"("params":{"b":[1.0],"a":[0.5],"f":[0.0,1.0],"p":[0.0,0.0]},"operating_point":{"u0":0.0,"y0":0.0}})");
+        R"("params":{"b":[1.0],"a":[0.5],"f":[0.0,1.0],"p":[0.0,0.0]},"operating_point":{"u0":0.0,"y0":0.0},)"
+        R"("input_range":[null,null]})");
 }
 
 TEST_CASE("version 1 files, written before the operating point, still load, at the operating point (0, 0)", "[io]") {

@@ -40,10 +40,11 @@ def test_version_1_files_load_at_operating_point_zero(known):
     """Files written before the operating point (version 1) still load; the known systems are such files."""
     name, model = known
     document = json.loads(model.to_json())
-    del document["operating_point"]
+    del document["operating_point"], document["input_range"]
     document["version"] = 1
     loaded = bonl.load_model(json.dumps(document))
     assert loaded.operating_point == (0.0, 0.0)
+    assert loaded.input_range == (-np.inf, np.inf)
     np.testing.assert_array_equal(loaded.theta, model.theta)
 
 

@@ -4,6 +4,7 @@
 // result by minimising the free-run simulation error.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -110,21 +111,11 @@ Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u
   return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options);
 }
 
-/// Identifies the parameters of `structure` (its orders and its operating point; its parameter values
-/// are not used) from records of input u and measured output y (one record or several, each from rest
-/// at the operating point). The result has the structure's operating point.
-/// - Method::Paper: the recursive estimator of eqs. (21)-(31), `passes` passes.
-/// - Method::OutputError (the default) and Method::EquationError: that recursive estimator,
-///   `passes` passes; then both its estimate and the paper method's are refined by
-///   Levenberg-Marquardt on the free-run simulation error over the records, and the one that
-///   simulates them better is returned. ARX under Method::EquationError is least squares and
-///   keeps that estimate (that is what an ARX model is).
-/// Where it refines, all of it runs on the data in identify's own units (IdentifyOptions::normalise),
-/// and the model comes back in the data's units. Where it does not, the result is what
-/// Estimator::update gives over the records, in the data's units.
+namespace detail {
+/// identify() without the input range.
 template <class Model>
-Model identify(const Model& structure, const Records<typename Model::Scalar>& records,
-               const IdentifyOptions& options = {}) {
+Model identify_records(const Model& structure, const Records<typename Model::Scalar>& records,
+                       const IdentifyOptions& options) {
   options.validate();
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   detail::require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
@@ -140,7 +131,7 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
                                                                    structure.y0());
     Model at_zero = structure;
     at_zero.set_operating_point(0.0, 0.0);
-    Model model = identify(at_zero, deviations.views, options);
+    Model model = identify_records(at_zero, deviations.views, options);
     model.set_operating_point(structure.u0(), structure.y0());
     return model;
   }
@@ -151,8 +142,8 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
       IdentifyOptions in_scale = options;
       in_scale.normalise = false;
       in_scale.c0 = options.c0 / scale.y;
-      return rescaled(identify(rescaled(structure, 1.0 / scale.u, 1.0 / scale.y), scaled.views, in_scale), scale.u,
-                      scale.y);
+      return rescaled(identify_records(rescaled(structure, 1.0 / scale.u, 1.0 / scale.y), scaled.views, in_scale),
+                      scale.u, scale.y);
     }
   }
   // Two starts for the refinement: the method's recursive estimate and the paper method's (with the
@@ -172,6 +163,33 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
   }
   if (starts.empty()) throw NumericalError("bonl: identification failed from both starts: " + failures);
   return refine_output_error(starts, records, options.refine_iterations);
+}
+}  // namespace detail
+
+/// Identifies the parameters of `structure` (its orders and its operating point; its parameter values
+/// are not used) from records of input u and measured output y (one record or several, each from rest
+/// at the operating point). The result has the structure's operating point, and the range of the
+/// records' inputs as its input range (extrapolated_samples()).
+/// - Method::Paper: the recursive estimator of eqs. (21)-(31), `passes` passes.
+/// - Method::OutputError (the default) and Method::EquationError: that recursive estimator,
+///   `passes` passes; then both its estimate and the paper method's are refined by
+///   Levenberg-Marquardt on the free-run simulation error over the records, and the one that
+///   simulates them better is returned. ARX under Method::EquationError is least squares and
+///   keeps that estimate (that is what an ARX model is).
+/// Where it refines, all of it runs on the data in identify's own units (IdentifyOptions::normalise),
+/// and the model comes back in the data's units. Where it does not, the result is what
+/// Estimator::update gives over the records, in the data's units.
+template <class Model>
+Model identify(const Model& structure, const Records<typename Model::Scalar>& records,
+               const IdentifyOptions& options = {}) {
+  Model model = detail::identify_records(structure, records, options);
+  double min = std::numeric_limits<double>::infinity(), max = -min;
+  for (const auto& record : records) {
+    min = std::min(min, static_cast<double>(record.u.minCoeff()));
+    max = std::max(max, static_cast<double>(record.u.maxCoeff()));
+  }
+  model.set_input_range(min, max);
+  return model;
 }
 
 /// The same on one record (u, y).

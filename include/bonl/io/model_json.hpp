@@ -8,8 +8,10 @@
 //    "orders": {one integer per order of kDescription.orders: "na": .., "nb": .., ...},
 //    "params": {one entry per block of kDescription.parameters: an array ("b": [b_0..b_nb], ...), or a
 //               number for a one-number block ("c")},
-//    "operating_point": {"u0": .., "y0": ..}}
-// Version 1 is version 2 without "operating_point"; it is still read (as the operating point 0, 0).
+//    "operating_point": {"u0": .., "y0": ..},
+//    "input_range": [min, max] (the inputs the model was identified on; null for an unbounded end)}
+// Version 1 is version 2 without "operating_point" and "input_range"; it is still read (as the
+// operating point 0, 0 and the whole line).
 // Everything model-specific comes from the model's description (models/model_description.hpp): the
 // keys, their order, the ranges of the orders, which first entries are fixed to 1 (b_0 of the block
 // models, q_1), which values must be >= 0 (c). Version 1 files written before the descriptions existed
@@ -197,7 +199,7 @@ inline std::string read_header(const Json& document) {
   if (version.get<std::int64_t>() == 1) {
     require_keys(document, "", {"format", "version", "model", "orders", "params"});
   } else {
-    require_keys(document, "", {"format", "version", "model", "orders", "params", "operating_point"});
+    require_keys(document, "", {"format", "version", "model", "orders", "params", "operating_point", "input_range"});
   }
   const Json& model = document["model"];
   bool known = false;
@@ -333,6 +335,17 @@ Model model_from_document(const Json& document) {
       model.set_operating_point(read_number<double>(point["u0"], "operating_point.u0"),
                                 read_number<double>(point["y0"], "operating_point.y0"));
     }
+    if (document.contains("input_range")) {
+      const Json& range = document["input_range"];
+      if (!range.is_array() || range.size() != 2) {
+        fail("input_range must be an array [min, max] (null for an unbounded end), got " + show(range));
+      }
+      const double infinity = std::numeric_limits<double>::infinity();
+      const double min = range[0].is_null() ? -infinity : read_number<double>(range[0], "input_range[0]");
+      const double max = range[1].is_null() ? infinity : read_number<double>(range[1], "input_range[1]");
+      if (!(min <= max)) fail("input_range must have min <= max, got " + show(range));
+      model.set_input_range(min, max);
+    }
     return model;
   });
 }
@@ -382,6 +395,10 @@ std::string to_json(const Model& model, int indent = -1) {
     point["u0"] = model.u0();
     point["y0"] = model.y0();
     document["operating_point"] = std::move(point);
+    Json range = Json::array();
+    range.push_back(std::isfinite(model.input_min()) ? Json(model.input_min()) : Json(nullptr));
+    range.push_back(std::isfinite(model.input_max()) ? Json(model.input_max()) : Json(nullptr));
+    document["input_range"] = std::move(range);
     return document.dump(indent);
   });
 }

@@ -12,7 +12,7 @@
 
 namespace bonl {
 
-/// The model of y = output_scale * model(u / input_scale), its operating point included. Both scales
+/// The model of y = output_scale * model(u / input_scale), its operating point and input range included. Both scales
 /// must be finite and > 0.
 template <class Model>
 Model rescaled(const Model& model, double input_scale, double output_scale) {
@@ -34,6 +34,7 @@ Model rescaled(const Model& model, double input_scale, double output_scale) {
     out.set_parameter(i, value);
   }
   out.set_operating_point(model.u0() * input_scale, model.y0() * output_scale);
+  out.set_input_range(model.input_min() * input_scale, model.input_max() * input_scale);
   return out;
 }
 

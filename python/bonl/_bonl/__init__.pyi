@@ -2,13 +2,15 @@
 bonl: identification of block-oriented nonlinear models (C++ core).
 """
 from __future__ import annotations
+from bonl import ExtrapolationWarning
+from bonl import StabilityWarning
 import numpy
 import numpy.typing
 import typing
 from . import metrics
 from . import plant
 from . import experiment
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'UpdateStatus', 'Wiener', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateStatus', 'Wiener', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     pass
 class ARX:
@@ -110,6 +112,14 @@ class ARX:
         """
     @b.setter
     def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def input_range(self) -> tuple[float, float]:
+        """
+        tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
+        """
+    @input_range.setter
+    def input_range(self, arg1: typing.Any) -> None:
         ...
     @property
     def na(self) -> int:
@@ -275,6 +285,14 @@ class Hammerstein:
         """
     @f.setter
     def f(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def input_range(self) -> tuple[float, float]:
+        """
+        tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
+        """
+    @input_range.setter
+    def input_range(self, arg1: typing.Any) -> None:
         ...
     @property
     def na(self) -> int:
@@ -457,6 +475,14 @@ class HammersteinWiener:
         """
     @f.setter
     def f(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def input_range(self) -> tuple[float, float]:
+        """
+        tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
+        """
+    @input_range.setter
+    def input_range(self, arg1: typing.Any) -> None:
         ...
     @property
     def na(self) -> int:
@@ -660,6 +686,14 @@ class PseudoHammersteinWiener:
     def f(self, arg1: typing.Any) -> None:
         ...
     @property
+    def input_range(self) -> tuple[float, float]:
+        """
+        tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
+        """
+    @input_range.setter
+    def input_range(self, arg1: typing.Any) -> None:
+        ...
+    @property
     def na(self) -> int:
         """
         int: poles of the linear block (na >= 1).
@@ -826,6 +860,14 @@ class Wiener:
         """
     @b.setter
     def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def input_range(self) -> tuple[float, float]:
+        """
+        tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
+        """
+    @input_range.setter
+    def input_range(self, arg1: typing.Any) -> None:
         ...
     @property
     def na(self) -> int:
@@ -1163,7 +1205,14 @@ def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.
     Returns
     -------
     model
-        A new model of the same type with the identified parameters.
+        A new model of the same type with the identified parameters, the structure's operating point and
+        the records' input range (Model.input_range).
+    
+    Warns
+    -----
+    bonl.StabilityWarning
+        The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+        where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
     
     Raises
     ------
@@ -1212,7 +1261,14 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes:
     Returns
     -------
     model
-        A new model of the same type with the identified parameters.
+        A new model of the same type with the identified parameters, the structure's operating point and
+        the records' input range (Model.input_range).
+    
+    Warns
+    -----
+    bonl.StabilityWarning
+        The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+        where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
     
     Raises
     ------
@@ -1261,7 +1317,14 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, p
     Returns
     -------
     model
-        A new model of the same type with the identified parameters.
+        A new model of the same type with the identified parameters, the structure's operating point and
+        the records' input range (Model.input_range).
+    
+    Warns
+    -----
+    bonl.StabilityWarning
+        The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+        where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
     
     Raises
     ------
@@ -1310,7 +1373,14 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None
     Returns
     -------
     model
-        A new model of the same type with the identified parameters.
+        A new model of the same type with the identified parameters, the structure's operating point and
+        the records' input range (Model.input_range).
+    
+    Warns
+    -----
+    bonl.StabilityWarning
+        The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+        where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
     
     Raises
     ------
@@ -1359,7 +1429,14 @@ def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typi
     Returns
     -------
     model
-        A new model of the same type with the identified parameters.
+        A new model of the same type with the identified parameters, the structure's operating point and
+        the records' input range (Model.input_range).
+    
+    Warns
+    -----
+    bonl.StabilityWarning
+        The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+        where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
     
     Raises
     ------

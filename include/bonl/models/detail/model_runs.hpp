@@ -96,6 +96,28 @@ class ModelRuns {
     m_y0 = y0;
   }
 
+  /// The inputs the model was identified on, [input_min(), input_max()] (identify() records them);
+  /// outside them the model extrapolates. The whole line (-inf, inf) unless set.
+  double input_min() const noexcept { return m_input_min; }
+  double input_max() const noexcept { return m_input_max; }
+  void set_input_range(double min, double max) {
+    require(!std::isnan(min) && !std::isnan(max) && min <= max,
+            "the input range must be min <= max, got [" + format_number(min) + ", " + format_number(max) + "]");
+    m_input_min = min;
+    m_input_max = max;
+  }
+  /// How many samples of u lie outside the input range: 0 where the model is used on inputs like
+  /// those it was identified on; otherwise its output there is an extrapolation.
+  template <typename U>
+  Eigen::Index extrapolated_samples(const Eigen::MatrixBase<U>& u) const {
+    Eigen::Index outside = 0;
+    for (Eigen::Index k = 0; k < u.size(); ++k) {
+      const double value = static_cast<double>(u[k]);
+      outside += (value < m_input_min || value > m_input_max) ? 1 : 0;
+    }
+    return outside;
+  }
+
   /// Free run from rest at the operating point; false (instead of simulate()'s NumericalError) if it
   /// leaves the finite numbers.
   template <typename U, typename VectorX>
@@ -156,6 +178,8 @@ class ModelRuns {
 
   double m_u0 = 0.0;
   double m_y0 = 0.0;
+  double m_input_min = -std::numeric_limits<double>::infinity();
+  double m_input_max = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace bonl::detail

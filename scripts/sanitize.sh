@@ -19,4 +19,4 @@ cmake --build build/asan -j2
 
 step "ctest under ASan + UBSan"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir build/asan --output-on-failure --no-tests=error
+  ctest --test-dir build/asan --output-on-failure --no-tests=error -j2

@@ -9,3 +9,4 @@
 #include "estimator/record_view.hpp"
 #include "estimator/recursive_estimator.hpp"
 #include "estimator/rls.hpp"
+#include "estimator/select.hpp"

@@ -1,5 +1,6 @@
 """Shared fixtures: the known systems (tests/data/known_systems.json, as the C++ tests), fixed seeds."""
 
+import importlib.util
 import json
 import pathlib
 
@@ -9,6 +10,15 @@ import pytest
 import bonl
 
 KNOWN_SYSTEMS = pathlib.Path(__file__).resolve().parents[1] / "data" / "known_systems.json"
+MEASURED_DATA_EXAMPLE = pathlib.Path(__file__).resolve().parents[2] / "examples" / "measured_data" / "measured_data.py"
+
+
+def load_measured_data_example():
+    """examples/measured_data/measured_data.py as a module (it is a script, not part of the package)."""
+    spec = importlib.util.spec_from_file_location("measured_data_example", MEASURED_DATA_EXAMPLE)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 def known_models(set_name="paper_orders"):

@@ -9,20 +9,13 @@ import numpy as np
 import pytest
 
 import bonl
+from conftest import load_measured_data_example
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-EXAMPLE = ROOT / "examples" / "measured_data" / "measured_data.py"
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
-def load_example():
-    spec = importlib.util.spec_from_file_location("measured_data_example", EXAMPLE)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-md = load_example()
+md = load_measured_data_example()
 
 
 @pytest.fixture(scope="module")

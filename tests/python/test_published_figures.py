@@ -8,6 +8,7 @@ import pathlib
 import pytest
 
 import bonl
+from conftest import load_measured_data_example
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -53,11 +54,7 @@ def test_the_measured_data_give_their_committed_figures():
     """docs/results/measured_data.json (scripts/measured_data.sh) holds the structure chosen for each
     model on each data set; identified again on the estimation data, each gives its committed
     validation RMS to 1e-9 relative (the selection itself is re-run by test_measured_data.py)."""
-    import sys
-
-    sys.path.insert(0, str(ROOT / "examples" / "measured_data"))
-    import measured_data as md
-
+    md = load_measured_data_example()
     committed = json.loads((ROOT / "docs" / "results" / "measured_data.json").read_text())
     act, tanks = md.load_actuator(), md.load_cascaded_tanks()
     cases = {

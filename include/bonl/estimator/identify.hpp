@@ -33,19 +33,19 @@ struct IdentifyOptions : EstimatorOptions {
 
 namespace detail {
 
-/// The powers of two nearest the RMS of the records' inputs and of their outputs (1 for a signal
-/// that is all zero): identify()'s units.
+/// The powers of two nearest the RMS of the records' deviations from (u0, y0), input and output
+/// (1 for a signal that is all zero): identify()'s units.
 struct DataScale {
   double u = 1.0;
   double y = 1.0;
 };
 
 template <typename Scalar>
-DataScale data_scale(const Records<Scalar>& records) {
+DataScale data_scale(const Records<Scalar>& records, double u0, double y0) {
   double u_squares = 0.0, y_squares = 0.0, samples = 0.0;
   for (const auto& record : records) {
-    u_squares += static_cast<double>(record.u.squaredNorm());
-    y_squares += static_cast<double>(record.y.squaredNorm());
+    u_squares += static_cast<double>((record.u.array() - static_cast<Scalar>(u0)).matrix().squaredNorm());
+    y_squares += static_cast<double>((record.y.array() - static_cast<Scalar>(y0)).matrix().squaredNorm());
     samples += static_cast<double>(record.u.size());
   }
   const auto nearest_power_of_two = [samples](double squares) {
@@ -59,7 +59,7 @@ DataScale data_scale(const Records<Scalar>& records) {
 template <typename Scalar>
 struct ScaledRecords {
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  ScaledRecords(const Records<Scalar>& records, DataScale scale, double u0 = 0.0, double y0 = 0.0) {
+  ScaledRecords(const Records<Scalar>& records, DataScale scale, double u0, double y0) {
     inputs.reserve(records.size());
     outputs.reserve(records.size());
     for (const auto& record : records) {
@@ -125,26 +125,20 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
   if (options.method == Method::Paper || least_squares_arx || options.refine_iterations == 0) {
     return estimate_recursively(structure, records, options);
   }
-  if (structure.u0() != 0.0 || structure.y0() != 0.0) {
-    // The blocks see the deviations from the operating point: identify them, then put it back.
-    const detail::ScaledRecords<typename Model::Scalar> deviations(records, {1.0, 1.0}, structure.u0(),
-                                                                   structure.y0());
-    Model at_zero = structure;
+  // The blocks see the deviations from the operating point, in identify's units: identify those
+  // (one copy of the records), then put the operating point and the data's units back.
+  const double u0 = structure.u0(), y0 = structure.y0();
+  const DataScale scale = options.normalise ? data_scale(records, u0, y0) : DataScale{};
+  if (u0 != 0.0 || y0 != 0.0 || scale.u != 1.0 || scale.y != 1.0) {
+    const ScaledRecords<typename Model::Scalar> transformed(records, scale, u0, y0);
+    IdentifyOptions inner = options;
+    inner.normalise = false;
+    inner.c0 = options.c0 / scale.y;
+    Model at_zero = rescaled(structure, 1.0 / scale.u, 1.0 / scale.y);
     at_zero.set_operating_point(0.0, 0.0);
-    Model model = identify_records(at_zero, deviations.views, options);
-    model.set_operating_point(structure.u0(), structure.y0());
+    Model model = rescaled(identify_records(at_zero, transformed.views, inner), scale.u, scale.y);
+    model.set_operating_point(u0, y0);
     return model;
-  }
-  if (options.normalise) {
-    const detail::DataScale scale = detail::data_scale(records);
-    if (scale.u != 1.0 || scale.y != 1.0) {
-      const detail::ScaledRecords<typename Model::Scalar> scaled(records, scale);
-      IdentifyOptions in_scale = options;
-      in_scale.normalise = false;
-      in_scale.c0 = options.c0 / scale.y;
-      return rescaled(identify_records(rescaled(structure, 1.0 / scale.u, 1.0 / scale.y), scaled.views, in_scale),
-                      scale.u, scale.y);
-    }
   }
   // Two starts for the refinement: the method's recursive estimate and the paper method's (with the
   // paper method's defaults where the options leave them unset). A start whose recursion broke down

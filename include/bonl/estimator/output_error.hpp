@@ -189,7 +189,6 @@ Model refine_output_error(const std::vector<Model>& starts, const Records<typena
   typename Model::VectorX simulated, scratch;
 
   RefinementReport local;
-  local.initial_cost = std::numeric_limits<double>::infinity();
   std::vector<Model> candidates = starts;
   std::vector<double> costs(candidates.size());
   for (std::size_t i = 0; i < candidates.size(); ++i) {

@@ -130,13 +130,9 @@ Selection<Model> select(const std::vector<Model>& candidates, const Records<type
                   "select: validation_fraction must be in (0, 1), got " +
                       detail::format_number(options.validation_fraction));
   options.identify.validate();
-  detail::require(!records.empty(), "records must hold at least one record (u, y)");
+  detail::require_records(records, 0);
   for (std::size_t i = 0; i < records.size(); ++i) {
-    const std::string name = "records[" + std::to_string(i) + "]";
-    detail::require_same_length(records[i].u, (name + ".u").c_str(), records[i].y, (name + ".y").c_str());
-    detail::require(records[i].u.size() > 1, name + " must have at least 2 samples");
-    detail::require_finite(records[i].u, (name + ".u").c_str());
-    detail::require_finite(records[i].y, (name + ".y").c_str());
+    detail::require(records[i].u.size() > 1, "records[" + std::to_string(i) + "] must have at least 2 samples");
   }
 
   std::vector<SelectionCandidate<Model>> rows(candidates.size(), SelectionCandidate<Model>(candidates.front()));
@@ -147,7 +143,8 @@ Selection<Model> select(const std::vector<Model>& candidates, const Records<type
     }
   };
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min<std::size_t>(options.threads == 0 ? hardware : options.threads, candidates.size());
+  const std::size_t threads =
+      std::min<std::size_t>(options.threads == 0 ? hardware : options.threads, candidates.size());
   std::vector<std::thread> pool;
   for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
@@ -155,10 +152,13 @@ Selection<Model> select(const std::vector<Model>& candidates, const Records<type
 
   std::vector<std::size_t> order(rows.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rows[a].score < rows[b].score; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return rows[a].score < rows[b].score; });
   std::vector<SelectionCandidate<Model>> table;
   for (std::size_t i : order) table.push_back(rows[i]);
-  if (!table.front().model) throw NumericalError("bonl: select: every candidate failed; the first: " + table.front().error);
+  if (!table.front().model) {
+    throw NumericalError("bonl: select: every candidate failed; the first: " + table.front().error);
+  }
   Model best = identify(candidates[order.front()], records, options.identify);
   return {options.criterion, std::move(table), std::move(best)};
 }

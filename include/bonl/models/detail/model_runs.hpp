@@ -37,15 +37,19 @@ struct Identity {
   }
 };
 
+/// The NumericalError of a simulation that left the finite numbers.
+template <class Model>
+[[noreturn]] void simulation_diverged() {
+  throw NumericalError(std::string("bonl: ") + Model::kName +
+                       " simulation left the finite numbers (an unstable model?)");
+}
+
 /// Free run from rest through model.try_simulate(); divergence becomes a NumericalError.
 template <class Model, typename U>
 typename Model::VectorX simulate_checked(const Model& model, const Eigen::MatrixBase<U>& u) {
   require_finite(u, "u");
   typename Model::VectorX y;
-  if (!model.try_simulate(u, y)) {
-    throw NumericalError(std::string("bonl: ") + Model::kName +
-                         " simulation left the finite numbers (an unstable model?)");
-  }
+  if (!model.try_simulate(u, y)) simulation_diverged<Model>();
   return y;
 }
 
@@ -72,10 +76,7 @@ typename Model::VectorX run_after_past(const Model& model, const Eigen::MatrixBa
   typename Model::VectorX out(u.size());
   for (Eigen::Index k = 0; k < u.size(); ++k) {
     out[k] = terms.step(model.theta(), u[k] - u0, y_at(k) - y0).prediction + y0;
-    if (!std::isfinite(out[k])) {
-      throw NumericalError(std::string("bonl: ") + Model::kName +
-                           " simulation left the finite numbers (an unstable model?)");
-    }
+    if (!std::isfinite(out[k])) simulation_diverged<Model>();
   }
   return out;
 }

@@ -131,12 +131,16 @@ normalise : bool, default True
     the model in the data's units, so that the settings mean the same whatever the units. The recursive
     estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
     estimator's, in the data's units.
+operating_point : {None, 'mean', 'initial'}
+    The identified model's operating point (u0, y0): None (default) keeps the structure's
+    (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+    first sample of the first record (the record starts at rest there).
 
 Returns
 -------
 model
-    A new model of the same type with the identified parameters, the structure's operating point and
-    the records' input range (Model.input_range).
+    A new model of the same type with the identified parameters, that operating point and the
+    records' input range (Model.input_range).
 
 Warns
 -----
@@ -150,6 +154,19 @@ ValueError
     Bad orders, settings, lengths or non-finite samples.
 bonl.NumericalError
     The estimator broke down numerically.)doc";
+
+/// identify(..., operating_point=None | 'mean' | 'initial').
+bonl::OperatingPointSource operating_point_source(const py::object& value) {
+  if (value.is_none()) return bonl::OperatingPointSource::Structure;
+  if (py::isinstance<py::str>(value)) {
+    const std::string name = value.cast<std::string>();
+    for (const auto source : {bonl::OperatingPointSource::Mean, bonl::OperatingPointSource::Initial}) {
+      if (name == bonl::to_string(source)) return source;
+    }
+  }
+  throw std::invalid_argument("bonl: operating_point must be None (the structure's), 'mean' or 'initial', got " +
+                              std::string(py::str(py::repr(value))));
+}
 
 /// identify(model, [(u1, y1), (u2, y2), ...]): the records' inputs and outputs, each checked by its index.
 void read_records(const py::object& records, std::vector<Eigen::VectorXd>& inputs, std::vector<Eigen::VectorXd>& outputs) {
@@ -175,12 +192,14 @@ void def_identify(py::module_& m) {
   m.def(
       "identify",
       [](const Model& model, const py::object& u, const py::object& y, int passes, const std::string& method,
-         const py::object& forgetting, std::optional<double> p0, double c0, int refine_iterations, bool normalise) {
+         const py::object& forgetting, std::optional<double> p0, double c0, int refine_iterations, bool normalise,
+         const py::object& operating_point) {
         bonl::IdentifyOptions options;
         static_cast<bonl::EstimatorOptions&>(options) = estimator_options({method, forgetting, p0, c0, std::nullopt});
         options.passes = passes;
         options.refine_iterations = refine_iterations;
         options.normalise = normalise;
+        options.operating_point = operating_point_source(operating_point);
         std::vector<Eigen::VectorXd> inputs, outputs;
         if (!y.is_none()) {
           inputs.push_back(to_vector(u, "u"));
@@ -206,7 +225,8 @@ void def_identify(py::module_& m) {
       },
       py::arg("model"), py::arg("u"), py::arg("y") = py::none(), py::kw_only(), py::arg("passes") = 1,
       py::arg("method") = "output_error", py::arg("forgetting") = py::none(), py::arg("p0") = py::none(),
-      py::arg("c0") = 0.01, py::arg("refine_iterations") = 100, py::arg("normalise") = true, kIdentifyDoc);
+      py::arg("c0") = 0.01, py::arg("refine_iterations") = 100, py::arg("normalise") = true,
+      py::arg("operating_point") = py::none(), kIdentifyDoc);
 }
 
 /// One Python class over the estimators of every model of bonl::Models.

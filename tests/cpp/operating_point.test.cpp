@@ -50,6 +50,36 @@ TEMPLATE_LIST_TEST_CASE("a model with an operating point is the same model on th
   CHECK(model.u0() == 2.5);  // unchanged
 }
 
+TEMPLATE_LIST_TEST_CASE("identify takes the operating point from the records when asked", "[operating_point]",
+                        bonl::Models) {
+  const TestType truth = known_system<TestType>("small");
+  const Eigen::VectorXd u1 = (bonl::signals::random_levels(300, 5, 1.0, 34).array() + 1.5).matrix();
+  const Eigen::VectorXd u2 = (bonl::signals::random_levels(200, 5, 1.0, 35).array() - 0.5).matrix();
+  const Eigen::VectorXd y1 = truth.simulate(u1), y2 = truth.simulate(u2);
+  const bonl::Records<double> records{{u1, y1}, {u2, y2}};
+  const double u_mean = (u1.sum() + u2.sum()) / 500.0, y_mean = (y1.sum() + y2.sum()) / 500.0;
+
+  // Each source is the same as setting that point on the structure by hand.
+  const std::pair<bonl::OperatingPointSource, std::pair<double, double>> cases[] = {
+      {bonl::OperatingPointSource::Mean, {u_mean, y_mean}},
+      {bonl::OperatingPointSource::Initial, {u1[0], y1[0]}},
+      {bonl::OperatingPointSource::Structure, {0.0, 0.0}}};
+  for (const auto& [source, point] : cases) {
+    CAPTURE(bonl::to_string(source));
+    bonl::IdentifyOptions options;
+    options.operating_point = source;
+    options.refine_iterations = 5;
+    TestType by_hand = truth;
+    by_hand.set_operating_point(point.first, point.second);
+    const TestType identified = bonl::identify(truth, records, options);
+    options.operating_point = bonl::OperatingPointSource::Structure;
+    const TestType expected = bonl::identify(by_hand, records, options);
+    CHECK(identified.u0() == point.first);
+    CHECK(identified.y0() == point.second);
+    CHECK(identified.theta() == expected.theta());
+  }
+}
+
 TEMPLATE_LIST_TEST_CASE("after a measured past the simulation continues the record", "[operating_point]",
                         bonl::Models) {
   TestType model = known_system<TestType>("small");

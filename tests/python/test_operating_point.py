@@ -26,6 +26,21 @@ def test_the_operating_point_shifts_input_and_output(name):
     np.testing.assert_array_equal(identified.theta, bonl.identify(at_zero, u - 2.5, y + 1.25).theta)
 
 
+@pytest.mark.parametrize("source", ["mean", "initial"])
+def test_identify_takes_the_operating_point_from_the_records(source):
+    truth = SMALL["Hammerstein"]
+    u = random_levels(300, 5, 1.0, 43) + 1.5
+    y = truth.simulate(u) + 3.0
+    point = (float(np.sum(u)) / u.size, float(np.sum(y)) / y.size) if source == "mean" else (u[0], y[0])
+    identified = bonl.identify(truth, u, y, operating_point=source, refine_iterations=5)
+    assert identified.operating_point == pytest.approx(point, rel=1e-15)  # numpy and Eigen sum in other orders
+    by_hand = bonl.load_model(truth.to_json())
+    by_hand.operating_point = identified.operating_point
+    np.testing.assert_array_equal(identified.theta, bonl.identify(by_hand, u, y, refine_iterations=5).theta)
+    with pytest.raises(ValueError, match="operating_point must be None .* 'mean' or 'initial', got 'median'"):
+        bonl.identify(truth, u, y, operating_point="median")
+
+
 @pytest.mark.parametrize("name", sorted(SMALL))
 def test_simulation_after_a_measured_past_continues_the_record(name):
     model = SMALL[name]

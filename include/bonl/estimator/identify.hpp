@@ -20,6 +20,20 @@
 
 namespace bonl {
 
+/// Where identify() takes the model's operating point (u0, y0) from: the structure's (the default),
+/// the mean input and output over all records, or the first sample of the first record (the record
+/// starts at rest there, as the cascaded tanks' records do).
+enum class OperatingPointSource { Structure, Mean, Initial };
+
+inline const char* to_string(OperatingPointSource source) {
+  switch (source) {
+    case OperatingPointSource::Mean: return "mean";
+    case OperatingPointSource::Initial: return "initial";
+    case OperatingPointSource::Structure: break;
+  }
+  return "structure";
+}
+
 struct IdentifyOptions : EstimatorOptions {
   int passes = 1;              ///< passes of the recursive estimator over the record (paper's step 5)
   int refine_iterations = 100; ///< Levenberg-Marquardt iterations of the refinement (0: none)
@@ -29,6 +43,7 @@ struct IdentifyOptions : EstimatorOptions {
   /// micrometres. Powers of two make the scaling exact in floating point. Where identify returns the
   /// recursive estimate as it is, that estimate is the online estimator's, in the data's units.
   bool normalise = true;
+  OperatingPointSource operating_point = OperatingPointSource::Structure;
 };
 
 namespace detail {
@@ -162,7 +177,8 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
 
 /// Identifies the parameters of `structure` (its orders and its operating point; its parameter values
 /// are not used) from records of input u and measured output y (one record or several, each from rest
-/// at the operating point). The result has the structure's operating point, and the range of the
+/// at the operating point). The result has the structure's operating point (or the records' own,
+/// IdentifyOptions::operating_point), and the range of the
 /// records' inputs as its input range (extrapolated_samples()).
 /// - Method::Paper: the recursive estimator of eqs. (21)-(31), `passes` passes.
 /// - Method::OutputError (the default) and Method::EquationError: that recursive estimator,
@@ -176,7 +192,20 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
 template <class Model>
 Model identify(const Model& structure, const Records<typename Model::Scalar>& records,
                const IdentifyOptions& options = {}) {
-  Model model = detail::identify_records(structure, records, options);
+  detail::require_records(records, structure.num_params());
+  Model at = structure;
+  if (options.operating_point == OperatingPointSource::Mean) {
+    double u_sum = 0.0, y_sum = 0.0, samples = 0.0;
+    for (const auto& record : records) {
+      u_sum += static_cast<double>(record.u.sum());
+      y_sum += static_cast<double>(record.y.sum());
+      samples += static_cast<double>(record.u.size());
+    }
+    at.set_operating_point(u_sum / samples, y_sum / samples);
+  } else if (options.operating_point == OperatingPointSource::Initial) {
+    at.set_operating_point(static_cast<double>(records.front().u[0]), static_cast<double>(records.front().y[0]));
+  }
+  Model model = detail::identify_records(at, records, options);
   double min = std::numeric_limits<double>::infinity(), max = -min;
   for (const auto& record : records) {
     min = std::min(min, static_cast<double>(record.u.minCoeff()));

@@ -1166,7 +1166,7 @@ class Estimator:
         numpy.ndarray: current estimate (eq. 19 order).
         """
 @typing.overload
-def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> ARX:
+def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> ARX:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1201,12 +1201,16 @@ def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
+    operating_point : {None, 'mean', 'initial'}
+        The identified model's operating point (u0, y0): None (default) keeps the structure's
+        (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+        first sample of the first record (the record starts at rest there).
     
     Returns
     -------
     model
-        A new model of the same type with the identified parameters, the structure's operating point and
-        the records' input range (Model.input_range).
+        A new model of the same type with the identified parameters, that operating point and the
+        records' input range (Model.input_range).
     
     Warns
     -----
@@ -1222,7 +1226,7 @@ def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> Hammerstein:
+def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> Hammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1257,12 +1261,16 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes:
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
+    operating_point : {None, 'mean', 'initial'}
+        The identified model's operating point (u0, y0): None (default) keeps the structure's
+        (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+        first sample of the first record (the record starts at rest there).
     
     Returns
     -------
     model
-        A new model of the same type with the identified parameters, the structure's operating point and
-        the records' input range (Model.input_range).
+        A new model of the same type with the identified parameters, that operating point and the
+        records' input range (Model.input_range).
     
     Warns
     -----
@@ -1278,7 +1286,7 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes:
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> HammersteinWiener:
+def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> HammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1313,12 +1321,16 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, p
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
+    operating_point : {None, 'mean', 'initial'}
+        The identified model's operating point (u0, y0): None (default) keeps the structure's
+        (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+        first sample of the first record (the record starts at rest there).
     
     Returns
     -------
     model
-        A new model of the same type with the identified parameters, the structure's operating point and
-        the records' input range (Model.input_range).
+        A new model of the same type with the identified parameters, that operating point and the
+        records' input range (Model.input_range).
     
     Warns
     -----
@@ -1334,7 +1346,7 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, p
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> PseudoHammersteinWiener:
+def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> PseudoHammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1369,12 +1381,16 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
+    operating_point : {None, 'mean', 'initial'}
+        The identified model's operating point (u0, y0): None (default) keeps the structure's
+        (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+        first sample of the first record (the record starts at rest there).
     
     Returns
     -------
     model
-        A new model of the same type with the identified parameters, the structure's operating point and
-        the records' input range (Model.input_range).
+        A new model of the same type with the identified parameters, that operating point and the
+        records' input range (Model.input_range).
     
     Warns
     -----
@@ -1390,7 +1406,7 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True) -> Wiener:
+def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> Wiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -1425,12 +1441,16 @@ def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typi
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
+    operating_point : {None, 'mean', 'initial'}
+        The identified model's operating point (u0, y0): None (default) keeps the structure's
+        (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+        first sample of the first record (the record starts at rest there).
     
     Returns
     -------
     model
-        A new model of the same type with the identified parameters, the structure's operating point and
-        the records' input range (Model.input_range).
+        A new model of the same type with the identified parameters, that operating point and the
+        records' input range (Model.input_range).
     
     Warns
     -----

@@ -114,7 +114,9 @@ def _simulation_mse(model: Any, records: Sequence[Tuple[np.ndarray, np.ndarray]]
             error = y[first:] - model.simulate(u)[first:]
         except _bonl.NumericalError:
             return math.inf
-        squared += float(error @ error)
+        # numpy's own pairwise sum, not BLAS's dot: BLAS splits the sum by its thread count, which a
+        # Dask worker sets to 1, and the scores must not depend on where a candidate ran.
+        squared += float(np.sum(error * error))
         count += error.size
     mse = squared / count if count else math.inf
     return mse if math.isfinite(mse) else math.inf
@@ -217,7 +219,16 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
             index = {future: i for i, future in enumerate(futures)}
             rows: List[Optional[Candidate]] = [None] * len(futures)
             for future in concurrent.futures.as_completed(futures):
-                rows[index[future]] = future.result()
+                i = index[future]
+                try:
+                    rows[i] = future.result()
+                except ValueError:
+                    raise  # bad input (an identify option, a record): the same for every candidate
+                except Exception as error:  # the executor lost this candidate: report it, keep the rest
+                    structure = structures[i]
+                    rows[i] = Candidate(type(structure).__name__, dict(zip(type(structure).ORDERS, structure.orders)),
+                                        structure.num_params, math.inf, math.inf, None, math.nan,
+                                        f"executor: {type(error).__name__}: {error}", None)
                 if bar is not None:
                     bar.update(1)
         finally:

@@ -80,6 +80,36 @@ def test_a_dask_cluster_runs_the_grid_and_gives_the_same_table():
     np.testing.assert_array_equal(remote.best.theta, local.best.theta)
 
 
+class _LosesTheSecondCandidate(concurrent.futures.ThreadPoolExecutor):
+    """An executor that fails one submission, as a cluster does when a worker dies under it."""
+
+    def __init__(self):
+        super().__init__(max_workers=1)
+        self.submitted = 0
+
+    def submit(self, fn, *args, **kwargs):
+        self.submitted += 1
+        if self.submitted == 2:
+            future = concurrent.futures.Future()
+            future.set_exception(RuntimeError("worker lost"))
+            return future
+        return super().submit(fn, *args, **kwargs)
+
+
+def test_a_candidate_the_executor_fails_is_reported_and_the_rest_are_kept():
+    _, u, y = _system()
+    local = bonl.select(_candidates(), u, y)
+    with _LosesTheSecondCandidate() as executor:
+        given = bonl.select(_candidates(), u, y, executor=executor)
+    lost = _candidates()[1]
+    assert given.table[-1].orders == dict(zip(bonl.Hammerstein.ORDERS, lost.orders))
+    assert given.table[-1].error == "executor: RuntimeError: worker lost"
+    assert given.table[-1].score == math.inf and given.table[-1].model is None
+    kept = [(r.name, r.orders, r.score) for r in local.table if r.orders != given.table[-1].orders]
+    assert [(r.name, r.orders, r.score) for r in given.table[:-1]] == kept
+    np.testing.assert_array_equal(given.best.theta, local.best.theta)
+
+
 def test_progress_bar_on_request(capsys):
     _, u, y = _system()
     bonl.select(_candidates()[:2], u, y, progress=True)

@@ -1,0 +1,125 @@
+"""What every data-set script shares: select each model family on the estimation data with
+``bonl.select``, simulate the test data with the chosen model and write one results file.
+
+Public API only (``bonl.grid``, ``bonl.select``, ``Model.simulate``, ``Model.to_json``): no offsets or
+scaling by hand. Each script in this folder loads its data set, states its protocol (from the data
+set's ``SOURCE.md``) and the grid of orders, and calls :func:`run`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import json
+import math
+import pathlib
+import time
+import warnings
+from typing import Callable, Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+import bonl
+
+DATA = pathlib.Path(__file__).resolve().parents[2] / "data"
+
+Record = Tuple[np.ndarray, np.ndarray]
+
+
+@dataclasses.dataclass(frozen=True)
+class Test:
+    """A test record: the model simulates ``u`` from rest, or after the state-initialisation window
+    (its first ``window`` samples, measured), and is scored on samples ``skip`` onwards."""
+
+    name: str
+    u: np.ndarray
+    y: np.ndarray
+    window: int = 0
+    skip: int = 0
+
+    def outside(self, model) -> int:
+        """How many test inputs lie outside the input range the model was identified on."""
+        low, high = model.input_range
+        return int(np.count_nonzero((self.u < low) | (self.u > high)))
+
+    def rms(self, model) -> float:
+        if self.window:
+            initial = (self.u[:self.window], self.y[:self.window])
+            simulated = model.simulate(self.u[self.window:], initial=initial)
+            error = self.y[self.window:] - simulated
+        else:
+            error = self.y - model.simulate(self.u)
+        error = error[max(0, self.skip - self.window):]
+        return float(np.sqrt(np.mean(error ** 2)))
+
+
+@dataclasses.dataclass(frozen=True)
+class Benchmark:
+    name: str                          #: the folder under data/
+    unit: str                          #: of the output, for the table
+    estimation: List[Record]           #: the records identify sees
+    tests: List[Test]
+    orders: Dict[str, Sequence[int]]   #: the grid, shared by every model family (each takes its own)
+    published: List[Tuple[str, str]]  #: (what, figure) from SOURCE.md
+    #: identify's options; several sets are candidates like the orders (each family keeps the set
+    #: whose chosen structure scores best on the held-out estimation data)
+    identify: List[Dict[str, object]] = dataclasses.field(default_factory=lambda: [{}])
+
+
+def _grid(model_class, orders):
+    return bonl.grid(model_class, **{name: orders[name] for name in model_class.ORDERS})
+
+
+def run(benchmark: Benchmark, families: Optional[Sequence[type]] = None) -> dict:
+    """Selects every family on the estimation data and scores the chosen model on each test record."""
+    # Test inputs outside the estimation range are counted in the results, not warned about per model.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bonl.ExtrapolationWarning)
+        return _run(benchmark, families)
+
+
+def _run(benchmark, families):
+    rows = []
+    for family in families or bonl.MODELS:
+        candidates = _grid(family, benchmark.orders)
+        start = time.perf_counter()
+        selections = [(bonl.select(candidates, benchmark.estimation, **options), options)
+                      for options in benchmark.identify]
+        selection, options = min(selections, key=lambda pair: pair[0].table[0].score)
+        seconds = time.perf_counter() - start
+        best = selection.best
+        chosen = selection.table[0]
+        rows.append({
+            "model": family.__name__,
+            "orders": dict(zip(family.ORDERS, best.orders)),
+            "identify": options,
+            "candidates": len(candidates) * len(benchmark.identify),
+            "check_rms": math.sqrt(chosen.score),
+            "test_rms": {test.name: test.rms(best) for test in benchmark.tests},
+            "test_inputs_outside_range": {test.name: test.outside(best) for test in benchmark.tests},
+            "pole_radius": best.pole_radius,
+            "seconds": round(seconds, 1),
+            "json": json.loads(best.to_json()),
+        })
+        print(f"{benchmark.name}: {family.__name__} {rows[-1]['orders']}: "
+              + ", ".join(f"{k} {v:.4g}" for k, v in rows[-1]["test_rms"].items()) + f" ({seconds:.0f} s)", flush=True)
+    return {
+        "data_set": benchmark.name,
+        "unit": benchmark.unit,
+        "orders": {k: list(v) for k, v in benchmark.orders.items()},
+        "identify": benchmark.identify,
+        "tests": [{"name": t.name, "samples": int(t.u.size), "window": t.window, "skip": t.skip}
+                  for t in benchmark.tests],
+        "published": benchmark.published,
+        "rows": rows,
+    }
+
+
+def main(make: Callable[[], Benchmark]) -> None:
+    parser = argparse.ArgumentParser(description=(make.__doc__ or "").strip())
+    parser.add_argument("--json", type=pathlib.Path, help="write the results here")
+    args = parser.parse_args()
+    results = run(make())
+    if args.json:
+        args.json.parent.mkdir(parents=True, exist_ok=True)
+        args.json.write_text(json.dumps(results, indent=1) + "\n")

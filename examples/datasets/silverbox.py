@@ -1,0 +1,30 @@
+"""Silverbox, an electronic Duffing oscillator (Wigren and Schoukens 2013; data/silverbox/SOURCE.md),
+by the nonlinear_benchmarks split (0-based): the multisine part [40650:127400], its first 75 % to
+estimate and its last 25 % to test; and the arrow [100:40575], whole and its first 32 000 samples
+(no extrapolation). Each test is simulated after its 50-sample state-initialisation window."""
+
+import numpy as np
+
+from benchmark import DATA, Benchmark, Test, main
+
+
+def make():
+    """Silverbox: every model family selected on the multisine's first 75 %, tested on its rest and on the arrow."""
+    data = np.loadtxt(DATA / "silverbox" / "SNLS80mV.csv", delimiter=",")
+    u, y = data[:, 0], data[:, 1]
+    split = 40650 + int(0.75 * (127400 - 40650))
+    return Benchmark(
+        name="silverbox", unit="V",
+        estimation=[(u[40650:split], y[40650:split])],
+        tests=[Test("multisine test", u[split:127400], y[split:127400], window=50),
+               Test("arrow", u[100:40575], y[100:40575], window=50),
+               Test("arrow, no extrapolation", u[100:32100], y[100:32100], window=50)],
+        orders=dict(na=[2, 3, 4], nb=[1, 2, 3], nk=[0, 1], r=[3], r1=[3]),
+        published=[("polynomial NARX (SysIdentPy): multisine test, arrow, no extrapolation",
+                    "7.73e-3, 4.15e-3, 2.23e-3"),
+                   ("SUBNET nx=8 (Beintema et al. 2021): multisine test, no extrapolation", "5.79e-3, 2.04e-3"),
+                   ("PNLSS (Paduart et al. 2010), arrow, not checked against a copy", "about 2.6e-4")])
+
+
+if __name__ == "__main__":
+    main(make)

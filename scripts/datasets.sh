@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Every measured data set in data/ by its SOURCE.md protocol (examples/datasets, one short script
+# each, public API only): bonl.select per model family on the estimation data, then the test data.
+# Writes docs/results/datasets/<data set>.json and the tables (docs/results/datasets_summary.md),
+# spliced into docs/measured_data.md. Needs `pip install .` (scripts/test.sh makes build/venv).
+# About 10 minutes on 2 cores; tests/python/test_datasets.py checks the committed figures.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source scripts/deps.sh
+python=${PYTHON:-build/venv/bin/python}
+
+mkdir -p docs/results/datasets
+for script in hydraulic_actuator cascaded_tanks coupled_electric_drives bouc_wen emps silverbox wiener_hammerstein; do
+  step "examples/datasets/$script.py"
+  "$python" "examples/datasets/$script.py" --json "docs/results/datasets/$script.json"
+done
+"$python" examples/datasets/table.py docs/results/datasets/{hydraulic_actuator,cascaded_tanks,coupled_electric_drives,bouc_wen,emps,silverbox,wiener_hammerstein}.json \
+  > docs/results/datasets_summary.md
+bonl_splice_summary datasets_summary docs/results/datasets_summary.md docs/measured_data.md
+step "wrote docs/results/datasets/*.json and datasets_summary.md, updated docs/measured_data.md"

@@ -1,0 +1,67 @@
+"""The measured data sets' published figures (docs/results/datasets/*.json, written by
+scripts/datasets.sh from examples/datasets): every committed model re-scores its test figures, and
+the quick data sets are selected again from scratch and must choose the same structures with the same
+figures. Tolerance 1e-9 relative: the runs are deterministic, the margin is for other BLAS-free
+summation orders of the same code (none expected on one machine)."""
+
+import json
+import pathlib
+import sys
+
+import pytest
+
+import bonl
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+RESULTS = ROOT / "docs" / "results" / "datasets"
+SCRIPTS = ["hydraulic_actuator", "cascaded_tanks", "coupled_electric_drives", "bouc_wen", "emps", "silverbox",
+           "wiener_hammerstein"]
+QUICK = ["hydraulic_actuator", "cascaded_tanks", "coupled_electric_drives"]  # seconds each
+
+sys.path.insert(0, str(ROOT / "examples" / "datasets"))
+
+
+def _script(name):
+    return __import__(name)
+
+
+def _results(name):
+    return json.loads((RESULTS / f"{name}.json").read_text())
+
+
+@pytest.mark.parametrize("name", SCRIPTS)
+def test_every_committed_model_gives_its_published_test_figures(name):
+    results = _results(name)
+    benchmark = _script(name).make()
+    assert [t["name"] for t in results["tests"]] == [t.name for t in benchmark.tests]
+    assert {row["model"] for row in results["rows"]} == {m.__name__ for m in bonl.MODELS}
+    for row in results["rows"]:
+        model = bonl.load_model(json.dumps(row["json"]))
+        assert dict(zip(type(model).ORDERS, model.orders)) == row["orders"]
+        for test in benchmark.tests:
+            assert test.rms(model) == pytest.approx(row["test_rms"][test.name], rel=1e-9), (row["model"], test.name)
+
+
+@pytest.mark.parametrize("name", QUICK)
+def test_the_quick_data_sets_select_the_same_structures_again(name):
+    module = _script(name)
+    committed = _results(name)
+    rerun = _script("benchmark").run(module.make())
+    for old, new in zip(committed["rows"], rerun["rows"]):
+        assert (new["model"], new["orders"], new["identify"]) == (old["model"], old["orders"], old["identify"])
+        assert new["test_rms"] == pytest.approx(old["test_rms"], rel=1e-9), new["model"]
+
+
+def test_the_summary_is_the_table_of_the_results_files():
+    table = _script("table")
+    table_text = "\n\n".join(table.table(_results(name)) for name in SCRIPTS)
+    assert (ROOT / "docs" / "results" / "datasets_summary.md").read_text() == table_text + "\n"
+    page = (ROOT / "docs" / "measured_data.md").read_text()
+    assert table_text in page
+
+
+def test_the_committed_cluster_run_ranked_64_candidates_identically():
+    run = json.loads((ROOT / "docs" / "results" / "select_on_dask.json").read_text())
+    assert run["candidates"] == len(run["local"]) == len(run["local_cluster"]) == 64
+    assert run["local"] == run["local_cluster"] and run["identical_rankings"] and run["identical_best_theta"]
+    assert all(row["error"] is None for row in run["local"])

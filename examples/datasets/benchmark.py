@@ -42,8 +42,12 @@ class Test:
         low, high = model.input_range
         return int(np.count_nonzero((self.u < low) | (self.u > high)))
 
-    def rms(self, model) -> float:
-        if self.window:
+    def rms(self, model, from_rest: bool = False) -> float:
+        """The score; ``from_rest``: the same samples scored with the whole record simulated from rest
+        at the operating point, to show what the initial-state window does."""
+        if self.window and from_rest:
+            error = (self.y - model.simulate(self.u))[self.window:]
+        elif self.window:
             initial = (self.u[:self.window], self.y[:self.window])
             simulated = model.simulate(self.u[self.window:], initial=initial)
             error = self.y[self.window:] - simulated
@@ -96,6 +100,7 @@ def _run(benchmark, families):
             "candidates": len(candidates) * len(benchmark.identify),
             "check_rms": math.sqrt(chosen.score),
             "test_rms": {test.name: test.rms(best) for test in benchmark.tests},
+            "test_rms_from_rest": {test.name: test.rms(best, from_rest=True) for test in benchmark.tests if test.window},
             "test_inputs_outside_range": {test.name: test.outside(best) for test in benchmark.tests},
             "pole_radius": best.pole_radius,
             "seconds": round(seconds, 1),

@@ -21,8 +21,13 @@ def table(results):
     for row in results["rows"]:
         orders = " ".join(f"{k}={v}" for k, v in row["orders"].items())
         options = ", ".join(f"{k}={v}" for k, v in row.get("identify", {}).items())
-        cells = [_figure(row["test_rms"][name]) for name in tests]
+        rest = row.get("test_rms_from_rest", {})
+        cells = [_figure(row["test_rms"][name]) + (f" (from rest {_figure(rest[name])})" if name in rest else "")
+                 for name in tests]
         lines.append(f"| {row['model']} | {orders}{', ' + options if options else ''} | " + " | ".join(cells) + " |")
+    if any(test["window"] for test in results["tests"]):
+        lines += ["", "(from rest: the same samples with the whole test record simulated from rest at the "
+                  "operating point instead of after the initial-state window)"]
     published = results["published"]
     lines += ["", "Published: " + ("; ".join(f"{what}: {figure}" for what, figure in published) if published
                                     else "none in SOURCE.md for this split") + "."]

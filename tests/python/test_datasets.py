@@ -40,6 +40,8 @@ def test_every_committed_model_gives_its_published_test_figures(name):
         assert dict(zip(type(model).ORDERS, model.orders)) == row["orders"]
         for test in benchmark.tests:
             assert test.rms(model) == pytest.approx(row["test_rms"][test.name], rel=1e-9), (row["model"], test.name)
+            if test.window:
+                assert test.rms(model, from_rest=True) == pytest.approx(row["test_rms_from_rest"][test.name], rel=1e-9)
 
 
 @pytest.mark.parametrize("name", QUICK)

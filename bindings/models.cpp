@@ -133,6 +133,10 @@ void bind_common(py::class_<Model>& cls) {
           },
           "tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) "
           "unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.")
+      .def(
+          "extrapolated_samples",
+          [](const Model& model, const py::object& u) { return model.extrapolated_samples(to_vector(u, "u")); },
+          py::arg("u"), "int: how many samples of u lie outside input_range (0: no extrapolation).")
       .def_property(
           "theta", [](const Model& model) { return Eigen::VectorXd(model.theta()); },
           [](Model& model, const py::object& theta) { model.set_theta(to_vector(theta, "theta")); },

@@ -9,12 +9,14 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh
 python=${PYTHON:-build/venv/bin/python}
 
+scripts=(hydraulic_actuator cascaded_tanks coupled_electric_drives bouc_wen emps silverbox wiener_hammerstein)
+results=()
 mkdir -p docs/results/datasets
-for script in hydraulic_actuator cascaded_tanks coupled_electric_drives bouc_wen emps silverbox wiener_hammerstein; do
+for script in "${scripts[@]}"; do
   step "examples/datasets/$script.py"
   "$python" "examples/datasets/$script.py" --json "docs/results/datasets/$script.json"
+  results+=("docs/results/datasets/$script.json")
 done
-"$python" examples/datasets/table.py docs/results/datasets/{hydraulic_actuator,cascaded_tanks,coupled_electric_drives,bouc_wen,emps,silverbox,wiener_hammerstein}.json \
-  > docs/results/datasets_summary.md
+"$python" examples/datasets/table.py "${results[@]}" > docs/results/datasets_summary.md
 bonl_splice_summary datasets_summary docs/results/datasets_summary.md docs/measured_data.md
 step "wrote docs/results/datasets/*.json and datasets_summary.md, updated docs/measured_data.md"

@@ -37,11 +37,6 @@ class Test:
     window: int = 0
     skip: int = 0
 
-    def outside(self, model) -> int:
-        """How many test inputs lie outside the input range the model was identified on."""
-        low, high = model.input_range
-        return int(np.count_nonzero((self.u < low) | (self.u > high)))
-
     def rms(self, model, from_rest: bool = False) -> float:
         """The score; ``from_rest``: the same samples scored with the whole record simulated from rest
         at the operating point, to show what the initial-state window does."""
@@ -101,7 +96,7 @@ def _run(benchmark, families):
             "check_rms": math.sqrt(chosen.score),
             "test_rms": {test.name: test.rms(best) for test in benchmark.tests},
             "test_rms_from_rest": {test.name: test.rms(best, from_rest=True) for test in benchmark.tests if test.window},
-            "test_inputs_outside_range": {test.name: test.outside(best) for test in benchmark.tests},
+            "test_inputs_outside_range": {test.name: best.extrapolated_samples(test.u) for test in benchmark.tests},
             "pole_radius": best.pole_radius,
             "seconds": round(seconds, 1),
             "json": json.loads(best.to_json()),

@@ -122,11 +122,19 @@ def _simulation_mse(model: Any, records: Sequence[Tuple[np.ndarray, np.ndarray]]
     return mse if math.isfinite(mse) else math.inf
 
 
+def _orders(structure: Any) -> Dict[str, int]:
+    return dict(zip(type(structure).ORDERS, structure.orders))
+
+
+def _failed(structure: Any, error: str, seconds: float) -> Candidate:
+    """The row of a candidate that has no model: score inf, with why."""
+    return Candidate(type(structure).__name__, _orders(structure), structure.num_params, math.inf, math.inf, None,
+                     seconds, error, None)
+
+
 def _fit(structure: Any, records: List[Tuple[np.ndarray, np.ndarray]], criterion: str, fraction: float,
          options: Dict[str, Any]) -> Candidate:
     """Identifies one candidate and scores it (runs where the executor puts it: keep it top-level)."""
-    name = type(structure).__name__
-    orders = dict(zip(type(structure).ORDERS, structure.orders))
     t0 = time.perf_counter()
     split = [len(u) - max(1, int(round(fraction * len(u)))) if criterion == "validation" else len(u)
              for u, _ in records]
@@ -134,8 +142,7 @@ def _fit(structure: Any, records: List[Tuple[np.ndarray, np.ndarray]], criterion
     try:
         model = _bonl.identify(structure, fit_records, **options)
     except _bonl.NumericalError as error:
-        return Candidate(name, orders, structure.num_params, math.inf, math.inf, None, time.perf_counter() - t0,
-                         str(error), None)
+        return _failed(structure, str(error), time.perf_counter() - t0)
     fit_mse = _simulation_mse(model, fit_records, [0] * len(records))
     validation = _simulation_mse(model, records, split) if criterion == "validation" else None
     n = sum(len(u) for u, _ in fit_records)
@@ -146,7 +153,8 @@ def _fit(structure: Any, records: List[Tuple[np.ndarray, np.ndarray]], criterion
         score = -math.inf if fit_mse == 0 else math.inf
     else:
         score = n * math.log(fit_mse) + (2 * p if criterion == "aic" else p * math.log(n))
-    return Candidate(name, orders, p, score, fit_mse, validation, time.perf_counter() - t0, None, model)
+    return Candidate(type(structure).__name__, _orders(structure), p, score, fit_mse, validation,
+                     time.perf_counter() - t0, None, model)
 
 
 def _progress(total: int, progress: Optional[bool]):
@@ -225,10 +233,7 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
                 except ValueError:
                     raise  # bad input (an identify option, a record): the same for every candidate
                 except Exception as error:  # the executor lost this candidate: report it, keep the rest
-                    structure = structures[i]
-                    rows[i] = Candidate(type(structure).__name__, dict(zip(type(structure).ORDERS, structure.orders)),
-                                        structure.num_params, math.inf, math.inf, None, math.nan,
-                                        f"executor: {type(error).__name__}: {error}", None)
+                    rows[i] = _failed(structures[i], f"executor: {type(error).__name__}: {error}", math.nan)
                 if bar is not None:
                     bar.update(1)
         finally:

@@ -28,6 +28,7 @@ def test_identify_records_the_input_range_and_simulate_warns_outside_it(name):
     outside[[10, 20, 30]] = model.input_range[1] + 1.0
     with pytest.warns(bonl.ExtrapolationWarning, match="3 of 200 samples of u lie outside the input range"):
         model.simulate(outside)
+    assert (model.extrapolated_samples(inside), model.extrapolated_samples(outside)) == (0, 3)
     assert issubclass(bonl.ExtrapolationWarning, UserWarning)
 
 

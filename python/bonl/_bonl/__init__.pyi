@@ -43,6 +43,10 @@ class ARX:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
+    def extrapolated_samples(self, u: typing.Any) -> int:
+        """
+        int: how many samples of u lie outside input_range (0: no extrapolation).
+        """
     def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
@@ -208,6 +212,10 @@ class Hammerstein:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
+    def extrapolated_samples(self, u: typing.Any) -> int:
+        """
+        int: how many samples of u lie outside input_range (0: no extrapolation).
+        """
     def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
@@ -398,6 +406,10 @@ class HammersteinWiener:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
+    def extrapolated_samples(self, u: typing.Any) -> int:
+        """
+        int: how many samples of u lie outside input_range (0: no extrapolation).
+        """
     def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
@@ -599,6 +611,10 @@ class PseudoHammersteinWiener:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
+    def extrapolated_samples(self, u: typing.Any) -> int:
+        """
+        int: how many samples of u lie outside input_range (0: no extrapolation).
+        """
     def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.
@@ -791,6 +807,10 @@ class Wiener:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
+    def extrapolated_samples(self, u: typing.Any) -> int:
+        """
+        int: how many samples of u lie outside input_range (0: no extrapolation).
+        """
     def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         One-step-ahead prediction from measured data.

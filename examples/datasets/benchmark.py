@@ -1,5 +1,6 @@
 """What every data-set script shares: select each model family on the estimation data with
-``bonl.select``, simulate the test data with the chosen model and write one results file.
+``bonl.select`` (the held-out data scored with the tests' state-initialisation window), simulate the
+test data with the chosen model and write one results file.
 
 Public API only (``bonl.grid``, ``bonl.select``, ``Model.simulate``, ``Model.to_json``): no offsets or
 scaling by hand. Each script in this folder loads its data set, states its protocol (from the data
@@ -64,6 +65,14 @@ class Benchmark:
     #: whose chosen structure scores best on the held-out estimation data)
     identify: List[Dict[str, object]] = dataclasses.field(default_factory=lambda: [{}])
 
+    @property
+    def window(self) -> int:
+        """The tests' state-initialisation window, which select scores the held-out data with too."""
+        windows = {test.window for test in self.tests}
+        if len(windows) != 1:
+            raise ValueError(f"{self.name}: the tests have different windows {sorted(windows)}")
+        return windows.pop()
+
 
 def _grid(model_class, orders):
     return bonl.grid(model_class, **{name: orders[name] for name in model_class.ORDERS})
@@ -82,7 +91,7 @@ def _run(benchmark, families):
     for family in families or bonl.MODELS:
         candidates = _grid(family, benchmark.orders)
         start = time.perf_counter()
-        selections = [(bonl.select(candidates, benchmark.estimation, **options), options)
+        selections = [(bonl.select(candidates, benchmark.estimation, window=benchmark.window, **options), options)
                       for options in benchmark.identify]
         selection, options = min(selections, key=lambda pair: pair[0].table[0].score)
         seconds = time.perf_counter() - start

@@ -5,7 +5,9 @@ of a grid and ranks them.
   ``grid(bonl.HammersteinWiener, na=[1, 2, 3], nb=[0, 1], nk=[0], r=[2, 3], r1=[2, 3])``;
 - :func:`select`: identifies each candidate and scores it. ``criterion="validation"`` (the default)
   fits on the first part of every record and scores the free-run simulation error on the held-out
-  last part (each record simulated whole, from rest, and scored on its tail only);
+  last part (each record simulated whole, from rest, and scored on its tail only; or, with
+  ``window=n``, the tail simulated after its first n samples as a test record with a
+  state-initialisation window is);
   ``criterion="aic"`` or ``"bic"`` fits on all the data and scores ``N log(mse) + 2 p`` or
   ``N log(mse) + p log(N)`` of the free-run simulation. The best candidate is refitted on all the
   data. Candidates run in parallel: on the local cores by default (``identify`` releases the GIL),
@@ -29,6 +31,7 @@ import concurrent.futures
 import dataclasses
 import itertools
 import math
+import numbers
 import os
 import sys
 import time
@@ -106,12 +109,19 @@ def _records(u: Any, y: Any) -> List[Tuple[np.ndarray, np.ndarray]]:
     return out
 
 
-def _simulation_mse(model: Any, records: Sequence[Tuple[np.ndarray, np.ndarray]], start: Sequence[int]) -> float:
-    """Free-run MSE of each record simulated whole from rest, over its samples from start[i] on."""
+def _simulation_mse(model: Any, records: Sequence[Tuple[np.ndarray, np.ndarray]], start: Sequence[int],
+                    window: int = 0) -> float:
+    """Free-run MSE of each record over its samples from start[i] on: the record simulated whole from
+    rest, or, with a window, its samples from start[i] on simulated after their first ``window``
+    samples (measured, Model.simulate's initial) and scored after them."""
     squared, count = 0.0, 0
     for (u, y), first in zip(records, start):
         try:
-            error = y[first:] - model.simulate(u)[first:]
+            if window:
+                past = (u[first:first + window], y[first:first + window])
+                error = y[first + window:] - model.simulate(u[first + window:], initial=past)
+            else:
+                error = y[first:] - model.simulate(u)[first:]
         except _bonl.NumericalError:
             return math.inf
         # numpy's own pairwise sum, not BLAS's dot: BLAS splits the sum by its thread count, which a
@@ -120,6 +130,11 @@ def _simulation_mse(model: Any, records: Sequence[Tuple[np.ndarray, np.ndarray]]
         count += error.size
     mse = squared / count if count else math.inf
     return mse if math.isfinite(mse) else math.inf
+
+
+def _held_out(samples: int, fraction: float) -> int:
+    """The length of a record's held-out part under criterion 'validation'."""
+    return max(1, int(round(fraction * samples)))
 
 
 def _orders(structure: Any) -> Dict[str, int]:
@@ -133,18 +148,17 @@ def _failed(structure: Any, error: str, seconds: float) -> Candidate:
 
 
 def _fit(structure: Any, records: List[Tuple[np.ndarray, np.ndarray]], criterion: str, fraction: float,
-         options: Dict[str, Any]) -> Candidate:
+         window: int, options: Dict[str, Any]) -> Candidate:
     """Identifies one candidate and scores it (runs where the executor puts it: keep it top-level)."""
     t0 = time.perf_counter()
-    split = [len(u) - max(1, int(round(fraction * len(u)))) if criterion == "validation" else len(u)
-             for u, _ in records]
+    split = [len(u) - _held_out(len(u), fraction) if criterion == "validation" else len(u) for u, _ in records]
     fit_records = [(u[:s], y[:s]) for (u, y), s in zip(records, split)]
     try:
         model = _bonl.identify(structure, fit_records, **options)
     except _bonl.NumericalError as error:
         return _failed(structure, str(error), time.perf_counter() - t0)
     fit_mse = _simulation_mse(model, fit_records, [0] * len(records))
-    validation = _simulation_mse(model, records, split) if criterion == "validation" else None
+    validation = _simulation_mse(model, records, split, window) if criterion == "validation" else None
     n = sum(len(u) for u, _ in fit_records)
     p = structure.num_params
     if criterion == "validation":
@@ -171,8 +185,9 @@ def _progress(total: int, progress: Optional[bool]):
 
 
 def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str = "validation",
-           validation_fraction: float = 0.25, executor: Optional[concurrent.futures.Executor] = None,
-           progress: Optional[bool] = None, **identify_options: Any) -> Selection:
+           validation_fraction: float = 0.25, window: int = 0,
+           executor: Optional[concurrent.futures.Executor] = None, progress: Optional[bool] = None,
+           **identify_options: Any) -> Selection:
     """Fits every candidate structure, ranks them by ``criterion`` and refits the best on all the data.
 
     Parameters
@@ -185,6 +200,12 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
         'validation' (default): the free-run simulation MSE on the last ``validation_fraction`` of every
         record, the candidate fitted on the rest. 'aic', 'bic': information criteria of the free-run
         simulation error on all the data.
+    window : int, default 0
+        criterion 'validation': each held-out part is scored the way a test record with a
+        state-initialisation window of this many samples is: simulated after its first ``window``
+        samples, which set the model's state (``Model.simulate(u, initial=...)``), instead of as the
+        continuation of the whole record simulated from rest. Give the window of the test protocol
+        the model will be judged by.
     executor : concurrent.futures.Executor, optional
         Where the candidates run; default: threads on the local cores. A Dask cluster's
         ``client.get_executor()`` spreads a large grid over many machines.
@@ -210,6 +231,16 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
     if not (isinstance(validation_fraction, (int, float)) and 0.0 < validation_fraction < 1.0):
         raise ValueError(f"bonl: select: validation_fraction must be in (0, 1), got {validation_fraction!r}")
     records = _records(u, y)
+    if isinstance(window, bool) or not isinstance(window, numbers.Integral) or window < 0:
+        raise ValueError(f"bonl: select: window must be an integer >= 0, got {window!r}")
+    window = int(window)
+    if window and criterion != "validation":
+        raise ValueError(f"bonl: select: window applies to criterion 'validation' only, got criterion {criterion!r}")
+    for i, (u_i, _) in enumerate(records):
+        held_out = _held_out(len(u_i), validation_fraction)
+        if window and held_out <= window:
+            raise ValueError(f"bonl: select: records[{i}]'s held-out part ({held_out} samples) must be longer "
+                             f"than the window ({window})")
 
     own = executor is None
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) if own else executor
@@ -222,7 +253,7 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
         warnings.simplefilter("ignore", _bonl.ExtrapolationWarning)
         warnings.simplefilter("ignore", _bonl.StabilityWarning)
         try:
-            futures = [pool.submit(_fit, s, records, criterion, validation_fraction, identify_options)
+            futures = [pool.submit(_fit, s, records, criterion, validation_fraction, window, identify_options)
                        for s in structures]
             index = {future: i for i, future in enumerate(futures)}
             rows: List[Optional[Candidate]] = [None] * len(futures)

@@ -67,3 +67,21 @@ def test_the_committed_cluster_run_ranked_64_candidates_identically():
     assert run["candidates"] == len(run["local"]) == len(run["local_cluster"]) == 64
     assert run["local"] == run["local_cluster"] and run["identical_rankings"] and run["identical_best_theta"]
     assert all(row["error"] is None for row in run["local"])
+
+
+def test_the_chosen_tanks_structures_give_their_committed_figures_on_perturbed_records():
+    """Each chosen structure identified again on the 10 perturbed records gives the committed figures,
+    and the P-H-W's validation RMS moves by less than 5% (issue 18's acceptance)."""
+    perturbation = _script("perturbation")
+    committed = json.loads((RESULTS / "perturbation.json").read_text())
+    rerun = perturbation.structures(_script("cascaded_tanks").make(), _results("cascaded_tanks"))
+    assert rerun.keys() == committed["structure"].keys()
+    for model, row in rerun.items():
+        old = committed["structure"][model]
+        assert (row["orders"], row["identify"]) == (old["orders"], old["identify"])
+        assert [row["unperturbed"], *row["perturbed"]] == pytest.approx([old["unperturbed"], *old["perturbed"]],
+                                                                        rel=1e-9), model
+    assert rerun["PseudoHammersteinWiener"]["spread"] < 0.05
+    page = (ROOT / "docs" / "measured_data.md").read_text()
+    assert perturbation.table(committed) in page
+    assert (ROOT / "docs" / "results" / "perturbation_summary.md").read_text() == perturbation.table(committed) + "\n"

@@ -54,6 +54,16 @@ def test_scores_are_the_criteria_recomputed_from_identify_and_free_run_simulatio
     assert row.score == pytest.approx(u.size * math.log(mse) + structure.num_params * math.log(u.size), rel=1e-12)
 
 
+def test_with_a_window_the_held_out_part_is_scored_after_its_first_samples():
+    _, u, y = _system()
+    structure = bonl.Hammerstein(1, 1, 2, 2)
+    split = u.size - round(0.25 * u.size)
+    (row,) = bonl.select([structure], u, y, window=7).table
+    fitted = bonl.identify(structure, [(u[:split], y[:split])])
+    after = y[split + 7:] - fitted.simulate(u[split + 7:], initial=(u[split:split + 7], y[split:split + 7]))
+    assert row.validation_mse == row.score == pytest.approx(float(after @ after) / after.size, rel=1e-12)
+
+
 def test_several_records_hold_out_the_end_of_each():
     truth, u, y = _system()
     records = [(u[:1000], y[:1000]), (u[1000:], truth.simulate(u[1000:]))]
@@ -123,13 +133,20 @@ def test_progress_bar_on_request(capsys):
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0), "ARX"], u, y), r"candidates\[1\] must be a bonl model, got str"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, criterion="mdl"), "criterion must be one of validation, aic, bic"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, validation_fraction=1.0), r"validation_fraction must be in \(0, 1\)"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=-1), "window must be an integer >= 0, got -1"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=2.5), "window must be an integer >= 0, got 2.5"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=5, criterion="aic"),
+     "window applies to criterion 'validation' only"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=500),
+     r"records\[0\]'s held-out part \(500 samples\) must be longer than the window \(500\)"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u), "y must be a 1-D array of real numbers, got None"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], [(u, y), u]), r"records\[1\] must be a pair \(u, y\)"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, method="best"), "method must be"),
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1]), "ARX takes the orders na, nb, nk; missing: nk"),
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1], nk=[0], r=[2]), "unknown: r"),
     (lambda u, y: bonl.grid(int, na=[1]), "model_class must be one of bonl.MODELS"),
-], ids=["empty", "not a model", "criterion", "fraction", "no y", "not a pair", "identify option", "grid missing",
+], ids=["empty", "not a model", "criterion", "fraction", "negative window", "fractional window", "window with aic",
+        "window too long", "no y", "not a pair", "identify option", "grid missing",
         "grid unknown", "grid class"])
 def test_bad_input_is_a_value_error(call, message):
     _, u, y = _system()

@@ -155,12 +155,16 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
     model.set_operating_point(u0, y0);
     return model;
   }
-  // Two starts for the refinement: the method's recursive estimate and the paper method's (with the
-  // paper method's defaults where the options leave them unset). A start whose recursion broke down
-  // numerically is dropped; if both did, the error is reported.
-  IdentifyOptions paper_options = options;
-  paper_options.method = Method::Paper;
-  const IdentifyOptions* settings[] = {&options, &paper_options};
+  // Two starts for the refinement: the method's recursive estimate and the other refined method's
+  // (output error and equation error, each with its method's defaults where the options leave them
+  // unset). Both are continuous functions of the data, so the result does not jump when the data
+  // change in their last digit. The paper method's estimate is not a start: its internal variables
+  // come from its own free run and switch with the backlash, and on the cascaded tanks a change of
+  // 1e-9 V in the output moved it by O(1) and the refined P-H-W between minima (docs/algorithm.md).
+  // A start whose recursion broke down numerically is dropped; if both did, the error is reported.
+  IdentifyOptions other_options = options;
+  other_options.method = options.method == Method::OutputError ? Method::EquationError : Method::OutputError;
+  const IdentifyOptions* settings[] = {&options, &other_options};
   std::vector<Model> starts;
   std::string failures;
   for (const IdentifyOptions* start : settings) {
@@ -182,7 +186,7 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
 /// records' inputs as its input range (extrapolated_samples()).
 /// - Method::Paper: the recursive estimator of eqs. (21)-(31), `passes` passes.
 /// - Method::OutputError (the default) and Method::EquationError: that recursive estimator,
-///   `passes` passes; then both its estimate and the paper method's are refined by
+///   `passes` passes; then both its estimate and the other method's are refined by
 ///   Levenberg-Marquardt on the free-run simulation error over the records, and the one that
 ///   simulates them better is returned. ARX under Method::EquationError is least squares and
 ///   keeps that estimate (that is what an ARX model is).

@@ -50,11 +50,13 @@ def structures(tanks, chosen):
     return rows
 
 
-def selections(tanks):
-    """The whole selection on each perturbed record: the chosen structure and its validation RMS."""
+def selections(tanks, chosen):
+    """The whole selection on each perturbed record: the chosen structure and its validation RMS (the
+    unperturbed run is the committed one, `chosen`)."""
     rows = {}
+    unperturbed = {row["model"]: row for row in chosen["rows"]}
     for family in bonl.MODELS:
-        runs = [benchmark.run(tanks, [family])["rows"][0]]
+        runs = [unperturbed[family.__name__]]
         for seed in SEEDS:
             again = benchmark.Benchmark(**{**tanks.__dict__, "estimation": perturbed(tanks.estimation, seed)})
             runs.append(benchmark.run(again, [family])["rows"][0])
@@ -91,7 +93,7 @@ def main():
         results = {"data_set": "cascaded-tanks", "noise": NOISE, "seeds": list(SEEDS),
                    "structure": structures(tanks, chosen)}
         if args.select:
-            results["selection"] = selections(tanks)
+            results["selection"] = selections(tanks, chosen)
     print(table(results))
     if args.json:
         args.json.write_text(json.dumps(results, indent=1) + "\n")

@@ -148,6 +148,19 @@ def bonl_bindings(quick: bool) -> dict:
     repeats = 3 if quick else 10
     out["estimator_update_call_ns"] = best_of(repeats, loop_floats) / len(u) * 1e9
     out["estimator_update_call_numpy_scalars_ns"] = best_of(repeats, loop_numpy) / len(u) * 1e9
+
+    # Estimator.update over the whole record in one call (run-time sizes, the GIL released), per
+    # sample, for every model at the paper's orders and each method: against the C++ run-time-size
+    # update of the same structure (update/<model>/dynamic/double[/method] in bonl_bench).
+    paper_orders = dict(na=3, nb=2, nk=8, r=3, r1=3)
+    streaming = {}
+    for model_class in bonl.MODELS:
+        model = model_class(*(paper_orders[name] for name in model_class.ORDERS))
+        for method in ("output_error", "equation_error", "paper"):
+            def stream() -> None:
+                bonl.Estimator(model, method=method).update(u, y)
+            streaming[f"{model_class.__name__}/{method}"] = best_of(repeats, stream) / len(u) * 1e9
+    out["estimator_update_record_ns"] = streaming
     return out
 
 

@@ -162,6 +162,33 @@ def main() -> int:
     update_table = table(["per-sample estimator update (C++)", "params", "ns/sample", "vs textbook RLS",
                           "vs padasip", "updated"], rows)
 
+    # --- Run-time sizes and the Python streaming call (issue 19) ------------------------------------
+    # Per model and method (double): the fixed-size update, the run-time-size one and their ratio; the
+    # Python call over a whole record (Estimator.update(u_array, y_array)) per sample, and its ratio to
+    # the C++ run-time-size update (Python always uses run-time sizes).
+    streaming = py["bonl"].get("estimator_update_record_ns", {})
+    rows = []
+    worst_sizes = worst_streaming = None
+    for key in models:
+        for suffix, method in METHODS:
+            fixed = cpp_ns(f"update/{key}/fixed/double{suffix}")
+            dynamic = cpp_ns(f"update/{key}/dynamic/double{suffix}")
+            python = streaming.get(f"{key}/{method}")
+            sizes_ratio = dynamic / fixed if (fixed and dynamic) else None
+            python_ratio = python / dynamic if (python and dynamic) else None
+            if sizes_ratio is not None:
+                worst_sizes = max(worst_sizes or 0.0, sizes_ratio)
+            if python_ratio is not None:
+                worst_streaming = max(worst_streaming or 0.0, python_ratio)
+            flat[f"{key}_update_record_python_{method}_ns"] = python
+            rows.append([f"{key}, {method}", fmt_ns(fixed), fmt_ns(dynamic),
+                         f"{sizes_ratio:.2f}x" if sizes_ratio else "-", fmt_ns(python),
+                         f"{python_ratio:.2f}x" if python_ratio else "-"])
+    sizes_table = table(["update per sample, double", "fixed size", "run-time size", "run-time / fixed",
+                         "Python, whole record per call", "Python / run-time"], rows)
+    flat["worst_runtime_over_fixed"] = worst_sizes
+    flat["worst_python_record_over_runtime"] = worst_streaming
+
     # --- Free-run simulation -----------------------------------------------------------------------
     rows = []
     for sizes in ("fixed", "dynamic"):
@@ -242,16 +269,21 @@ def main() -> int:
     # --- RLS sweep ---------------------------------------------------------------------------------
     rows = []
     sweep = {}
+    worst_rls = None
     for n in sorted(textbook):
         fixed, dynamic = cpp_ns(f"rls/fixed/{n}"), cpp_ns(f"rls/dynamic/{n}")
         sweep[str(n)] = {"bonl_fixed": fixed, "bonl_dynamic": dynamic, "textbook": textbook[n],
                          "padasip": padasip.get(n), "numpy": numpy_rls.get(n)}
-        rows.append([str(n), fmt_ns(fixed), fmt_ns(dynamic), fmt_ns(textbook[n]), fmt_ns(padasip.get(n)),
-                     fmt_ns(numpy_rls.get(n)), f"{fixed / n**2:.3f}" if fixed else "-",
+        ratio = dynamic / fixed if (fixed and dynamic) else None
+        if ratio is not None:
+            worst_rls = max(worst_rls or 0.0, ratio)
+        rows.append([str(n), fmt_ns(fixed), fmt_ns(dynamic), f"{ratio:.2f}x" if ratio else "-", fmt_ns(textbook[n]),
+                     fmt_ns(padasip.get(n)), fmt_ns(numpy_rls.get(n)), f"{fixed / n**2:.3f}" if fixed else "-",
                      fmt_ratio(padasip.get(n), fixed)])
     flat["rls_sweep_ns"] = sweep
-    sweep_table = table(["n", "Rls<double, n>", "Rls<double> (run-time n)", "textbook Eigen", "padasip", "numpy",
-                         "fixed ns/n^2", "fixed vs padasip"], rows)
+    flat["worst_rls_runtime_over_fixed"] = worst_rls
+    sweep_table = table(["n", "Rls<double, n>", "Rls<double> (run-time n)", "run-time / fixed", "textbook Eigen",
+                         "padasip", "numpy", "fixed ns/n^2", "fixed vs padasip"], rows)
 
     # --- Targets -----------------------------------------------------------------------------------
     speedup = pa / phw if (pa and phw) else None
@@ -269,6 +301,13 @@ def main() -> int:
         ("Python identify, 5000 samples (paper method)", flat["python_identify_5000_ms"], "<= 2 ms",
          flat["python_identify_5000_ms"] <= 2.0, f"{flat['python_identify_5000_ms']:.3f} ms"),
         ("plant real-time factor", rtf, ">= 1000", rtf is not None and rtf >= 1000, f"{rtf:,.0f}"),
+        ("estimator update, run-time over fixed size, worst model and method (issue 19)", worst_sizes, "<= 1.3x",
+         worst_sizes is not None and worst_sizes <= 1.3, f"{worst_sizes:.2f}x" if worst_sizes else "-"),
+        ("RLS core, run-time over fixed size, worst of 4 to 32 parameters (issue 19)", worst_rls, "<= 1.3x",
+         worst_rls is not None and worst_rls <= 1.3, f"{worst_rls:.2f}x" if worst_rls else "-"),
+        ("Python update over a record per sample, over the C++ run-time-size update, worst (issue 19)",
+         worst_streaming, "<= 1.2x", worst_streaming is not None and worst_streaming <= 1.2,
+         f"{worst_streaming:.2f}x" if worst_streaming else "-"),
     ]
     flat["targets"] = {name: {"value": value, "target": target, "met": bool(met)}
                        for name, value, target, met, _ in targets}
@@ -289,6 +328,7 @@ def main() -> int:
     sections = [
         ("Targets", target_table),
         ("Per-sample estimator update", update_table),
+        ("Run-time sizes and the Python call over a record", sizes_table),
         ("Baselines at the P-H-W parameter count", baseline_table),
         ("Whole record", whole_table),
         ("Free-run simulation", simulate_table),

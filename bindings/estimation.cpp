@@ -230,6 +230,14 @@ void def_identify(py::module_& m) {
 }
 
 /// One Python class over the estimators of every model of bonl::Models.
+/// What Estimator.update returns for a record: one status code per sample and, where asked, the
+/// prediction and theta after each sample.
+struct UpdateResults {
+  py::array_t<std::int8_t> status;
+  py::object prediction = py::none();
+  py::object theta = py::none();
+};
+
 class AnyEstimator {
  public:
   using Variant = bonl::ApplyModels<bonl::MapModels<bonl::Models, bonl::Estimator>::type, std::variant>::type;
@@ -240,6 +248,45 @@ class AnyEstimator {
 
   bonl::UpdateStatus update(double u, double y) noexcept {
     return std::visit([&](auto& estimator) { return estimator.update(u, y); }, m_estimator);
+  }
+  /// A record, the GIL released while it runs: bonl::Estimator::update over the arrays, which equals
+  /// the per-sample loop bit for bit.
+  /// (Two 0-d arrays are one sample, as the per-sample overload took them before arrays were accepted.)
+  py::object update_record(const py::array& u_object, const py::array& y_object, bool want_prediction,
+                           bool want_theta) {
+    if (u_object.ndim() == 0 && y_object.ndim() == 0) {
+      return py::cast(update(to_scalar(u_object, "u"), to_scalar(y_object, "y")));
+    }
+    const auto u = to_float64_array(u_object, "u");
+    const auto y = to_float64_array(y_object, "y");
+    const py::ssize_t samples = u.shape(0);
+    bonl::detail::require(y.shape(0) == samples, "u and y must have the same length (u has " +
+                                                     std::to_string(samples) + " samples, y " +
+                                                     std::to_string(y.shape(0)) + ")");
+    const py::ssize_t params = theta().size();
+    UpdateResults results{py::array_t<std::int8_t>(samples)};
+    py::array_t<double> prediction(want_prediction ? samples : 0);
+    py::array_t<double> theta_rows(std::vector<py::ssize_t>{want_theta ? samples : 0, params});
+    std::int8_t* status_out = results.status.mutable_data();
+    double* prediction_out = want_prediction ? prediction.mutable_data() : nullptr;
+    double* theta_out = want_theta ? theta_rows.mutable_data() : nullptr;
+    const Eigen::Map<const Eigen::VectorXd> u_in(u.data(), samples);
+    const Eigen::Map<const Eigen::VectorXd> y_in(y.data(), samples);
+    {
+      py::gil_scoped_release release;
+      std::visit(
+          [&](auto& estimator) {
+            estimator.update(u_in, y_in, [&](Eigen::Index k, bonl::UpdateStatus status) {
+              status_out[k] = static_cast<std::int8_t>(status);
+              if (prediction_out) prediction_out[k] = estimator.last_prediction();
+              if (theta_out) Eigen::Map<Eigen::VectorXd>(theta_out + k * params, params) = estimator.theta();
+            });
+          },
+          m_estimator);
+    }
+    if (want_prediction) results.prediction = std::move(prediction);
+    if (want_theta) results.theta = std::move(theta_rows);
+    return py::cast(std::move(results));
   }
   Eigen::VectorXd theta() const {
     return std::visit([](const auto& estimator) { return Eigen::VectorXd(estimator.theta()); }, m_estimator);
@@ -383,18 +430,32 @@ backlash_hold : int, default 200
     output_error, P-H-W: c is held at 0 for this many samples from the start.
 )doc");
   bonl::for_each_model(bonl::Models{}, [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
+  py::class_<UpdateResults>(m, "UpdateResults", "What Estimator.update returns for arrays of samples.")
+      .def_readonly("status", &UpdateResults::status,
+                    "numpy.ndarray of int8: each sample's UpdateStatus, as int(UpdateStatus.<name>)")
+      .def_readonly("prediction", &UpdateResults::prediction,
+                    "numpy.ndarray or None: last_prediction after each sample (when asked for)")
+      .def_readonly("theta", &UpdateResults::theta,
+                    "numpy.ndarray (samples, n) or None: theta after each sample (when asked for)");
   estimator
-      .def("update", &AnyEstimator::update, py::arg("u"), py::arg("y"), R"doc(Process one sample.
+      .def("update", &AnyEstimator::update_record, py::arg("u"), py::arg("y"), py::kw_only(),
+           py::arg("prediction") = false, py::arg("theta") = false)
+      .def("update", &AnyEstimator::update, py::arg("u"), py::arg("y"), R"doc(Process one sample, or a record.
 
 Parameters
 ----------
-u, y : float
-    Input and measured output at this sample.
+u, y : float, or 1-D numpy arrays of equal length
+    Input and measured output: one sample, or a record processed in one call with the GIL released
+    (the same, bit for bit, as calling update on each sample in turn).
+prediction, theta : bool, default False
+    Arrays only: also return last_prediction, and theta, after every sample.
 
 Returns
 -------
-UpdateStatus
-    A non-finite u or y is rejected (rejected_non_finite) and leaves the state untouched.)doc")
+UpdateStatus, for one sample; UpdateResults for arrays (``status``, an int8 array of
+``int(UpdateStatus.<name>)`` codes, and ``prediction``, ``theta`` when asked for).
+    A non-finite u or y is rejected (rejected_non_finite) and leaves the state untouched.
+    An Estimator must not be used from two threads at once.)doc")
       .def_property_readonly("theta", &AnyEstimator::theta, "numpy.ndarray: current estimate (eq. 19 order).")
       .def_property_readonly("covariance", &AnyEstimator::covariance, "numpy.ndarray: current P (symmetric).")
       .def_property_readonly("model", &AnyEstimator::model, "The current estimate as a model.")

@@ -13,6 +13,7 @@ inline long g_eigen_allocations = 0;
 #define eigen_assert(x) ((x) ? static_cast<void>(0) : static_cast<void>(++bonl_test::g_eigen_allocations))
 
 #include <optional>
+#include <vector>
 
 #include "counting_allocator.hpp"
 #include "test_support.hpp"
@@ -46,6 +47,15 @@ void check_updates_allocate_nothing(const Model& structure, const std::optional<
     CHECK(heap_allocations_in([&] {
             for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
             estimator.update(std::nan(""), 0.0);
+          }) == 0);
+    // The same record again in one call (Estimator::update over arrays), its outputs preallocated.
+    std::vector<bonl::UpdateStatus> statuses(static_cast<std::size_t>(u.size()));
+    Eigen::VectorXd predictions(u.size());
+    CHECK(heap_allocations_in([&] {
+            estimator.update(u, y, [&](Eigen::Index k, bonl::UpdateStatus status) {
+              statuses[static_cast<std::size_t>(k)] = status;
+              predictions[k] = estimator.last_prediction();
+            });
           }) == 0);
     CHECK(estimator.health().failures == 0);
     const auto p = estimator.covariance();

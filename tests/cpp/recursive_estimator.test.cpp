@@ -14,6 +14,7 @@
 #include "test_support.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -337,4 +338,67 @@ TEST_CASE("compile-time and run-time orders run the same recursion", "[estimator
   // within the first 200 predictions of an SSE2 build).
   check_same_recursion(bonl_test::known_hammerstein_wiener(), bonl::HammersteinWienerd(3, 2, kNk, 3, 3), Method::EquationError);
   check_same_recursion(bonl_test::known_phw(), bonl::PseudoHammersteinWienerd(3, 2, kNk, 3), Method::EquationError);
+}
+
+namespace {
+/// The record in one call against the loop over its samples, from the same start: every status,
+/// prediction and theta after each sample, and the final covariance and health, bit for bit.
+template <class Model>
+void check_record_equals_loop(const Model& structure, bonl::Method method) {
+  INFO(Model::kName << ", method " << static_cast<int>(method));
+  Eigen::VectorXd u = bonl::signals::random_levels(1500, 5, 1.0, 8);
+  Eigen::VectorXd y = structure.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 9);
+  u[300] = std::nan("");                                   // rejected inside the record,
+  y[700] = std::numeric_limits<double>::infinity();        // exactly as in the loop
+  bonl::EstimatorOptions options;
+  options.method = method;
+  bonl::Estimator<Model> looped(structure, options);
+  bonl::Estimator<Model> streamed(structure, options);
+  std::vector<bonl::UpdateStatus> statuses;
+  std::vector<double> predictions;
+  Eigen::MatrixXd thetas(structure.num_params(), u.size());
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    statuses.push_back(looped.update(u[k], y[k]));
+    predictions.push_back(looped.last_prediction());
+    thetas.col(k) = looped.theta();
+  }
+  Eigen::Index calls = 0;
+  streamed.update(u, y, [&](Eigen::Index k, bonl::UpdateStatus status) {
+    REQUIRE(k == calls++);
+    REQUIRE(status == statuses[static_cast<std::size_t>(k)]);
+    REQUIRE(streamed.last_prediction() == predictions[static_cast<std::size_t>(k)]);
+    REQUIRE((streamed.theta().array() == thetas.col(k).array()).all());
+  });
+  CHECK(calls == u.size());
+  CHECK(statuses[300] == bonl::UpdateStatus::RejectedNonFinite);
+  CHECK(statuses[700] == bonl::UpdateStatus::RejectedNonFinite);
+  CHECK((streamed.covariance().array() == looped.covariance().array()).all());
+  CHECK(streamed.health().failures == looped.health().failures);
+  CHECK(streamed.samples() == looped.samples());
+}
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("a record in one call equals the loop over its samples, bit for bit", "[estimator]",
+                        bonl::Models) {
+  for (const bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
+    check_record_equals_loop(bonl_test::known_system<TestType>(), method);
+  }
+}
+
+TEST_CASE("a record in one call with fixed sizes equals the loop too", "[estimator]") {
+  check_record_equals_loop(bonl_test::known_phw(), bonl::Method::OutputError);
+  check_record_equals_loop(bonl_test::known_hammerstein(), bonl::Method::EquationError);
+}
+
+TEST_CASE("a record whose u and y differ in length is refused before its first sample", "[estimator]") {
+  bonl::Estimator<bonl::PseudoHammersteinWienerd> estimator(bonl_test::known_system<bonl::PseudoHammersteinWienerd>());
+  const Eigen::VectorXd theta = estimator.theta();
+  const Eigen::VectorXd u = Eigen::VectorXd::Ones(10);
+  const Eigen::VectorXd y = Eigen::VectorXd::Ones(9);
+  bool called = false;
+  CHECK_THROWS_WITH(estimator.update(u, y, [&](Eigen::Index, bonl::UpdateStatus) { called = true; }),
+                    "bonl: u and y must have the same length (u has 10 samples, y 9)");
+  CHECK_FALSE(called);
+  CHECK(estimator.samples() == 0);
+  CHECK((estimator.theta().array() == theta.array()).all());
 }

@@ -61,6 +61,25 @@ TEST_CASE("RLS with forgetting factor 1 equals regularised batch least squares",
   CHECK(relative_difference(rls.theta(), batch_solution(problem, theta0, p0, 1.0)) <= 1e-8);
 }
 
+TEST_CASE("run-time sizes equal weighted batch least squares on every storage size the update dispatches on",
+          "[rls]") {
+  // Run-time sizes run the kernel of their padded storage size (4, 8, 16, 24, 32, and the generic one
+  // above): sizes at, just below and just above each boundary.
+  const Eigen::Index n = GENERATE(1, 3, 4, 5, 7, 8, 9, 14, 16, 17, 23, 24, 25, 31, 32, 33, 40);
+  const Problem problem = random_problem(4 * n + 50, n, 0.1, static_cast<unsigned>(n));
+  const Eigen::VectorXd theta0 = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+  bonl::Rls<double> rls(n, 10.0);
+  rls.reset(theta0, 10.0);
+  for (Eigen::Index k = 0; k < problem.phi.rows(); ++k) {
+    REQUIRE(rls.update(problem.phi.row(k).transpose(), problem.y[k], 0.99));
+  }
+  INFO("n = " << n);
+  CHECK(relative_difference(rls.theta(), batch_solution(problem, theta0, 10.0, 0.99)) <= 1e-8);
+  const Eigen::MatrixXd covariance = rls.covariance();
+  CHECK(covariance.rows() == n);
+  CHECK((covariance - covariance.transpose()).cwiseAbs().maxCoeff() == 0.0);
+}
+
 TEST_CASE("RLS with a constant forgetting factor equals exponentially weighted least squares", "[rls]") {
   const Problem problem = random_problem(300, 8, 0.1, 7);
   const Eigen::VectorXd theta0 = Eigen::VectorXd::Zero(8);

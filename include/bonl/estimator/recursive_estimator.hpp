@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -262,6 +263,20 @@ class Estimator {
       m_since_refresh = 0;
     }
     return finish(status, regression.internal);
+  }
+
+  /// A record in one call: update(u[k], y[k]) for k = 0, 1, ... in order, and after each
+  /// on_sample(k, status), where last_prediction() and theta() are that sample's. The same, bit for
+  /// bit, as the loop; no allocation of its own. u and y: vectors of equal length, else
+  /// std::invalid_argument before the first sample (nothing changed).
+  template <typename U, typename Y, typename OnSample>
+  void update(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y, OnSample&& on_sample) {
+    if (u.cols() != 1 || y.cols() != 1) detail::fail("u and y must be vectors (one column each)");
+    if (u.size() != y.size()) {
+      detail::fail("u and y must have the same length (u has " + std::to_string(u.size()) + " samples, y " +
+                   std::to_string(y.size()) + ")");
+    }
+    for (Eigen::Index k = 0; k < u.size(); ++k) on_sample(k, update(Scalar(u[k]), Scalar(y[k])));
   }
 
   const Params& theta() const noexcept { return m_rls.theta(); }

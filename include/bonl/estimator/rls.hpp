@@ -126,38 +126,64 @@ class Rls {
     }
   }
 
-  static Eigen::Index storage_size(Eigen::Index n) { return N_ == Eigen::Dynamic ? n : kStorage; }
+  static Eigen::Index storage_size(Eigen::Index n) { return detail::padded_size(int(n)); }
 
   template <bool kGivenError, typename Phi>
   bool dispatch(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda, Scalar max_trace) noexcept {
     if constexpr (N_ == Eigen::Dynamic) {
-      return update<kGivenError>(phi, target_or_error, lambda, max_trace, m_scratch, m_next);  // preallocated
+      // Run-time sizes run the kernel of their padded storage size fixed at compile time: what makes
+      // the fixed sizes fast is the column length known to the compiler (whole SIMD registers, no
+      // remainder loops), not the column count. Above 32 parameters, the generic kernel.
+      switch (m_M.rows()) {
+        case 4: return update_padded<kGivenError, 4>(phi, target_or_error, lambda, max_trace);
+        case 8: return update_padded<kGivenError, 8>(phi, target_or_error, lambda, max_trace);
+        case 16: return update_padded<kGivenError, 16>(phi, target_or_error, lambda, max_trace);
+        case 24: return update_padded<kGivenError, 24>(phi, target_or_error, lambda, max_trace);
+        case 32: return update_padded<kGivenError, 32>(phi, target_or_error, lambda, max_trace);
+        default: return update<kGivenError>(m_M, phi, target_or_error, lambda, max_trace, m_scratch, m_next);
+      }
     } else {
       StorageVector work;  // on the stack; as locals they cannot alias phi, which keeps them in registers
       Vector next;
-      return update<kGivenError>(phi, target_or_error, lambda, max_trace, work, next);
+      return update<kGivenError>(m_M, phi, target_or_error, lambda, max_trace, work, next);
     }
   }
 
-  template <bool kGivenError, typename Phi>
-  BONL_FLATTEN bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
-                           Scalar max_trace, StorageVector& work, Vector& next) noexcept {
-    const Eigen::Index n = size();
+  /// The run-time-size update on its storage viewed at the fixed size kStorageSize (see dispatch).
+  template <bool kGivenError, int kStorageSize, typename Phi>
+  bool update_padded(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
+                     Scalar max_trace) noexcept {
+    Eigen::Map<Eigen::Matrix<Scalar, kStorageSize, kStorageSize>> storage(m_M.data());
+    Eigen::Matrix<Scalar, kStorageSize, 1> work;
+    return update<kGivenError>(storage, phi, target_or_error, lambda, max_trace, work, m_next);
+  }
+
+  /// The update of the covariance storage M (m_M, or a fixed-size view of it); work has the length
+  /// of M's columns, next the length of theta.
+  template <bool kGivenError, typename Storage, typename Phi, typename Work, typename Next>
+  BONL_FLATTEN bool update(Storage& M, const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
+                           Scalar max_trace, Work& work, Next& next) noexcept {
+    // n <= the column length, which a fixed-length view states to the compiler (GCC's array-bounds
+    // analysis otherwise sees the run-time-length expressions below reading past a 4-entry work).
+    constexpr Eigen::Index kColumn = Work::RowsAtCompileTime;
+    const Eigen::Index n = kColumn == Eigen::Dynamic ? size() : std::min(size(), kColumn);
     // work = M phi, as a sum of columns: vectorised axpys over whole (padded) columns, no horizontal
-    // reductions. The padding rows of M are zero, so work's padding is zero too. Fixed sizes sum
-    // even and odd columns separately, in locals: two dependency chains of n / 2 fused multiply-adds
-    // in registers instead of one of n through `work`, a reference (a store and a reload per step).
-    if constexpr (N_ == Eigen::Dynamic) {
-      work = m_M.col(0) * phi[0];
-      for (Eigen::Index j = 1; j < n; ++j) work += m_M.col(j) * phi[j];
+    // reductions. The padding rows of M are zero, so work's padding is zero too. Fixed sizes sum even
+    // and odd columns separately, in locals: two dependency chains of n / 2 fused multiply-adds in
+    // registers instead of one of n through `work`, a reference (a store and a reload per step).
+    // Run-time sizes keep the one chain: the same sums in the same order whatever their storage, so
+    // that their results (and identify's, which runs them) do not depend on the kernel dispatched.
+    if constexpr (Work::RowsAtCompileTime == Eigen::Dynamic || N_ == Eigen::Dynamic) {
+      work = M.col(0) * phi[0];
+      for (Eigen::Index j = 1; j < n; ++j) work += M.col(j) * phi[j];
     } else {
-      StorageVector even = m_M.col(0) * phi[0];  // locals: kept in registers
-      StorageVector odd = StorageVector::Zero();
+      Work even = M.col(0) * phi[0];  // locals: kept in registers
+      Work odd = Work::Zero();
       for (Eigen::Index j = 1; j + 1 < n; j += 2) {
-        odd += m_M.col(j) * phi[j];
-        even += m_M.col(j + 1) * phi[j + 1];
+        odd += M.col(j) * phi[j];
+        even += M.col(j + 1) * phi[j + 1];
       }
-      if (n % 2 == 0) odd += m_M.col(n - 1) * phi[n - 1];
+      if (n % 2 == 0) odd += M.col(n - 1) * phi[n - 1];
       work = even + odd;
     }
     const auto g = work.template head<N_>(n);
@@ -174,7 +200,7 @@ class Rls {
     // roundings of M_ii: below that the subtraction has cancelled and what is left is round-off (a
     // direction pinned down beyond P's resolution, e.g. one input of 1e5 with P(0) = 1e6 I, left
     // P_00 = 0 exactly and "Updated"; found by fuzzing).
-    const auto diagonal = m_M.diagonal().template head<N_>(n).array();
+    const auto diagonal = M.diagonal().template head<N_>(n).array();
     constexpr Scalar kMargin = Scalar(64) * std::numeric_limits<Scalar>::epsilon();
     if (!((diagonal - gain * g.array().square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
     // Forgetting would overflow P (possible only without a ceiling: the trace can only fall by the
@@ -187,15 +213,15 @@ class Rls {
     m_theta = next;
     // Column by column (only the n used ones): entry (i, j) is M_ij - gain (g_i g_j) and (j, i) is
     // M_ji - gain (g_j g_i), the same number because multiplication is commutative.
-    for (Eigen::Index j = 0; j < n; ++j) m_M.col(j) -= gain * (work * work[j]);
+    for (Eigen::Index j = 0; j < n; ++j) M.col(j) -= gain * (work * work[j]);
     m_forgetting_limited = false;
     if (lambda != Scalar(1) || m_process_noise > Scalar(0)) {
       // The ceiling is applied to the trace after the downdate as computed, not as
       // trace(P) - gain |g|^2, which cancels when the downdate removes most of P (a tiny lambda
       // overshot the ceiling).
-      Scalar trace = m_scale * m_M.diagonal().template head<N_>(n).sum();
+      Scalar trace = m_scale * M.diagonal().template head<N_>(n).sum();
       if (m_process_noise > Scalar(0)) {
-        m_M.diagonal().template head<N_>(n).array() += m_process_noise / m_scale;
+        M.diagonal().template head<N_>(n).array() += m_process_noise / m_scale;
         trace += Scalar(n) * m_process_noise;
       }
       Scalar growth = inverse_lambda;
@@ -221,7 +247,7 @@ class Rls {
   }
 
   Vector m_theta;
-  StorageMatrix m_M;      // P / m_scale in the top-left n x n corner, zero padding (fixed sizes only)
+  StorageMatrix m_M;      // P / m_scale in the top-left n x n corner, zero padding to padded_size(n)
   Scalar m_scale = Scalar(1);
   Vector m_next;          // scratch for run-time sizes
   StorageVector m_scratch;  // scratch for run-time sizes

@@ -10,7 +10,7 @@ import typing
 from . import metrics
 from . import plant
 from . import experiment
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateStatus', 'Wiener', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     pass
 class ARX:
@@ -1126,19 +1126,28 @@ class Estimator:
             after each update; ``internal``: array (k,), the internal variable x(k) the update used (NaN for
             ARX); ``status``: list of UpdateStatus.
         """
+    @typing.overload
+    def update(self, u: numpy.ndarray, y: numpy.ndarray, *, prediction: bool = False, theta: bool = False) -> typing.Any:
+        ...
+    @typing.overload
     def update(self, u: typing.SupportsFloat | typing.SupportsIndex, y: typing.SupportsFloat | typing.SupportsIndex) -> UpdateStatus:
         """
-        Process one sample.
+        Process one sample, or a record.
         
         Parameters
         ----------
-        u, y : float
-            Input and measured output at this sample.
+        u, y : float, or 1-D numpy arrays of equal length
+            Input and measured output: one sample, or a record processed in one call with the GIL released
+            (the same, bit for bit, as calling update on each sample in turn).
+        prediction, theta : bool, default False
+            Arrays only: also return last_prediction, and theta, after every sample.
         
         Returns
         -------
-        UpdateStatus
+        UpdateStatus, for one sample; UpdateResults for arrays (``status``, an int8 array of
+        ``int(UpdateStatus.<name>)`` codes, and ``prediction``, ``theta`` when asked for).
             A non-finite u or y is rejected (rejected_non_finite) and leaves the state untouched.
+            An Estimator must not be used from two threads at once.
         """
     @property
     def covariance(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
@@ -1184,6 +1193,25 @@ class Estimator:
     def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
         numpy.ndarray: current estimate (eq. 19 order).
+        """
+class UpdateResults:
+    """
+    What Estimator.update returns for arrays of samples.
+    """
+    @property
+    def prediction(self) -> typing.Any:
+        """
+        numpy.ndarray or None: last_prediction after each sample (when asked for)
+        """
+    @property
+    def status(self) -> numpy.typing.NDArray[numpy.int8]:
+        """
+        numpy.ndarray of int8: each sample's UpdateStatus, as int(UpdateStatus.<name>)
+        """
+    @property
+    def theta(self) -> typing.Any:
+        """
+        numpy.ndarray (samples, n) or None: theta after each sample (when asked for)
         """
 @typing.overload
 def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> ARX:

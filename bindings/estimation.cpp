@@ -6,6 +6,7 @@
 #include <bonl/estimator.hpp>
 #include <bonl/models.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -229,7 +230,6 @@ void def_identify(py::module_& m) {
       py::arg("operating_point") = py::none(), kIdentifyDoc);
 }
 
-/// One Python class over the estimators of every model of bonl::Models.
 /// What Estimator.update returns for a record: one status code per sample and, where asked, the
 /// prediction and theta after each sample.
 struct UpdateResults {
@@ -238,6 +238,7 @@ struct UpdateResults {
   py::object theta = py::none();
 };
 
+/// One Python class over the estimators of every model of bonl::Models.
 class AnyEstimator {
  public:
   using Variant = bonl::ApplyModels<bonl::MapModels<bonl::Models, bonl::Estimator>::type, std::variant>::type;
@@ -259,10 +260,8 @@ class AnyEstimator {
     }
     const auto u = to_float64_array(u_object, "u");
     const auto y = to_float64_array(y_object, "y");
-    const py::ssize_t samples = u.shape(0);
-    bonl::detail::require(y.shape(0) == samples, "u and y must have the same length (u has " +
-                                                     std::to_string(samples) + " samples, y " +
-                                                     std::to_string(y.shape(0)) + ")");
+    // Unequal lengths: bonl::Estimator::update refuses them before the first sample.
+    const py::ssize_t samples = std::min(u.shape(0), y.shape(0));
     const py::ssize_t params = theta().size();
     UpdateResults results{py::array_t<std::int8_t>(samples)};
     py::array_t<double> prediction(want_prediction ? samples : 0);
@@ -270,8 +269,8 @@ class AnyEstimator {
     std::int8_t* status_out = results.status.mutable_data();
     double* prediction_out = want_prediction ? prediction.mutable_data() : nullptr;
     double* theta_out = want_theta ? theta_rows.mutable_data() : nullptr;
-    const Eigen::Map<const Eigen::VectorXd> u_in(u.data(), samples);
-    const Eigen::Map<const Eigen::VectorXd> y_in(y.data(), samples);
+    const Eigen::Map<const Eigen::VectorXd> u_in(u.data(), u.shape(0));
+    const Eigen::Map<const Eigen::VectorXd> y_in(y.data(), y.shape(0));
     {
       py::gil_scoped_release release;
       std::visit(

@@ -92,8 +92,8 @@ def _swings(x, delta):
     """How often x turns back by more than delta from its last extreme (a zig-zag count)."""
     count, direction, extreme = 0, 0.0, x[0]
     for value in x[1:]:
-        if (value - extreme) * direction > 0 or (direction == 0 and abs(value - extreme) <= delta):
-            extreme = value if direction else extreme
+        if (value - extreme) * direction > 0:  # on in the same direction
+            extreme = value
         elif abs(value - extreme) > delta:
             count += direction != 0
             direction = 1.0 if value > extreme else -1.0

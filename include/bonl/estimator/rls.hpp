@@ -173,7 +173,7 @@ class Rls {
     // registers instead of one of n through `work`, a reference (a store and a reload per step).
     // Run-time sizes keep the one chain: the same sums in the same order whatever their storage, so
     // that their results (and identify's, which runs them) do not depend on the kernel dispatched.
-    if constexpr (Work::RowsAtCompileTime == Eigen::Dynamic || N_ == Eigen::Dynamic) {
+    if constexpr (N_ == Eigen::Dynamic) {
       work = M.col(0) * phi[0];
       for (Eigen::Index j = 1; j < n; ++j) work += M.col(j) * phi[j];
     } else {

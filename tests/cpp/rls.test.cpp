@@ -7,7 +7,10 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
+#include <utility>
 
 using namespace bonl_test;
 
@@ -61,11 +64,9 @@ TEST_CASE("RLS with forgetting factor 1 equals regularised batch least squares",
   CHECK(relative_difference(rls.theta(), batch_solution(problem, theta0, p0, 1.0)) <= 1e-8);
 }
 
-TEST_CASE("run-time sizes equal weighted batch least squares on every storage size the update dispatches on",
-          "[rls]") {
-  // Run-time sizes run the kernel of their padded storage size (4, 8, 16, 24, 32, and the generic one
-  // above): sizes at, just below and just above each boundary.
-  const Eigen::Index n = GENERATE(1, 3, 4, 5, 7, 8, 9, 14, 16, 17, 23, 24, 25, 31, 32, 33, 40);
+TEST_CASE("run-time sizes equal weighted batch least squares at every size the update dispatches on", "[rls]") {
+  // Run-time sizes run the kernel compiled for their size up to 32 parameters, the generic one above.
+  const Eigen::Index n = GENERATE(range(1, 41));
   const Problem problem = random_problem(4 * n + 50, n, 0.1, static_cast<unsigned>(n));
   const Eigen::VectorXd theta0 = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
   bonl::Rls<double> rls(n, 10.0);
@@ -78,6 +79,52 @@ TEST_CASE("run-time sizes equal weighted batch least squares on every storage si
   const Eigen::MatrixXd covariance = rls.covariance();
   CHECK(covariance.rows() == n);
   CHECK((covariance - covariance.transpose()).cwiseAbs().maxCoeff() == 0.0);
+}
+
+namespace {
+/// Runs Rls<double> (run-time size) and Rls<double, N> side by side through the same updates (the
+/// target and the given-error forms, a refused update, process noise, a trace ceiling, folds of the
+/// scale) and requires theta, P, every return value and the forgetting flag to be identical.
+template <int N>
+void require_run_time_size_equals_fixed() {
+  INFO("n = " << N);
+  const Problem problem = random_problem(600, N, 0.1, 1000 + N);
+  bonl::Rls<double> run_time(N, 1e3);
+  bonl::Rls<double, N> fixed(N, 1e3);
+  run_time.set_process_noise(1e-9);
+  fixed.set_process_noise(1e-9);
+  for (Eigen::Index k = 0; k < problem.phi.rows(); ++k) {
+    // The regressor as a vector (the copy-free path) and as a strided row (the copied one).
+    const Eigen::VectorXd phi = problem.phi.row(k).transpose();
+    const double lambda = k < 300 ? 0.9 : 0.999;  // 0.9 folds the scale every ~350 samples
+    const double ceiling = k % 100 < 50 ? 5e3 : std::numeric_limits<double>::infinity();
+    bool a = false, b = false;
+    if (k % 3 == 0) {
+      a = run_time.update_with_error(problem.phi.row(k).transpose(), problem.y[k], lambda, ceiling);
+      b = fixed.update_with_error(Eigen::Matrix<double, N, 1>(phi), problem.y[k], lambda, ceiling);
+    } else if (k == 200) {  // refused: a non-finite target
+      a = run_time.update(phi, std::nan(""), lambda, ceiling);
+      b = fixed.update(Eigen::Matrix<double, N, 1>(phi), std::nan(""), lambda, ceiling);
+      CHECK(!a);
+    } else {
+      a = run_time.update(phi, problem.y[k], lambda, ceiling);
+      b = fixed.update(Eigen::Matrix<double, N, 1>(phi), problem.y[k], lambda, ceiling);
+    }
+    REQUIRE(a == b);
+    REQUIRE(run_time.forgetting_limited() == fixed.forgetting_limited());
+    REQUIRE((run_time.theta() - fixed.theta()).cwiseAbs().maxCoeff() == 0.0);
+  }
+  CHECK((run_time.covariance() - fixed.covariance()).cwiseAbs().maxCoeff() == 0.0);
+}
+
+template <int... Ns>
+void require_run_time_sizes_equal_fixed(std::integer_sequence<int, Ns...>) {
+  (require_run_time_size_equals_fixed<Ns + 1>(), ...);
+}
+}  // namespace
+
+TEST_CASE("run-time sizes give the fixed sizes' results bit for bit, 1 to 32 parameters", "[rls]") {
+  require_run_time_sizes_equal_fixed(std::make_integer_sequence<int, 32>{});
 }
 
 TEST_CASE("RLS with a constant forgetting factor equals exponentially weighted least squares", "[rls]") {

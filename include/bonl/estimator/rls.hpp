@@ -25,9 +25,11 @@
 //
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "../detail/inlining.hpp"
 #include "../detail/validate.hpp"
@@ -128,52 +130,69 @@ class Rls {
 
   static Eigen::Index storage_size(Eigen::Index n) { return detail::padded_size(int(n)); }
 
+  /// Run-time sizes up to kMaxCompiledSize parameters run the kernel compiled for their size.
+  static constexpr int kMaxCompiledSize = 32;
+
   template <bool kGivenError, typename Phi>
   bool dispatch(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda, Scalar max_trace) noexcept {
     if constexpr (N_ == Eigen::Dynamic) {
-      // Run-time sizes run the kernel of their padded storage size fixed at compile time: what makes
-      // the fixed sizes fast is the column length known to the compiler (whole SIMD registers, no
-      // remainder loops), not the column count. Above 32 parameters, the generic kernel.
-      switch (m_M.rows()) {
-        case 4: return update_padded<kGivenError, 4>(phi, target_or_error, lambda, max_trace);
-        case 8: return update_padded<kGivenError, 8>(phi, target_or_error, lambda, max_trace);
-        case 16: return update_padded<kGivenError, 16>(phi, target_or_error, lambda, max_trace);
-        case 24: return update_padded<kGivenError, 24>(phi, target_or_error, lambda, max_trace);
-        case 32: return update_padded<kGivenError, 32>(phi, target_or_error, lambda, max_trace);
-        default: return update<kGivenError>(m_M, phi, target_or_error, lambda, max_trace, m_scratch, m_next);
+      // Run-time sizes run the fixed-size kernel of their size: the same instructions as Rls<Scalar, n>,
+      // so the same results bit for bit and the same speed. What makes the fixed sizes fast is every
+      // length known to the compiler (whole SIMD registers, unrolled loops, locals in registers).
+      // Above kMaxCompiledSize parameters, the generic kernel.
+      if (size() <= kMaxCompiledSize) {
+        static constexpr auto kKernels =
+            fixed_kernels<kGivenError, Phi>(std::make_integer_sequence<int, kMaxCompiledSize>{});
+        return (this->*kKernels[std::size_t(size() - 1)])(phi, target_or_error, lambda, max_trace);
       }
+      return update<kGivenError>(m_M, m_theta, phi, target_or_error, lambda, max_trace, m_scratch, m_next);
     } else {
       StorageVector work;  // on the stack; as locals they cannot alias phi, which keeps them in registers
       Vector next;
-      return update<kGivenError>(m_M, phi, target_or_error, lambda, max_trace, work, next);
+      return update<kGivenError>(m_M, m_theta, phi, target_or_error, lambda, max_trace, work, next);
     }
   }
 
-  /// The run-time-size update on its storage viewed at the fixed size kStorageSize (see dispatch).
-  template <bool kGivenError, int kStorageSize, typename Phi>
-  bool update_padded(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
-                     Scalar max_trace) noexcept {
-    Eigen::Map<Eigen::Matrix<Scalar, kStorageSize, kStorageSize>> storage(m_M.data());
-    Eigen::Matrix<Scalar, kStorageSize, 1> work;
-    return update<kGivenError>(storage, phi, target_or_error, lambda, max_trace, work, m_next);
+  /// update_fixed for 1 to sizeof...(kSizes) parameters, indexed by the number of parameters - 1.
+  template <bool kGivenError, typename Phi, int... kSizes>
+  static constexpr auto fixed_kernels(std::integer_sequence<int, kSizes...>) noexcept {
+    return std::array{&Rls::update_fixed<kGivenError, kSizes + 1, Phi>...};
   }
 
-  /// The update of the covariance storage M (m_M, or a fixed-size view of it); work has the length
-  /// of M's columns, next the length of theta.
-  template <bool kGivenError, typename Storage, typename Phi, typename Work, typename Next>
-  BONL_FLATTEN bool update(Storage& M, const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
-                           Scalar max_trace, Work& work, Next& next) noexcept {
-    // n <= the column length, which a fixed-length view states to the compiler (GCC's array-bounds
-    // analysis otherwise sees the run-time-length expressions below reading past a 4-entry work).
-    constexpr Eigen::Index kColumn = Work::RowsAtCompileTime;
-    const Eigen::Index n = kColumn == Eigen::Dynamic ? size() : std::min(size(), kColumn);
+  /// The run-time-size update with every length fixed at compile time: its storage, theta and phi
+  /// viewed (phi copied) at size kSize.
+  template <bool kGivenError, int kSize, typename Phi>
+  bool update_fixed(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
+                    Scalar max_trace) noexcept {
+    constexpr int kStorageSize = detail::padded_size(kSize);
+    // m_M's data come from Eigen's allocator, aligned to EIGEN_MAX_ALIGN_BYTES.
+    Eigen::Map<Eigen::Matrix<Scalar, kStorageSize, kStorageSize>, Eigen::AlignedMax> storage(m_M.data());
+    Eigen::Map<Eigen::Matrix<Scalar, kSize, 1>> theta(m_theta.data());
+    Eigen::Matrix<Scalar, kStorageSize, 1> work;
+    Eigen::Matrix<Scalar, kSize, 1> next;
+    if constexpr (bool(Phi::Flags & Eigen::DirectAccessBit) && Phi::InnerStrideAtCompileTime == 1) {
+      const Eigen::Map<const Eigen::Matrix<Scalar, kSize, 1>> regressor(phi.derived().data());
+      return update<kGivenError>(storage, theta, regressor, target_or_error, lambda, max_trace, work, next);
+    } else {
+      const Eigen::Matrix<Scalar, kSize, 1> regressor = phi;
+      return update<kGivenError>(storage, theta, regressor, target_or_error, lambda, max_trace, work, next);
+    }
+  }
+
+  /// The update of the covariance storage M and theta (m_M and m_theta, or fixed-size views of them);
+  /// work has the length of M's columns, next the length of theta.
+  template <bool kGivenError, typename Storage, typename Theta, typename Phi, typename Work, typename Next>
+  BONL_FLATTEN bool update(Storage& M, Theta& theta, const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error,
+                           Scalar lambda, Scalar max_trace, Work& work, Next& next) noexcept {
+    constexpr int kN = Next::RowsAtCompileTime;  // the number of parameters, where known at compile time
+    const Eigen::Index n = theta.size();
     // work = M phi, as a sum of columns: vectorised axpys over whole (padded) columns, no horizontal
     // reductions. The padding rows of M are zero, so work's padding is zero too. Fixed sizes sum even
     // and odd columns separately, in locals: two dependency chains of n / 2 fused multiply-adds in
     // registers instead of one of n through `work`, a reference (a store and a reload per step).
-    // Run-time sizes keep the one chain: the same sums in the same order whatever their storage, so
-    // that their results (and identify's, which runs them) do not depend on the kernel dispatched.
-    if constexpr (N_ == Eigen::Dynamic) {
+    // The generic kernel (run-time sizes above kMaxCompiledSize) keeps the one chain: a local of
+    // run-time length would allocate.
+    if constexpr (kN == Eigen::Dynamic) {
       work = M.col(0) * phi[0];
       for (Eigen::Index j = 1; j < n; ++j) work += M.col(j) * phi[j];
     } else {
@@ -186,13 +205,13 @@ class Rls {
       if (n % 2 == 0) odd += M.col(n - 1) * phi[n - 1];
       work = even + odd;
     }
-    const auto g = work.template head<N_>(n);
+    const auto g = work.template head<kN>(n);
     const Scalar denominator = lambda + m_scale * phi.dot(g);
     if (!(denominator > Scalar(0)) || !std::isfinite(denominator)) return false;
     const Scalar gain = m_scale / denominator;  // K = P phi / denominator = gain M phi
     Scalar error = target_or_error;
-    if constexpr (!kGivenError) error -= phi.dot(m_theta);
-    next = m_theta + (error * gain) * g;
+    if constexpr (!kGivenError) error -= phi.dot(theta);
+    next = theta + (error * gain) * g;
     // All finite: x - x is 0 for a finite x and NaN otherwise, so the sum is exactly 0 when every entry
     // is finite (a vectorised reduction; allFinite() tests and branches entry by entry).
     if (!((next.array() - next.array()).sum() == Scalar(0))) return false;
@@ -200,7 +219,7 @@ class Rls {
     // roundings of M_ii: below that the subtraction has cancelled and what is left is round-off (a
     // direction pinned down beyond P's resolution, e.g. one input of 1e5 with P(0) = 1e6 I, left
     // P_00 = 0 exactly and "Updated"; found by fuzzing).
-    const auto diagonal = M.diagonal().template head<N_>(n).array();
+    const auto diagonal = M.diagonal().template head<kN>(n).array();
     constexpr Scalar kMargin = Scalar(64) * std::numeric_limits<Scalar>::epsilon();
     if (!((diagonal - gain * g.array().square() - kMargin * diagonal).minCoeff() > Scalar(0))) return false;
     // Forgetting would overflow P (possible only without a ceiling: the trace can only fall by the
@@ -210,7 +229,7 @@ class Rls {
     if (lambda != Scalar(1) && !std::isfinite(std::min(m_scale * diagonal.sum() * inverse_lambda, max_trace))) {
       return false;
     }
-    m_theta = next;
+    theta = next;
     // Column by column (only the n used ones): entry (i, j) is M_ij - gain (g_i g_j) and (j, i) is
     // M_ji - gain (g_j g_i), the same number because multiplication is commutative.
     for (Eigen::Index j = 0; j < n; ++j) M.col(j) -= gain * (work * work[j]);
@@ -219,9 +238,9 @@ class Rls {
       // The ceiling is applied to the trace after the downdate as computed, not as
       // trace(P) - gain |g|^2, which cancels when the downdate removes most of P (a tiny lambda
       // overshot the ceiling).
-      Scalar trace = m_scale * M.diagonal().template head<N_>(n).sum();
+      Scalar trace = m_scale * M.diagonal().template head<kN>(n).sum();
       if (m_process_noise > Scalar(0)) {
-        M.diagonal().template head<N_>(n).array() += m_process_noise / m_scale;
+        M.diagonal().template head<kN>(n).array() += m_process_noise / m_scale;
         trace += Scalar(n) * m_process_noise;
       }
       Scalar growth = inverse_lambda;

@@ -13,13 +13,14 @@ void bind_models(py::module_& m);      // models.cpp: one class per model of bon
 void bind_estimation(py::module_& m);  // estimation.cpp: identify, Estimator, UpdateStatus
 void bind_metrics(py::module_& m);     // metrics.cpp: submodule metrics (mse, rmse, nrmse, nrmse_fit)
 void bind_io(py::module_& m);          // io.cpp: to_json on the models, load_model
-void bind_plant(py::module_& m);       // plant.cpp: submodule plant, with the three below
+void bind_plant(py::module_& m);       // plant.cpp: submodule plant, with the four below
 void bind_experiment(py::module_& m);  // experiment.cpp: submodule experiment (run_paper_experiment, its result)
 
 // The parts of the submodule plant:
 void bind_plant_parameters(py::module_& plant);  // plant_parameters.cpp: Parameters, default/small_parameters
 void bind_excitation(py::module_& plant);        // excitation.cpp: Command, submodule excitation
 void bind_plant_simulate(py::module_& plant);    // plant_simulate.cpp: simulate, initial_state, derivative
+void bind_plant_stepping(py::module_& plant);    // plant_stepping.cpp: SteppingPlant, Measurement
 
 /// The warnings bonl gives (models.cpp creates them): a model simulated on inputs outside the range it
 /// was identified on; an identified model that is unstable or barely damped.

@@ -1,6 +1,7 @@
 // bonl._bonl.plant: the CVODE excavator dipper-joint plant (docs/plant.md) from Python. The
 // submodule itself; its parts are bound by plant_parameters.cpp (Parameters), excitation.cpp
-// (Command, the submodule excitation) and plant_simulate.cpp (simulate, initial_state, derivative).
+// (Command, the submodule excitation), plant_simulate.cpp (simulate, initial_state, derivative) and
+// plant_stepping.cpp (SteppingPlant, Measurement).
 
 #include "bindings.hpp"
 
@@ -10,15 +11,16 @@ void bind_plant(py::module_& m) {
   py::module_ sub = m.def_submodule(
       "plant",
       "The excavator dipper-joint plant (docs/plant.md) integrated by SUNDIALS CVODE: parameters,\n"
-      "command signals (submodule ``excitation``) and ``simulate``; the paper's experiment on it is\n"
-      "``bonl.experiment``.");
+      "command signals (submodule ``excitation``), ``simulate`` and ``SteppingPlant`` (one sample per\n"
+      "call); the paper's experiment on it is ``bonl.experiment``.");
 
   bind_plant_parameters(sub);
   bind_excitation(sub);
   bind_plant_simulate(sub);
+  bind_plant_stepping(sub);
 
   sub.attr("__all__") = py::make_tuple("Parameters", "default_parameters", "small_parameters", "Command", "excitation",
-                                       "simulate", "initial_state", "derivative");
+                                       "simulate", "initial_state", "derivative", "SteppingPlant", "Measurement");
 
   // Make `from bonl._bonl.plant import *` and `import bonl._bonl.plant.excitation` work: an
   // extension's submodules are attributes, not importable modules, until sys.modules knows them.

@@ -1,13 +1,14 @@
 #pragma once
-// The plant's arguments as the plant's binding files share them: the parameters (plant_parameters.cpp)
-// and the command signals (excitation.cpp), taken by simulate (plant_simulate.cpp) and the experiment
-// (experiment.cpp).
+// The plant's arguments as the plant's binding files share them: the parameters (plant_parameters.cpp),
+// the command signals (excitation.cpp) and the simulation options (plant_simulate.cpp), taken by
+// simulate (plant_simulate.cpp), SteppingPlant (plant_stepping.cpp) and the experiment (experiment.cpp).
 
 #include <pybind11/pybind11.h>
 
 #include <bonl/plant/parameters.hpp>
 #include <bonl/plant/simulator.hpp>
 
+#include <cstdint>
 #include <string>
 
 namespace bonl_python {
@@ -29,5 +30,18 @@ PyCommand command_argument(const py::object& object, const char* name);
 
 /// A bonl.plant.Parameters, or the defaults for None; TypeError for anything else.
 bonl::plant::Parameters parameters_argument(const py::object& object);
+
+/// h0 [m] from Python's initial_position: None is mid-stroke (-1 for C++); else a real number >= 0
+/// (ValueError naming it).
+double initial_position_argument(const py::object& initial_position);
+
+/// The SimulationOptions from the keyword arguments that simulate and SteppingPlant share (all but
+/// simulate's duration; plant_simulate.cpp): atol a dict by state, initial_position None for
+/// mid-stroke, load a command or None. Sets calls_python when the load is a Python callable.
+bonl::plant::SimulationOptions simulation_options(double sample_time, double command_rate, double rtol,
+                                                  const py::object& atol, long max_steps_per_interval,
+                                                  bool sensor_noise, std::uint64_t noise_seed,
+                                                  const py::object& initial_position, const py::object& load,
+                                                  bool& calls_python);
 
 }  // namespace bonl_python

@@ -1,5 +1,5 @@
 // bonl.plant.simulate, initial_state and derivative: the CVODE plant (bonl/plant/simulator.hpp) from
-// Python, with its trajectory as a dict of numpy arrays.
+// Python, with its trajectory as a dict of numpy arrays; and the options it shares with SteppingPlant.
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -19,6 +19,49 @@
 namespace bonl_python {
 
 namespace plant = bonl::plant;
+
+double initial_position_argument(const py::object& initial_position) {
+  if (initial_position.is_none()) return -1.0;
+  const double h0 = to_scalar(initial_position, "initial_position");
+  bonl::detail::require(std::isfinite(h0) && h0 >= 0.0,
+                        "initial_position must be finite and >= 0 (None means mid-stroke), got " +
+                            bonl::detail::format_number(h0));
+  return h0;
+}
+
+plant::SimulationOptions simulation_options(double sample_time, double command_rate, double rtol, const py::object& atol,
+                                            long max_steps_per_interval, bool sensor_noise, std::uint64_t noise_seed,
+                                            const py::object& initial_position, const py::object& load,
+                                            bool& calls_python) {
+  plant::SimulationOptions options;
+  options.sample_time = sample_time;
+  options.command_rate = command_rate;
+  options.tolerances.relative = rtol;
+  options.tolerances.max_steps_per_interval = max_steps_per_interval;
+  if (!atol.is_none()) {
+    bonl::detail::require(py::isinstance<py::dict>(atol),
+                          "atol must be a dict {state: tolerance} (position, velocity, pressure, spool), got " +
+                              type_name(atol));
+    for (const auto& item : atol.cast<py::dict>()) {
+      const auto key = std::string(py::str(item.first));
+      const double value = to_scalar(item.second, "atol['" + key + "']");
+      if (key == "position") options.tolerances.absolute_position = value;
+      else if (key == "velocity") options.tolerances.absolute_velocity = value;
+      else if (key == "pressure") options.tolerances.absolute_pressure = value;
+      else if (key == "spool") options.tolerances.absolute_spool = value;
+      else bonl::detail::fail("atol: unknown key '" + key + "' (position, velocity, pressure, spool)");
+    }
+  }
+  options.sensor_noise = sensor_noise;
+  options.noise_seed = noise_seed;
+  options.initial_position = initial_position_argument(initial_position);
+  if (!load.is_none()) {
+    const PyCommand l = command_argument(load, "load");
+    calls_python = calls_python || l.calls_python;
+    options.load = l.function;
+  }
+  return options;
+}
 
 namespace {
 
@@ -60,41 +103,10 @@ py::dict simulate(const py::object& command, const py::object& parameters, doubl
                   const py::object& load) {
   const plant::Parameters p = parameters_argument(parameters);
   const PyCommand c = command_argument(command, "command");
-  plant::SimulationOptions options;
-  options.duration = duration;
-  options.sample_time = sample_time;
-  options.command_rate = command_rate;
-  options.tolerances.relative = rtol;
-  options.tolerances.max_steps_per_interval = max_steps_per_interval;
-  if (!atol.is_none()) {
-    bonl::detail::require(py::isinstance<py::dict>(atol),
-                          "atol must be a dict {state: tolerance} (position, velocity, pressure, spool), got " +
-                              type_name(atol));
-    for (const auto& item : atol.cast<py::dict>()) {
-      const auto key = std::string(py::str(item.first));
-      const double value = to_scalar(item.second, "atol['" + key + "']");
-      if (key == "position") options.tolerances.absolute_position = value;
-      else if (key == "velocity") options.tolerances.absolute_velocity = value;
-      else if (key == "pressure") options.tolerances.absolute_pressure = value;
-      else if (key == "spool") options.tolerances.absolute_spool = value;
-      else bonl::detail::fail("atol: unknown key '" + key + "' (position, velocity, pressure, spool)");
-    }
-  }
-  options.sensor_noise = sensor_noise;
-  options.noise_seed = noise_seed;
-  if (!initial_position.is_none()) {
-    const double h0 = to_scalar(initial_position, "initial_position");
-    bonl::detail::require(std::isfinite(h0) && h0 >= 0.0,
-                          "initial_position must be finite and >= 0 (None means mid-stroke), got " +
-                              bonl::detail::format_number(h0));
-    options.initial_position = h0;
-  }
   bool calls_python = c.calls_python;
-  if (!load.is_none()) {
-    const PyCommand l = command_argument(load, "load");
-    calls_python = calls_python || l.calls_python;
-    options.load = l.function;
-  }
+  plant::SimulationOptions options = simulation_options(sample_time, command_rate, rtol, atol, max_steps_per_interval,
+                                                        sensor_noise, noise_seed, initial_position, load, calls_python);
+  options.duration = duration;
   plant::Trajectory trajectory;
   if (calls_python) {
     trajectory = plant::simulate(p, c.function, options);
@@ -115,8 +127,9 @@ void bind_plant_simulate(py::module_& sub) {
           py::arg("initial_position") = py::none(), py::arg("load") = py::none(),
           "Integrate the plant under a command with CVODE (BDF, Newton, dense solver).\n\n"
           "The command is sampled and held on the command grid (``command_rate``), where the pilot\n"
-          "hysteresis and the pin backlash (play operators) are evaluated; CVODE is stopped at every\n"
-          "grid point. The GIL is released unless the command or the load is a Python callable.\n\n"
+          "hysteresis and the pin backlash (play operators) are evaluated; CVODE stops at every output\n"
+          "sample, so sample k depends only on the commands before ``time[k]`` (``SteppingPlant`` steps\n"
+          "the same integration). The GIL is released unless the command or the load is a Python callable.\n\n"
           "Parameters\n----------\n"
           "command : Command or callable or tuple\n"
           "    V(t) [V]: a ``Command`` (``bonl.plant.excitation``), a Python callable f(t) -> float, or a\n"

@@ -7,6 +7,9 @@ joint angle, pin backlash and an inclinometer: the plant the paper's experiment 
 - :class:`Command` and the submodule :mod:`bonl.plant.excitation` (step, multi-sine, the paper's
   multi-sine, smooth random, chirp, sampled hold);
 - :func:`simulate`: every state, flow and angle on the output grid, as a dict of numpy arrays;
+- :class:`SteppingPlant`: the same plant one sample per call, ``measurement = plant.step(command)``
+  (a :class:`Measurement`), equal to :func:`simulate` sample for sample; :class:`SteppingEnv` is a
+  gymnasium-style ``reset``/``step`` over it;
 - :func:`initial_state`, :func:`derivative`: the right-hand side, for independent checks.
 
 The paper's identification experiment on this plant, and the records' signal processing, are
@@ -20,8 +23,10 @@ Examples
 (501,)
 """
 
+import numpy as np
+
 from ._bonl.plant import *  # noqa: F401,F403
-from ._bonl.plant import excitation  # noqa: F401
+from ._bonl.plant import SteppingPlant, excitation  # noqa: F401
 
 __all__ = [
     "Parameters",
@@ -32,4 +37,60 @@ __all__ = [
     "simulate",
     "initial_state",
     "derivative",
+    "SteppingPlant",
+    "Measurement",
+    "SteppingEnv",
 ]
+
+
+class SteppingEnv:
+    """A gymnasium-style environment over :class:`SteppingPlant`, without depending on gymnasium.
+
+    The action is the command voltage [V] (a float or a 1-element array), the observation the
+    measured angle as a 1-element float64 array [rad], ``info`` the :class:`Measurement` as a dict
+    (the true states). The reward is 0.0 (the task is the caller's); ``terminated`` is True when the
+    step reached an end stop; ``truncated`` is always False. There are no ``observation_space`` or
+    ``action_space`` objects (they are gymnasium's).
+
+    Parameters
+    ----------
+    parameters : Parameters, optional
+        The plant; None: ``default_parameters()``.
+    **options
+        :class:`SteppingPlant`'s keyword options (``sample_time``, ``noise_seed``, ``load``, ...).
+
+    Examples
+    --------
+    >>> env = SteppingEnv(sample_time=0.01)
+    >>> observation, info = env.reset(seed=3)
+    >>> observation, reward, terminated, truncated, info = env.step(2.8)
+    >>> info["time"]
+    0.01
+    """
+
+    def __init__(self, parameters=None, **options):
+        self.plant = SteppingPlant(parameters, **options)
+
+    def reset(self, *, seed=None, options=None):
+        """Back to rest at t = 0: ``(observation, info)``.
+
+        ``seed`` is the sensor noise's seed (None: the plant's, so that every episode replays the same
+        noise); ``options`` may hold ``initial_position`` [m].
+        """
+        options = dict(options or {})
+        initial_position = options.pop("initial_position", None)
+        if options:
+            raise ValueError("bonl: SteppingEnv.reset: unknown options %s (initial_position)" % sorted(options))
+        measurement = self.plant.reset(initial_position=initial_position, noise_seed=seed)
+        return self._observation(measurement), measurement.to_dict()
+
+    def step(self, action):
+        """Hold the command ``action`` [V] over one sample: ``(observation, reward, terminated, truncated, info)``."""
+        if np.ndim(action) == 1 and len(action) == 1:
+            action = action[0]
+        measurement = self.plant.step(action)
+        return self._observation(measurement), 0.0, measurement.reached_end_stop, False, measurement.to_dict()
+
+    @staticmethod
+    def _observation(measurement):
+        return np.array([measurement.measured_angle])

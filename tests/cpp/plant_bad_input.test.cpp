@@ -7,6 +7,7 @@
 #include <bonl/plant/excitation.hpp>
 #include <bonl/plant/parameters.hpp>
 #include <bonl/plant/simulator.hpp>
+#include <bonl/plant/stepping_plant.hpp>
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -159,6 +160,90 @@ TEST_CASE("P5-P11 simulate rejects bad options and commands, naming them", "[bad
   plant::SimulationOptions options = short_run();
   options.initial_position = -5.0;
   CHECK(plant::simulate(plant::Parameters{}, excitation::step(2.5), options).position[0] == 0.75);
+}
+
+TEST_CASE("P22 SteppingPlant rejects what simulate rejects, with simulate's messages", "[bad_input][plant]") {
+  // Every option simulate checks except the duration (a stepping plant has none): the same message,
+  // from "bonl: SteppingPlant: " instead of "bonl: simulate: ".
+  const std::vector<std::function<void(plant::SimulationOptions&)>> changes = {
+      [](auto& o) { o.sample_time = 0.0; },
+      [](auto& o) { o.sample_time = kNaN; },
+      [](auto& o) { o.sample_time = 0.0015; },
+      [](auto& o) { o.command_rate = -kInf; },
+      [](auto& o) { o.tolerances.relative = 1.0; },
+      [](auto& o) { o.tolerances.absolute_velocity = 0.0; },
+      [](auto& o) { o.tolerances.absolute_spool = kNaN; },
+      [](auto& o) { o.tolerances.max_steps_per_interval = 0; },
+      [](auto& o) { o.initial_position = 1.6; },
+      [](auto& o) { o.initial_position = kInf; },
+  };
+  const auto message = [](const std::function<void()>& call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("nothing thrown");
+  };
+  for (const auto& change : changes) {
+    plant::SimulationOptions options = short_run();
+    change(options);
+    std::string expected = message([&] { plant::simulate(plant::Parameters{}, excitation::step(3.0), options); });
+    REQUIRE(expected.rfind("bonl: simulate: ", 0) == 0);
+    expected.replace(0, std::string("bonl: simulate: ").size(), "bonl: SteppingPlant: ");
+    CHECK(message([&] { plant::SteppingPlant(plant::Parameters{}, options); }) == expected);
+  }
+  plant::Parameters heavy;
+  heavy.mass = -1.0;
+  check_cases<std::invalid_argument>({
+      {"P22 parameters", [heavy] { plant::SteppingPlant{heavy}; }, "bonl: plant: mass must be > 0 and finite"},
+      {"P22 a sample of 1e9 command intervals",
+       [] {
+         plant::SimulationOptions options;
+         options.sample_time = 1e6;
+         plant::SteppingPlant(plant::Parameters{}, options);
+       },
+       "bonl: SteppingPlant: sample_time gives 1e+09 command intervals per sample (sample_time * command_rate); at most 1e+08"},
+  });
+  // The duration is not the stepping plant's: any value is ignored.
+  plant::SimulationOptions options;
+  options.duration = kNaN;
+  CHECK(plant::SteppingPlant(plant::Parameters{}, options).time() == 0.0);
+}
+
+TEST_CASE("P23-P26 SteppingPlant refuses bad commands, loads and positions and says when it must be reset",
+          "[bad_input][plant]") {
+  // Each refusal of bad input leaves the plant where it was (plant_stepping_plant checks the steps after).
+  plant::SteppingPlant stepping(plant::Parameters{});
+  stepping.step(3.0);
+  check_cases<std::invalid_argument>({
+      {"P23 command NaN", [&] { stepping.step(kNaN); }, "bonl: SteppingPlant: command must be finite, got nan"},
+      {"P23 command -inf", [&] { stepping.step(-kInf); }, "bonl: SteppingPlant: command must be finite, got -inf"},
+      {"P24 load inf",
+       [] {
+         plant::SimulationOptions options;
+         options.load = [](double t) { return t < 0.015 ? 0.0 : kInf; };
+         plant::SteppingPlant loaded(plant::Parameters{}, options);
+         loaded.step(3.0);
+         loaded.step(3.0);
+       },
+       "bonl: SteppingPlant: the load is not finite at t = 0.015 s, got inf"},
+      {"P26 reset to NaN", [&] { stepping.reset(kNaN, 1); }, "bonl: SteppingPlant: initial_position must be finite and <= stroke"},
+      {"P26 reset beyond the stroke", [&] { stepping.reset(2.0, 1); }, "initial_position must be finite and <= stroke (1.5 m)"},
+  });
+  CHECK(stepping.time() == 0.01);
+  plant::SimulationOptions options;
+  options.tolerances.max_steps_per_interval = 1;
+  plant::SteppingPlant failing(plant::Parameters{}, options);
+  CHECK_THROWS_AS(failing.step(4.0), plant::CvodeError);
+  plant::SteppingPlant moved_from(plant::Parameters{});
+  plant::SteppingPlant(std::move(moved_from)).step(2.5);
+  check_cases<std::logic_error>({
+      {"P25 a step after a failed one", [&] { failing.step(2.5); },
+       "bonl: SteppingPlant: a step failed at t = 0 s and left the plant between samples; reset() it"},
+      {"P25 a moved-from plant", [&] { moved_from.step(2.5); },  // NOLINT(bugprone-use-after-move): the test
+       "bonl: SteppingPlant: used after it was moved from"},
+  });
 }
 
 TEST_CASE("P13-P15 excitation generators reject bad arguments, naming them", "[bad_input][plant]") {

@@ -135,8 +135,9 @@ TEST_CASE("the default experiment has the output grid and stays physical") {
   // The joint rate is v / r(h) sample by sample (rounding only).
   CHECK(std::abs(r.joint_rate[2500] - r.velocity[2500] / p.moment_arm(r.position[2500])) < 1e-15);
   // The spool's lag is solved exactly on the command grid, so CVODE steps across the grid points
-  // (the held command enters only through the continuous spool opening): measured 12938 steps for
-  // the 50 000 command intervals. 30 000 guards that, and a run with a step per interval would fail.
+  // (the held command enters only through the continuous spool opening) and stops only at the 5000
+  // output samples: measured 23403 steps for the 50 000 command intervals (12938 when it did not stop
+  // at the samples). 30 000 guards that, and a run with a step per interval would fail.
   CHECK(r.steps > 1000);
   CHECK(r.steps < 30000);
 }
@@ -512,9 +513,28 @@ TEST_CASE("the spool opening is the exact response of its lag to the held pilot 
   CHECK(r.spool[r.time.size() - 1] > 0.99 * xc);
 }
 
-TEST_CASE("the trajectory does not depend on the output grid") {
-  // CVODE is asked for every command-grid point whatever the sample time, so the samples that two
-  // output grids share are the same numbers.
+TEST_CASE("a sample depends only on the commands before it") {
+  // CVODE stops at every output sample, where the next sample's command is not known yet (a
+  // SteppingPlant's situation): sample k is the same number whatever the command does from t_k on.
+  SimulationOptions options;
+  options.duration = 2.0;
+  options.sensor_noise = false;
+  const auto switched = [](double t) { return t < 1.0 ? paper_multisine(t) : 4.0; };
+  const Trajectory a = bonl::plant::simulate(Parameters{}, paper_multisine, options);
+  const Trajectory b = bonl::plant::simulate(Parameters{}, switched, options);
+  for (Eigen::Index k = 0; k <= 100; ++k) {
+    CHECK(a.position[k] == b.position[k]);
+    CHECK(a.velocity[k] == b.velocity[k]);
+    CHECK(a.head_pressure[k] == b.head_pressure[k]);
+    CHECK(a.spool[k] == b.spool[k]);
+    CHECK(a.pin_angle[k] == b.pin_angle[k]);
+  }
+  CHECK(a.pilot[100] != b.pilot[100]);  // the pilot and the command of sample k are those at t_k
+  CHECK(std::abs(a.position[200] - b.position[200]) > 1e-3);
+}
+
+TEST_CASE("the output grid moves the trajectory only within the tolerances") {
+  // The finer grid stops CVODE ten times as often; the spool is exact on the command grid either way.
   SimulationOptions fine;
   fine.duration = 2.0;
   fine.sample_time = 0.001;
@@ -524,13 +544,20 @@ TEST_CASE("the trajectory does not depend on the output grid") {
   const Trajectory a = bonl::plant::simulate(Parameters{}, paper_multisine, fine);
   const Trajectory b = bonl::plant::simulate(Parameters{}, paper_multisine, coarse);
   REQUIRE(b.time.size() == 201);
+  double position = 0.0, pressure = 0.0, pin = 0.0;
   for (Eigen::Index k = 0; k < b.time.size(); ++k) {
-    CHECK(a.position[10 * k] == b.position[k]);
-    CHECK(a.head_pressure[10 * k] == b.head_pressure[k]);
     CHECK(a.spool[10 * k] == b.spool[k]);
-    CHECK(a.pin_angle[10 * k] == b.pin_angle[k]);
+    position = std::max(position, std::abs(a.position[10 * k] - b.position[k]));
+    pressure = std::max(pressure, std::abs(a.head_pressure[10 * k] - b.head_pressure[k]));
+    pin = std::max(pin, std::abs(a.pin_angle[10 * k] - b.pin_angle[k]));
   }
-  CHECK(a.steps == b.steps);
+  INFO("position " << position << " m, head pressure " << pressure << " Pa, pin angle " << pin << " rad");
+  // Measured 3.1e-7 m, 185 Pa and 3.7e-7 rad (5.8e-7 m, 185 Pa, 8.1e-7 rad over the 50 s experiment):
+  // the global error of rtol = 1e-6, well inside what the RK4 oracle above allows (1e-5 m, 5 kPa).
+  CHECK(position < 2e-6);
+  CHECK(pressure < 1e3);
+  CHECK(pin < 2e-6);
+  CHECK(a.steps > b.steps);
 }
 
 TEST_CASE("a load that changes on the command grid is held, with CVODE stopped at each change") {

@@ -555,6 +555,77 @@ def test_p12_an_integration_cvode_cannot_finish_is_a_numerical_error():
     assert isinstance(error, ArithmeticError)
 
 
+# The options simulate rejects, but for the duration (a stepping plant has none): SteppingPlant
+# rejects them with the same exception and message (a load only when a step reads it).
+STEPPING_OPTIONS = [(o, e, m) for o, e, m in BAD_OPTIONS if "duration" not in o and "duration" not in m]
+
+
+@pytest.mark.parametrize("options, exception, message", STEPPING_OPTIONS, ids=[repr(o) for o, _, _ in STEPPING_OPTIONS])
+def test_p22_stepping_plant_options_as_simulate(options, exception, message):
+    message = message.replace("incompatible function arguments", "incompatible constructor arguments")
+    error = raises(exception, message, lambda: plant.SteppingPlant(**options).step(2.5))
+    assert "simulate" not in str(error)
+
+
+def test_p22_stepping_plant_parameters_and_its_own_limit():
+    raises(ValueError, "bonl: plant: mass must be > 0 and finite", plant.SteppingPlant, plant.Parameters(mass=-1.0))
+    raises(TypeError, "parameters must be a bonl.plant.Parameters or None, got dict", plant.SteppingPlant, {})
+    raises(ValueError, "sample_time gives 1e+09 command intervals per sample (sample_time * command_rate); at most 1e+08",
+           plant.SteppingPlant, sample_time=1e6)
+    raises(TypeError, "incompatible constructor arguments", plant.SteppingPlant, duration=1.0)
+
+
+@pytest.mark.parametrize(
+    "command, message",
+    [(NAN, "bonl: SteppingPlant: command must be finite, got nan"), (-INF, "command must be finite, got -inf"),
+     ("2.5", "bonl: command must be a real number, got str"), (None, "command must be a real number, got None"),
+     (1j, "command must be a real number, got complex"), ([2.5], "command must be a real number, got list"),
+     (np.array([2.5]), "command must be a real number, got ndarray")],
+    ids=repr)
+def test_p23_a_bad_command_is_refused_and_changes_nothing(command, message):
+    stepping = plant.SteppingPlant()
+    stepping.step(3.0)
+    before = stepping.measurement.to_dict()
+    raises(ValueError, message, stepping.step, command)
+    assert stepping.measurement.to_dict() == before
+
+
+@pytest.mark.parametrize(
+    "load, exception, message",
+    [(lambda t: INF if t >= 0.015 else 0.0, ValueError, "bonl: SteppingPlant: the load is not finite at t = 0.015 s, got inf"),
+     (lambda t: "100" if t >= 0.015 else 0.0, ValueError, "the value of load(t) at t = 0.015 must be a real number, got str"),
+     (lambda t: {}["missing"] if t >= 0.015 else 0.0, KeyError, "missing")],
+    ids=["inf", "str", "raises"])
+def test_p24_a_bad_load_within_a_step_is_refused_and_changes_nothing(load, exception, message):
+    stepping = plant.SteppingPlant(load=load)
+    stepping.step(3.0)
+    before = stepping.measurement.to_dict()
+    raises(exception, message, stepping.step, 3.0)
+    assert stepping.measurement.to_dict() == before
+
+
+def test_p25_a_step_after_a_cvode_failure_asks_for_a_reset():
+    stepping = plant.SteppingPlant(max_steps_per_interval=1)
+    raises(bonl.NumericalError, "bonl: SteppingPlant: CVode failed with CV_TOO_MUCH_WORK", stepping.step, 4.0)
+    raises(RuntimeError, "a step failed at t = 0 s and left the plant between samples; reset() it", stepping.step, 2.5)
+    assert stepping.reset().time == 0.0
+
+
+def test_p26_a_bad_reset_changes_nothing():
+    stepping = plant.SteppingPlant()
+    stepping.step(3.0)
+    for position, exception, message in [
+        (NAN, ValueError, "initial_position must be finite and >= 0"),
+        (1.6, ValueError, "bonl: SteppingPlant: initial_position must be finite and <= stroke (1.5 m)"),
+        ("0.5", ValueError, "initial_position must be a real number, got str"),
+    ]:
+        raises(exception, message, stepping.reset, initial_position=position)
+    raises(TypeError, "incompatible function arguments", stepping.reset, noise_seed=-1)
+    assert stepping.time == 0.01
+    raises(ValueError, "bonl: SteppingEnv.reset: unknown options ['seed'] (initial_position)",
+           plant.SteppingEnv().reset, options={"seed": 1})
+
+
 @pytest.mark.parametrize(
     "make, message",
     [

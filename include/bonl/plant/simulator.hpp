@@ -4,7 +4,9 @@
 // stage's hysteresis and the pin backlash, both play operators, are evaluated. The held pilot output
 // drives only the spool's linear lag, which is solved exactly interval by interval; the spool
 // opening is therefore continuous and CVODE integrates the other four states (h, v, p1, p2) across
-// the grid points, which it reports by interpolation. It stops where a held load changes.
+// the grid points, which it reports by interpolation. It stops at every output sample (where the
+// next sample's command may not be known yet: sample k depends only on the commands before t_k, and
+// simulate is a loop over the stepping plant's core, stepping_plant.hpp) and where a held load changes.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -96,7 +98,9 @@ State derivative(const Parameters& parameters, const State& state, double pilot,
 double gravity_force(const Parameters& parameters, double position);
 
 /// Integrates the plant under `command`. Validates parameters and options (std::invalid_argument);
-/// a CVODE failure throws CvodeError with CVODE's flag and the time reached.
+/// a CVODE failure throws CvodeError with CVODE's flag and the time reached. Sample k is the state
+/// at t_k with the command V(t_k) and the pilot output after it; a SteppingPlant stepped with the
+/// command held over each sample gives the same samples.
 Trajectory simulate(const Parameters& parameters, const Command& command, const SimulationOptions& options = {});
 
 }  // namespace bonl::plant

@@ -1,14 +1,14 @@
 """
 The excavator dipper-joint plant (docs/plant.md) integrated by SUNDIALS CVODE: parameters,
-command signals (submodule ``excitation``) and ``simulate``; the paper's experiment on it is
-``bonl.experiment``.
+command signals (submodule ``excitation``), ``simulate`` and ``SteppingPlant`` (one sample per
+call); the paper's experiment on it is ``bonl.experiment``.
 """
 from __future__ import annotations
 import collections.abc
 import numpy
 import typing
 from . import excitation
-__all__: tuple = ('Parameters', 'default_parameters', 'small_parameters', 'Command', 'excitation', 'simulate', 'initial_state', 'derivative')
+__all__: tuple = ('Parameters', 'default_parameters', 'small_parameters', 'Command', 'excitation', 'simulate', 'initial_state', 'derivative', 'SteppingPlant', 'Measurement')
 class Parameters:
     """
     Parameters of the excavator dipper-joint plant (docs/plant.md).
@@ -559,6 +559,197 @@ class Command:
         """
         True when the command wraps a Python callable (``simulate`` then keeps the GIL).
         """
+class Measurement:
+    """
+    The plant at one sample time t_k, as ``SteppingPlant.step`` returns it: the
+    measured angle, and the true states for analysis (simulate's sample k).
+    """
+    def __repr__(self) -> str:
+        ...
+    def to_dict(self) -> dict:
+        """
+        Every field by name.
+        
+        Returns
+        -------
+        dict[str, float | bool]
+        """
+    @property
+    def head_flow(self) -> float:
+        """
+        float: Q1, into the head chamber [m^3/s].
+        """
+    @property
+    def head_pressure(self) -> float:
+        """
+        float: p1 [Pa].
+        """
+    @property
+    def joint_angle(self) -> float:
+        """
+        float: theta [rad].
+        """
+    @property
+    def joint_rate(self) -> float:
+        """
+        float: dtheta/dt = v / r(h) [rad/s].
+        """
+    @property
+    def measured_angle(self) -> float:
+        """
+        float: pin_angle plus the sensor noise: what the inclinometer reads [rad].
+        """
+    @property
+    def pilot(self) -> float:
+        """
+        float: xc, the pilot stage's output held over the last command interval before t_k (0 before the
+        first step) [-]: simulate's ``pilot[k - 1]`` under a command held over each sample.
+        """
+    @property
+    def pin_angle(self) -> float:
+        """
+        float: theta_m = play(theta; delta / 2), noise-free [rad].
+        """
+    @property
+    def position(self) -> float:
+        """
+        float: h, the piston position [m].
+        """
+    @property
+    def reached_end_stop(self) -> bool:
+        """
+        bool: h left [0, L] at a command-grid point of the step that ended at t_k.
+        """
+    @property
+    def rod_flow(self) -> float:
+        """
+        float: Q2, out of the rod chamber [m^3/s].
+        """
+    @property
+    def rod_pressure(self) -> float:
+        """
+        float: p2 [Pa].
+        """
+    @property
+    def spool(self) -> float:
+        """
+        float: xv, the spool opening [-].
+        """
+    @property
+    def time(self) -> float:
+        """
+        float: t_k [s].
+        """
+    @property
+    def velocity(self) -> float:
+        """
+        float: v [m/s].
+        """
+class SteppingPlant:
+    """
+    The plant advanced one sample per call: ``measurement = plant.step(command)``.
+    
+    From rest at t = 0, ``step(V)`` holds the command V [V] over one sample (``sample_time``, on the
+    ``command_rate`` grid), integrates with CVODE and returns the ``Measurement`` at the sample's end:
+    the commands V_0, V_1, ... give the measurements at t_1, t_2, ...; the one at t_0 is ``measurement``
+    after construction or ``reset()``. ``simulate`` under the same commands held over each sample
+    (``(values, sample_time)``) gives the same samples, sensor noise included: its sample k pairs the
+    state at t_k with the command V_k that follows it. simulate is a loop over the same integration.
+    
+    Parameters
+    ----------
+    parameters : Parameters, optional
+        The plant; None: ``default_parameters()``.
+    sample_time, command_rate, rtol, atol, max_steps_per_interval, sensor_noise, noise_seed, initial_position, load
+        As for ``simulate`` (which has ``duration`` too: a stepping plant runs as long as it is stepped),
+        validated the same way.
+    
+    Raises
+    ------
+    ValueError
+        For non-physical parameters or bad options, naming them.
+    
+    Examples
+    --------
+    >>> from bonl import plant
+    >>> p = plant.SteppingPlant()
+    >>> start = p.measurement                  # at t = 0, from rest at mid-stroke
+    >>> m = p.step(3.0)                        # 3 V held for 0.01 s
+    >>> m.time, m.measured_angle               # doctest: +SKIP
+    (0.01, ...)
+    """
+    def __init__(self, parameters: typing.Any = None, *, sample_time: typing.SupportsFloat | typing.SupportsIndex = 0.01, command_rate: typing.SupportsFloat | typing.SupportsIndex = 1000.0, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: typing.Any = None, max_steps_per_interval: typing.SupportsInt | typing.SupportsIndex = 5000, sensor_noise: bool = True, noise_seed: typing.SupportsInt | typing.SupportsIndex = 1, initial_position: typing.Any = None, load: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def reset(self, initial_position: typing.Any = None, noise_seed: typing.SupportsInt | typing.SupportsIndex | None = None) -> Measurement:
+        """
+        Back to rest at t = 0.
+        
+        Parameters
+        ----------
+        initial_position : float, optional
+            h0 [m]; None: the plant's (the constructor's or the last reset's).
+        noise_seed : int, optional
+            The sensor noise's seed; None: the plant's. The same seed and commands give the same measurements.
+        
+        Returns
+        -------
+        Measurement
+            At t = 0.
+        
+        Raises
+        ------
+        ValueError
+            For a bad ``initial_position``; the plant is left as it was.
+        """
+    def step(self, command: typing.Any) -> Measurement:
+        """
+        Hold ``command`` over one sample and return the measurement at its end.
+        
+        Parameters
+        ----------
+        command : float
+            V [V] on the 0-5 V scale (neutral 2.5 V).
+        
+        Returns
+        -------
+        Measurement
+            At ``time + sample_time``.
+        
+        Raises
+        ------
+        ValueError
+            For a command that is not a finite real number, or a load that is not finite within the step;
+            the plant is left as it was.
+        bonl.NumericalError
+            When CVODE fails; the plant is then left failed (``RuntimeError`` until ``reset()``).
+        """
+    @property
+    def measurement(self) -> Measurement:
+        """
+        Measurement: the latest, at ``time`` (a copy).
+        """
+    @property
+    def parameters(self) -> Parameters:
+        """
+        Parameters: a copy of the plant's parameters.
+        """
+    @property
+    def sample_time(self) -> float:
+        """
+        float: the time one step advances [s].
+        """
+    @property
+    def steps(self) -> int:
+        """
+        int: CVODE's internal steps since the start or reset.
+        """
+    @property
+    def time(self) -> float:
+        """
+        float: t_k, the latest measurement's time [s].
+        """
 def default_parameters() -> Parameters:
     """
     The 20 t excavator's stick cylinder (plant.md's defaults).
@@ -612,8 +803,9 @@ def simulate(command: typing.Any, parameters: typing.Any = None, *, duration: ty
     Integrate the plant under a command with CVODE (BDF, Newton, dense solver).
     
     The command is sampled and held on the command grid (``command_rate``), where the pilot
-    hysteresis and the pin backlash (play operators) are evaluated; CVODE is stopped at every
-    grid point. The GIL is released unless the command or the load is a Python callable.
+    hysteresis and the pin backlash (play operators) are evaluated; CVODE stops at every output
+    sample, so sample k depends only on the commands before ``time[k]`` (``SteppingPlant`` steps
+    the same integration). The GIL is released unless the command or the load is a Python callable.
     
     Parameters
     ----------

@@ -108,7 +108,7 @@ TEST_CASE("one-step prediction uses the measured past", "[models]") {
   CHECK(repeats < u.size() - 30);
 }
 
-TEST_CASE("run-time and compile-time orders simulate identically; float works", "[models]") {
+TEST_CASE("run-time and compile-time orders simulate identically, and float works", "[models]") {
   const Eigen::VectorXd u = bonl::signals::random_levels(500, 3, 1.0, 12);
   const bonl::PaperHammersteinWiener fixed = known_hammerstein_wiener();
   bonl::HammersteinWienerd dynamic(3, 2, kNk, 3, 3);

@@ -165,7 +165,7 @@ TEST_CASE("chirp sweeps linearly from f0 to f1, then continues at f1", "[plant][
   }
 }
 
-TEST_CASE("sampled holds values[k] on [t0 + k ts, t0 + (k + 1) ts)", "[plant][excitation]") {
+TEST_CASE("sampled holds values(k) on the interval from t0 + k ts to t0 + (k + 1) ts", "[plant][excitation]") {
   const auto v = excitation::sampled(vec({1.0, 2.0, 3.0, 4.0}), 0.1, 0.5);
   CHECK(v(-3.0) == 1.0);
   CHECK(v(0.4) == 1.0);
@@ -286,7 +286,7 @@ TEST_CASE("bad arguments throw std::invalid_argument naming the argument", "[pla
   CHECK_INVALID(excitation::step(nan), "level");
   CHECK_INVALID(excitation::step(1.0, inf), "t_step");
   CHECK_INVALID(excitation::step(1.0, 0.0, nan), "before");
-  CHECK_THROWS_WITH(excitation::step(nan), Contains("bonl::plant::excitation::step"));
+  CHECK_THROWS_WITH(excitation::step(nan), Contains("bonl: excitation::step:"));
 
   CHECK_INVALID(excitation::multisine({}, 0.1), "frequencies_hz must not be empty");
   CHECK_INVALID(excitation::multisine({0.1, nan}, 0.1), "frequencies_hz");
@@ -297,11 +297,11 @@ TEST_CASE("bad arguments throw std::invalid_argument naming the argument", "[pla
   CHECK_INVALID(excitation::multisine({0.1, 0.2}, 0.1, 2.5, {0.0, nan}), "phases");
   CHECK_INVALID(excitation::multisine({0.1}, nan), "amplitude");
   CHECK_INVALID(excitation::multisine({0.1}, 0.1, inf), "offset");
-  CHECK_THROWS_WITH(excitation::multisine({}, 0.1), Contains("bonl::plant::excitation::multisine"));
+  CHECK_THROWS_WITH(excitation::multisine({}, 0.1), Contains("bonl: excitation::multisine:"));
 
   CHECK_INVALID(excitation::paper_multisine(nan), "amplitude");
   CHECK_INVALID(excitation::paper_multisine(0.4, -inf), "offset");
-  CHECK_THROWS_WITH(excitation::paper_multisine(nan), Contains("bonl::plant::excitation::paper_multisine"));
+  CHECK_THROWS_WITH(excitation::paper_multisine(nan), Contains("bonl: excitation::paper_multisine:"));
 
   CHECK_INVALID(excitation::smooth_random(0.0, 0.3, 10.0, 1), "bandwidth_hz");
   CHECK_INVALID(excitation::smooth_random(-1.0, 0.3, 10.0, 1), "bandwidth_hz");

@@ -28,7 +28,7 @@ double relative_parameter_error(const bonl::Estimator<Model>& estimator, const M
 
 }  // namespace
 
-TEST_CASE("without input the trace ceiling stops covariance wind-up; without the ceiling P overflows",
+TEST_CASE("without input the trace ceiling stops covariance wind-up, and without the ceiling P overflows",
           "[safeguards]") {
   const auto truth = known_hammerstein();
   const Eigen::Index n = truth.num_params();
@@ -47,8 +47,11 @@ TEST_CASE("without input the trace ceiling stops covariance wind-up; without the
   CHECK(p.allFinite());
   CHECK(p == p.transpose());
   CHECK(p.trace() <= 1e6 * double(n) * (1 + 1e-12));
-  // Limited on every sample except a few where the constant term's direction shrank P first.
-  CHECK(guarded.health().forgetting_limited >= quiet - 20);
+  // Limited on nearly every sample: not where the downdate itself removed more than 1 - lambda of
+  // the trace, which it does in the regressor's direction now and then (117 of the 40,000 samples
+  // when measured; this test was not run by ctest until its name lost a ';', and its old bound of 20
+  // predates P stored as a scale times M).
+  CHECK(guarded.health().forgetting_limited >= quiet * 99 / 100);
   CHECK_FALSE(guarded.diverged());
 
   // Unguarded, forgetting would have overflowed P: the estimator refuses those updates instead.
@@ -125,7 +128,7 @@ Eigen::Index feed_until_failure(bonl::Estimator<bonl::PaperARX>& estimator, cons
 }
 }  // namespace
 
-TEST_CASE("a refused update sets the divergence state; recover() clears it and resets P", "[safeguards]") {
+TEST_CASE("a refused update sets the divergence state, and recover() clears it and resets P", "[safeguards]") {
   bonl::EstimatorOptions options;
   options.p0 = 100.0;
   bonl::Estimator<bonl::PaperARX> estimator(known_arx(), options);

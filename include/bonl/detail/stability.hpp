@@ -4,7 +4,7 @@
 // coefficients into reflection coefficients k_na, ..., k_1, and the roots are inside the unit circle
 // exactly when every |k_p| < 1. The roots of A are inside |z| < radius when those of
 // A(radius z) are inside the unit circle, i.e. with a_j replaced by a_j / radius^j.
-// O(na^2), no allocation: the caller provides `work` with na entries (used above 16).
+// O(na^2), no allocation: the caller provides `work` with na entries.
 
 #include <Eigen/Core>
 #include <cmath>
@@ -12,15 +12,9 @@
 namespace bonl::detail {
 
 template <typename A, typename Work>
-bool roots_inside(const Eigen::MatrixBase<A>& a, typename A::Scalar radius, Work& caller_work) noexcept {
+bool roots_inside(const Eigen::MatrixBase<A>& a, typename A::Scalar radius, Work& work) noexcept {
   using Scalar = typename A::Scalar;
   const Eigen::Index n = a.size();
-  // Up to kLocalOrder coefficients the recursion runs in a local array: the compiler then knows it
-  // aliases neither `a` nor anything else and keeps it in registers (through the caller's `work`,
-  // every step stores and reloads; measured in docs/performance.md).
-  constexpr Eigen::Index kLocalOrder = 16;
-  Scalar local[kLocalOrder];
-  Scalar* const work = n <= kLocalOrder ? local : caller_work.data();
   // One division per step: the estimator runs this on every output-error update.
   const Scalar inverse_radius = Scalar(1) / radius;
   Scalar scale = Scalar(1);

@@ -159,8 +159,8 @@ class Rls {
     return std::array{&Rls::update_fixed<kGivenError, kSizes + 1, Phi>...};
   }
 
-  /// The run-time-size update with every length fixed at compile time: its storage, theta and phi
-  /// viewed (phi copied) at size kSize.
+  /// The run-time-size update with every length fixed at compile time: its storage and theta viewed
+  /// at size kSize, phi viewed where it is contiguous and copied otherwise.
   template <bool kGivenError, int kSize, typename Phi>
   bool update_fixed(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
                     Scalar max_trace) noexcept {
@@ -268,8 +268,8 @@ class Rls {
   Vector m_theta;
   StorageMatrix m_M;      // P / m_scale in the top-left n x n corner, zero padding to padded_size(n)
   Scalar m_scale = Scalar(1);
-  Vector m_next;          // scratch for run-time sizes
-  StorageVector m_scratch;  // scratch for run-time sizes
+  Vector m_next;          // scratch for the generic kernel (run-time sizes above kMaxCompiledSize)
+  StorageVector m_scratch;  // scratch for the generic kernel (run-time sizes above kMaxCompiledSize)
   bool m_forgetting_limited = false;
   Scalar m_process_noise = Scalar(0);
 };

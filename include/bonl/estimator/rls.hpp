@@ -25,11 +25,9 @@
 //
 #include <Eigen/Core>
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <utility>
 
 #include "../detail/inlining.hpp"
 #include "../detail/validate.hpp"
@@ -37,11 +35,106 @@
 namespace bonl {
 
 namespace detail {
-/// Storage size of a fixed-size covariance: rounded up to a multiple of 8 (4 below 5), so that
-/// every column is a whole number of SIMD registers (SSE2 to AVX-512, double and float). At the
-/// paper's 14 parameters Eigen otherwise falls back to 2-wide packets with scalar remainders; the
-/// padding rows and columns stay exactly zero (see Rls::update).
+/// Storage size of a covariance: rounded up to a multiple of 8 (4 below 5), so that every column
+/// is a whole number of SIMD registers (SSE2 to AVX-512, double and float). At the paper's 14
+/// parameters Eigen otherwise falls back to 2-wide packets with scalar remainders; the padding rows
+/// and columns stay exactly zero (see rls_update).
 constexpr int padded_size(int n) { return n == Eigen::Dynamic ? n : (n <= 4 ? 4 : (n + 7) / 8 * 8); }
+
+/// The scalars of an Rls's state besides M and theta.
+template <typename Scalar>
+struct RlsScalars {
+  Scalar scale = Scalar(1);          // P = scale * M
+  Scalar process_noise = Scalar(0);  // q, added to P's diagonal by every accepted update
+  bool forgetting_limited = false;   // the last accepted update had its forgetting reduced
+};
+
+/// M *= scale, scale = 1 (P unchanged up to one rounding per entry, still exactly symmetric).
+template <typename Storage, typename Scalar>
+BONL_COLD void fold_scale(Storage& M, RlsScalars<Scalar>& state) noexcept {
+  M *= state.scale;
+  state.scale = Scalar(1);
+}
+
+/// After the downdate: the forgetting (P / lambda, kept in the scale) and the process noise, the
+/// forgetting reduced where it would lift trace(P) above max_trace. trace_of_M is M's trace after
+/// the downdate: the ceiling is applied to the trace as computed, not as trace(P) - gain |g|^2,
+/// which cancels when the downdate removes most of P (a tiny lambda overshot the ceiling).
+template <typename Storage, typename Scalar>
+void forget(Storage& M, Eigen::Index n, Scalar trace_of_M, Scalar inverse_lambda, Scalar max_trace,
+            RlsScalars<Scalar>& state) noexcept {
+  Scalar trace = state.scale * trace_of_M;
+  if (state.process_noise > Scalar(0)) {
+    M.diagonal().head(n).array() += state.process_noise / state.scale;
+    trace += Scalar(n) * state.process_noise;
+  }
+  Scalar growth = inverse_lambda;
+  if (trace * growth > max_trace) {
+    // Never grow P beyond the ceiling by forgetting; the process noise alone may take the trace a
+    // hair above it (n q), which this shrinks back by as little (1 - n q / trace).
+    growth = max_trace / trace;
+    if (state.process_noise == Scalar(0)) growth = std::max(Scalar(1), growth);
+    state.forgetting_limited = true;
+  }
+  if (growth != Scalar(1)) {
+    state.scale *= growth;
+    if (state.scale > Scalar(1) / std::numeric_limits<Scalar>::epsilon()) fold_scale(M, state);
+  }
+}
+
+/// The run-time sizes' update (up to Rls::kMaxCompiledSize parameters): the same algorithm as
+/// Rls::update, with every vector at the padded length kLength of M's columns, fixed at compile
+/// time, and only the loops over columns depending on the number of parameters n. theta (updated
+/// on success) and phi hold n entries; copied into zero-padded locals, which flattening keeps in
+/// registers, their padding adds exact zeros to the products.
+template <bool kGivenError, int kLength, typename Storage, typename Scalar>
+BONL_FLATTEN bool rls_update_fixed_length(Storage& M, Scalar* theta, const Scalar* phi, Eigen::Index count,
+                                          Scalar target_or_error, Scalar lambda, Scalar max_trace,
+                                          RlsScalars<Scalar>& state) noexcept {
+  using Column = Eigen::Matrix<Scalar, kLength, 1>;
+  // count <= kLength always (Rls dispatches on it); the bound, known to the compiler, keeps every
+  // index inside the locals (GCC warns otherwise, -Warray-bounds).
+  const Eigen::Index n = std::min(count, Eigen::Index(kLength));
+  Column padded_phi = Column::Zero();
+  Column padded_theta = Column::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    padded_phi[i] = phi[i];
+    padded_theta[i] = theta[i];
+  }
+  // work = M phi, as a sum of columns, even and odd ones separately in locals: see Rls::update.
+  Column even = M.col(0) * padded_phi[0];
+  Column odd = Column::Zero();
+  for (Eigen::Index j = 1; j + 1 < n; j += 2) {
+    odd += M.col(j) * padded_phi[j];
+    even += M.col(j + 1) * padded_phi[j + 1];
+  }
+  if (n % 2 == 0) odd += M.col(n - 1) * padded_phi[n - 1];
+  const Column work = even + odd;
+  const Scalar denominator = lambda + state.scale * padded_phi.dot(work);
+  if (!(denominator > Scalar(0)) || !std::isfinite(denominator)) return false;
+  const Scalar gain = state.scale / denominator;  // K = P phi / denominator = gain M phi
+  Scalar error = target_or_error;
+  if constexpr (!kGivenError) error -= padded_phi.dot(padded_theta);
+  padded_theta += (error * gain) * work;
+  if (!((padded_theta.array() - padded_theta.array()).sum() == Scalar(0))) return false;  // all finite
+  // Each new diagonal entry must stay above a few roundings (see Rls::update). The padding entries
+  // are exactly 0 (not above), so all n parameters' entries pass when n entries do; NaN passes none.
+  const auto diagonal = M.diagonal().array();
+  constexpr Scalar kMargin = Scalar(64) * std::numeric_limits<Scalar>::epsilon();
+  if ((diagonal - gain * work.array().square() - kMargin * diagonal > Scalar(0)).count() != n) return false;
+  const Scalar inverse_lambda = Scalar(1) / lambda;  // forgetting that would overflow P: see Rls::update
+  if (lambda != Scalar(1) && !std::isfinite(std::min(state.scale * diagonal.sum() * inverse_lambda, max_trace))) {
+    return false;
+  }
+  for (Eigen::Index j = 0; j < n; ++j) M.col(j) -= gain * (work * work[j]);  // exactly symmetric
+  state.forgetting_limited = false;
+  if (lambda != Scalar(1) || state.process_noise > Scalar(0)) {
+    forget(M, n, M.diagonal().sum(), inverse_lambda, max_trace, state);
+  }
+  for (Eigen::Index i = 0; i < n; ++i) theta[i] = padded_theta[i];
+  return true;
+}
+
 }  // namespace detail
 
 template <typename Scalar_ = double, int N_ = Eigen::Dynamic>
@@ -55,13 +148,19 @@ class Rls {
   using Vector = Eigen::Matrix<Scalar, N_, 1>;
   using Matrix = Eigen::Matrix<Scalar, N_, N_>;
 
+  /// Run-time sizes up to this many parameters run a kernel with its vector lengths fixed at
+  /// compile time; above it, the generic kernel.
+  static constexpr int kMaxCompiledSize = 32;
+
   /// n parameters, theta = 0, P = p0 I.
   explicit Rls(Eigen::Index n = (N_ == Eigen::Dynamic ? 1 : N_), Scalar p0 = Scalar(1e6)) {
     detail::require_order(n, 1, "number of parameters");
     detail::require_matches_template(n, N_, "number of parameters");
     m_theta = Vector::Zero(n);
-    m_next = Vector::Zero(n);
-    m_scratch = StorageVector::Zero(storage_size(n));
+    if (N_ == Eigen::Dynamic && n > kMaxCompiledSize) {  // scratch for the generic kernel
+      m_next = Vector::Zero(n);
+      m_scratch = StorageVector::Zero(storage_size(n));
+    }
     m_M = StorageMatrix::Zero(storage_size(n), storage_size(n));
     reset(m_theta, p0);
   }
@@ -82,7 +181,7 @@ class Rls {
     check_p0(p0);
     m_M.setZero();  // keeps its size: no allocation
     m_M.diagonal().template head<N_>(size()).setConstant(p0);
-    m_scale = Scalar(1);
+    m_state.scale = Scalar(1);
   }
 
   /// One update with regressor phi, target y and forgetting factor lambda in (0, 1]; forgetting is
@@ -108,17 +207,17 @@ class Rls {
   /// default) is the algorithm as written.
   void set_process_noise(Scalar q) {
     detail::require(std::isfinite(q) && q >= Scalar(0), "process noise must be finite and >= 0");
-    m_process_noise = q;
+    m_state.process_noise = q;
   }
 
   /// True when the last accepted update had its forgetting reduced by the trace ceiling.
-  bool forgetting_limited() const noexcept { return m_forgetting_limited; }
+  bool forgetting_limited() const noexcept { return m_state.forgetting_limited; }
 
   const Vector& theta() const noexcept { return m_theta; }
   /// For projections after an update (e.g. a constraint on one parameter).
   Vector& mutable_theta() noexcept { return m_theta; }
   /// The covariance (exactly symmetric).
-  Matrix covariance() const { return m_scale * m_M.template topLeftCorner<N_, N_>(size(), size()); }
+  Matrix covariance() const { return m_state.scale * m_M.template topLeftCorner<N_, N_>(size(), size()); }
   Eigen::Index size() const noexcept { return m_theta.size(); }
 
  private:
@@ -130,22 +229,21 @@ class Rls {
 
   static Eigen::Index storage_size(Eigen::Index n) { return detail::padded_size(int(n)); }
 
-  /// Run-time sizes up to kMaxCompiledSize parameters run the kernel compiled for their size.
-  static constexpr int kMaxCompiledSize = 32;
-
   template <bool kGivenError, typename Phi>
   bool dispatch(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda, Scalar max_trace) noexcept {
     if constexpr (N_ == Eigen::Dynamic) {
-      // Run-time sizes run the fixed-size kernel of their size: the same instructions as Rls<Scalar, n>,
-      // so the same results bit for bit and the same speed. What makes the fixed sizes fast is every
-      // length known to the compiler (whole SIMD registers, unrolled loops, locals in registers).
-      // Above kMaxCompiledSize parameters, the generic kernel.
-      if (size() <= kMaxCompiledSize) {
-        static constexpr auto kKernels =
-            fixed_kernels<kGivenError, Phi>(std::make_integer_sequence<int, kMaxCompiledSize>{});
-        return (this->*kKernels[std::size_t(size() - 1)])(phi, target_or_error, lambda, max_trace);
+      // Run-time sizes up to 32 parameters run the kernel of their storage length, fixed at compile
+      // time: whole SIMD registers and locals in registers, what makes the fixed sizes fast. Five
+      // lengths cover 1 to 32 parameters; a kernel per exact size compiled 32 of them, which took
+      // about a minute per translation unit (docs/performance.md). Above 32, the generic kernel.
+      switch (m_M.rows()) {
+        case 4: return fixed_length_update<kGivenError, 4>(phi, target_or_error, lambda, max_trace);
+        case 8: return fixed_length_update<kGivenError, 8>(phi, target_or_error, lambda, max_trace);
+        case 16: return fixed_length_update<kGivenError, 16>(phi, target_or_error, lambda, max_trace);
+        case 24: return fixed_length_update<kGivenError, 24>(phi, target_or_error, lambda, max_trace);
+        case 32: return fixed_length_update<kGivenError, 32>(phi, target_or_error, lambda, max_trace);
+        default: return update<kGivenError>(m_M, m_theta, phi, target_or_error, lambda, max_trace, m_scratch, m_next);
       }
-      return update<kGivenError>(m_M, m_theta, phi, target_or_error, lambda, max_trace, m_scratch, m_next);
     } else {
       StorageVector work;  // on the stack; as locals they cannot alias phi, which keeps them in registers
       Vector next;
@@ -153,34 +251,25 @@ class Rls {
     }
   }
 
-  /// update_fixed for 1 to sizeof...(kSizes) parameters, indexed by the number of parameters - 1.
-  template <bool kGivenError, typename Phi, int... kSizes>
-  static constexpr auto fixed_kernels(std::integer_sequence<int, kSizes...>) noexcept {
-    return std::array{&Rls::update_fixed<kGivenError, kSizes + 1, Phi>...};
-  }
-
-  /// The run-time-size update with every length fixed at compile time: its storage and theta viewed
-  /// at size kSize, phi viewed where it is contiguous and copied otherwise.
-  template <bool kGivenError, int kSize, typename Phi>
-  bool update_fixed(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
-                    Scalar max_trace) noexcept {
-    constexpr int kStorageSize = detail::padded_size(kSize);
+  /// A run-time size's update with the storage length kLength fixed at compile time. The kernel
+  /// takes phi's entries by pointer, so that one kernel serves every regressor type.
+  template <bool kGivenError, int kLength, typename Phi>
+  bool fixed_length_update(const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error, Scalar lambda,
+                           Scalar max_trace) noexcept {
     // m_M's data come from Eigen's allocator, aligned to EIGEN_MAX_ALIGN_BYTES.
-    Eigen::Map<Eigen::Matrix<Scalar, kStorageSize, kStorageSize>, Eigen::AlignedMax> storage(m_M.data());
-    Eigen::Map<Eigen::Matrix<Scalar, kSize, 1>> theta(m_theta.data());
-    Eigen::Matrix<Scalar, kStorageSize, 1> work;
-    Eigen::Matrix<Scalar, kSize, 1> next;
+    Eigen::Map<Eigen::Matrix<Scalar, kLength, kLength>, Eigen::AlignedMax> storage(m_M.data());
     if constexpr (bool(Phi::Flags & Eigen::DirectAccessBit) && Phi::InnerStrideAtCompileTime == 1) {
-      const Eigen::Map<const Eigen::Matrix<Scalar, kSize, 1>> regressor(phi.derived().data());
-      return update<kGivenError>(storage, theta, regressor, target_or_error, lambda, max_trace, work, next);
+      return detail::rls_update_fixed_length<kGivenError, kLength>(storage, m_theta.data(), phi.derived().data(),
+                                                                   size(), target_or_error, lambda, max_trace, m_state);
     } else {
-      const Eigen::Matrix<Scalar, kSize, 1> regressor = phi;
-      return update<kGivenError>(storage, theta, regressor, target_or_error, lambda, max_trace, work, next);
+      const Eigen::Matrix<Scalar, Eigen::Dynamic, 1, 0, kLength, 1> entries = phi;  // no allocation
+      return detail::rls_update_fixed_length<kGivenError, kLength>(storage, m_theta.data(), entries.data(), size(),
+                                                                   target_or_error, lambda, max_trace, m_state);
     }
   }
 
-  /// The update of the covariance storage M and theta (m_M and m_theta, or fixed-size views of them);
-  /// work has the length of M's columns, next the length of theta.
+  /// The update of the covariance storage M and theta, for fixed sizes and for run-time sizes above
+  /// kMaxCompiledSize; work has the length of M's columns, next the length of theta.
   template <bool kGivenError, typename Storage, typename Theta, typename Phi, typename Work, typename Next>
   BONL_FLATTEN bool update(Storage& M, Theta& theta, const Eigen::MatrixBase<Phi>& phi, Scalar target_or_error,
                            Scalar lambda, Scalar max_trace, Work& work, Next& next) noexcept {
@@ -190,8 +279,8 @@ class Rls {
     // reductions. The padding rows of M are zero, so work's padding is zero too. Fixed sizes sum even
     // and odd columns separately, in locals: two dependency chains of n / 2 fused multiply-adds in
     // registers instead of one of n through `work`, a reference (a store and a reload per step).
-    // The generic kernel (run-time sizes above kMaxCompiledSize) keeps the one chain: a local of
-    // run-time length would allocate.
+    // Run-time sizes above kMaxCompiledSize keep the one chain: a local of run-time length would
+    // allocate.
     if constexpr (kN == Eigen::Dynamic) {
       work = M.col(0) * phi[0];
       for (Eigen::Index j = 1; j < n; ++j) work += M.col(j) * phi[j];
@@ -206,9 +295,9 @@ class Rls {
       work = even + odd;
     }
     const auto g = work.template head<kN>(n);
-    const Scalar denominator = lambda + m_scale * phi.dot(g);
+    const Scalar denominator = lambda + m_state.scale * phi.dot(g);
     if (!(denominator > Scalar(0)) || !std::isfinite(denominator)) return false;
-    const Scalar gain = m_scale / denominator;  // K = P phi / denominator = gain M phi
+    const Scalar gain = m_state.scale / denominator;  // K = P phi / denominator = gain M phi
     Scalar error = target_or_error;
     if constexpr (!kGivenError) error -= phi.dot(theta);
     next = theta + (error * gain) * g;
@@ -226,52 +315,25 @@ class Rls {
     // downdate, so trace(P) / lambda bounds it). Tested with 1 / lambda, the factor P is scaled by:
     // for a denormal lambda it is infinite although trace / lambda is not (found by fuzzing).
     const Scalar inverse_lambda = Scalar(1) / lambda;
-    if (lambda != Scalar(1) && !std::isfinite(std::min(m_scale * diagonal.sum() * inverse_lambda, max_trace))) {
+    if (lambda != Scalar(1) && !std::isfinite(std::min(m_state.scale * diagonal.sum() * inverse_lambda, max_trace))) {
       return false;
     }
     theta = next;
     // Column by column (only the n used ones): entry (i, j) is M_ij - gain (g_i g_j) and (j, i) is
     // M_ji - gain (g_j g_i), the same number because multiplication is commutative.
     for (Eigen::Index j = 0; j < n; ++j) M.col(j) -= gain * (work * work[j]);
-    m_forgetting_limited = false;
-    if (lambda != Scalar(1) || m_process_noise > Scalar(0)) {
-      // The ceiling is applied to the trace after the downdate as computed, not as
-      // trace(P) - gain |g|^2, which cancels when the downdate removes most of P (a tiny lambda
-      // overshot the ceiling).
-      Scalar trace = m_scale * M.diagonal().template head<kN>(n).sum();
-      if (m_process_noise > Scalar(0)) {
-        M.diagonal().template head<kN>(n).array() += m_process_noise / m_scale;
-        trace += Scalar(n) * m_process_noise;
-      }
-      Scalar growth = inverse_lambda;
-      if (trace * growth > max_trace) {
-        // Never grow P beyond the ceiling by forgetting; the process noise alone may take the trace
-        // a hair above it (n q), which this shrinks back by as little (1 - n q / trace).
-        growth = max_trace / trace;
-        if (m_process_noise == Scalar(0)) growth = std::max(Scalar(1), growth);
-        m_forgetting_limited = true;
-      }
-      if (growth != Scalar(1)) {
-        m_scale *= growth;
-        if (m_scale > Scalar(1) / std::numeric_limits<Scalar>::epsilon()) fold_scale();
-      }
+    m_state.forgetting_limited = false;
+    if (lambda != Scalar(1) || m_state.process_noise > Scalar(0)) {
+      detail::forget(M, n, M.diagonal().template head<kN>(n).sum(), inverse_lambda, max_trace, m_state);
     }
     return true;
   }
 
-  /// M *= scale, scale = 1 (P unchanged up to one rounding per entry, still exactly symmetric).
-  BONL_COLD void fold_scale() noexcept {
-    m_M *= m_scale;
-    m_scale = Scalar(1);
-  }
-
   Vector m_theta;
-  StorageMatrix m_M;      // P / m_scale in the top-left n x n corner, zero padding to padded_size(n)
-  Scalar m_scale = Scalar(1);
+  StorageMatrix m_M;      // P / scale in the top-left n x n corner, zero padding to padded_size(n)
+  detail::RlsScalars<Scalar> m_state;
   Vector m_next;          // scratch for the generic kernel (run-time sizes above kMaxCompiledSize)
   StorageVector m_scratch;  // scratch for the generic kernel (run-time sizes above kMaxCompiledSize)
-  bool m_forgetting_limited = false;
-  Scalar m_process_noise = Scalar(0);
 };
 
 }  // namespace bonl

@@ -243,7 +243,7 @@ TEST_CASE("an H-W reference beyond the output polynomial's branch is reported Ou
   CHECK(bonl::control::has(run.status[50], InverseStatus::OutOfRange));
 }
 
-TEST_CASE("bad input to the inverse model: clear errors, the state untouched") {
+TEST_CASE("C1-C5 bad input to the inverse model: clear errors, the state untouched") {
   const auto model = known_system<bonl::Hammersteind>("small");
   InverseModel<bonl::Hammersteind> inverse(model, range(-1.0, 1.0));
   const auto first = inverse.step(0.1);

@@ -65,7 +65,7 @@ def test_block_models_follow_a_reachable_reference(name):
     assert np.max(np.abs(y - r)[model.nk + settle:]) <= 1e-9
 
 
-def test_step_equals_commands_and_raises_for_bad_input():
+def test_c3_c4_c5_step_equals_commands_and_raises_for_bad_input():
     model = SMALL["Hammerstein"]
     r = model.simulate(smooth_command(300))
     inverse = InverseModel(model, command_min=-1.0, command_max=1.0)
@@ -74,7 +74,7 @@ def test_step_equals_commands_and_raises_for_bad_input():
     steps = [inverse.step(r[min(k + nk, len(r) - 1)]) for k in range(50)]
     np.testing.assert_array_equal([s.value for s in steps], run.command[:50])
     assert all(s.status == int(InverseStatus.exact) for s in steps)
-    # C1, C2: a non-finite reference or a short window raises, the state untouched
+    # C3, C4: a non-finite reference or a short window raises, the state untouched
     with pytest.raises(ValueError, match="reference must be finite"):
         inverse.step(float("nan"))
     with pytest.raises(ValueError, match="reference window needs 1 samples"):
@@ -88,7 +88,7 @@ def test_step_equals_commands_and_raises_for_bad_input():
         inverse.commands("no")
 
 
-def test_models_without_an_inverse_and_bad_options():
+def test_c1_c2_models_without_an_inverse_and_bad_options():
     with pytest.raises(ValueError, match="needs a finite command range"):
         InverseModel(SMALL["Hammerstein"])
     with pytest.raises(ValueError, match="contain the operating point"):

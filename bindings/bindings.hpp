@@ -15,6 +15,7 @@ void bind_metrics(py::module_& m);     // metrics.cpp: submodule metrics (mse, r
 void bind_io(py::module_& m);          // io.cpp: to_json on the models, load_model
 void bind_plant(py::module_& m);       // plant.cpp: submodule plant, with the four below
 void bind_experiment(py::module_& m);  // experiment.cpp: submodule experiment (run_paper_experiment, its result)
+void bind_control(py::module_& m);     // control.cpp: submodule control (InverseModel, InverseStatus)
 
 // The parts of the submodule plant:
 void bind_plant_parameters(py::module_& plant);  // plant_parameters.cpp: Parameters, default/small_parameters

@@ -11,6 +11,7 @@ PYBIND11_MODULE(_bonl, m) {
   bonl_python::bind_io(m);
   bonl_python::bind_plant(m);
   bonl_python::bind_experiment(m);
+  bonl_python::bind_control(m);
   // What `from bonl._bonl import *` (python/bonl/__init__.py) takes: every public name, so that a model
   // added to bonl::Models reaches the bonl namespace with no edit on the Python side.
   namespace py = pybind11;

@@ -4,6 +4,7 @@
 // BONL model". Umbrella header.
 
 #include "blocks.hpp"
+#include "control.hpp"
 #include "error.hpp"
 #include "estimator.hpp"
 #include "metrics.hpp"

@@ -3,9 +3,9 @@
 Models (after Yan et al., the excavator-arm paper, and the Wiener model): every class of
 :data:`MODELS` (:class:`ARX`, :class:`Hammerstein`, :class:`HammersteinWiener`,
 :class:`PseudoHammersteinWiener`, :class:`Wiener`); whole-record identification with :func:`identify`,
-online estimation with :class:`Estimator`; :mod:`bonl.metrics`; the simulated excavator dipper joint
-in :mod:`bonl.plant`, and :mod:`bonl.experiment`, the paper's experiment on it
-(:func:`bonl.experiment.run_paper_experiment`).
+online estimation with :class:`Estimator`; :mod:`bonl.metrics`; the inverse models for control in
+:mod:`bonl.control`; the simulated excavator dipper joint in :mod:`bonl.plant`, and
+:mod:`bonl.experiment`, the paper's experiment on it (:func:`bonl.experiment.run_paper_experiment`).
 """
 
 import importlib as _importlib
@@ -18,10 +18,11 @@ from ._bonl import __version__
 
 # The Python modules over the C++ submodules. Imported by name: the star import above already bound
 # these names to the C++ submodules, and `from . import metrics` would keep those.
+control = _importlib.import_module(".control", __name__)
 experiment = _importlib.import_module(".experiment", __name__)
 metrics = _importlib.import_module(".metrics", __name__)
 plant = _importlib.import_module(".plant", __name__)
 
 from .selection import Selection, grid, select  # noqa: E402  (order and structure selection)
 
-__all__ = sorted({*_core_names, "__version__", "experiment", "metrics", "plant", "Selection", "grid", "select"})
+__all__ = sorted({*_core_names, "__version__", "control", "experiment", "metrics", "plant", "Selection", "grid", "select"})

@@ -6,11 +6,13 @@
 
 cmake_minimum_required(VERSION 3.20)
 
-set(LAYERS support blocks signals models metrics estimator io plant experiment umbrella)
+set(LAYERS support blocks signals models control metrics estimator io plant experiment umbrella)
 set(ALLOWED_support support)
 set(ALLOWED_blocks support blocks)
 set(ALLOWED_signals support signals)
 set(ALLOWED_models support blocks models)
+# The inverses are templates on the model: they include the blocks they invert, not the models.
+set(ALLOWED_control support blocks control)
 set(ALLOWED_metrics support metrics)
 set(ALLOWED_estimator support models estimator)
 set(ALLOWED_io support models io)
@@ -22,7 +24,7 @@ set(ALLOWED_umbrella ${LAYERS})
 function(layer_of path out)
   if(path MATCHES "^detail/" OR path MATCHES "^(error|version)\\.hpp$")
     set(layer support)
-  elseif(path MATCHES "^(blocks|models|estimator|io|plant|experiment)(/|\\.hpp$)")
+  elseif(path MATCHES "^(blocks|models|control|estimator|io|plant|experiment)(/|\\.hpp$)")
     set(layer ${CMAKE_MATCH_1})
   elseif(path MATCHES "^(signals|metrics)\\.hpp$")
     set(layer ${CMAKE_MATCH_1})

@@ -10,7 +10,8 @@ import typing
 from . import metrics
 from . import plant
 from . import experiment
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+from . import control
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     pass
 class ARX:

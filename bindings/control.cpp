@@ -1,0 +1,217 @@
+// bonl.control: the inverse models (bonl/control/): per sample, the command that makes an identified
+// model follow a reference, and the commands for a whole reference. One Python class over
+// InverseModel<Model> for every model of bonl::Models.
+
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <bonl/control.hpp>
+#include <bonl/models.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+
+namespace bonl_python {
+namespace {
+
+using bonl::control::InverseStatus;
+
+/// The commands for a whole reference, as numpy arrays.
+struct InverseRunArrays {
+  py::array command;
+  py::array_t<std::uint8_t> status;
+};
+
+/// ValueError for a refused step (the inverse is untouched).
+void raise_if_rejected(InverseStatus status, Eigen::Index window_size, Eigen::Index given) {
+  bonl::detail::require(status != InverseStatus::RejectedNonFinite, "reference must be finite (every entry of the window)");
+  bonl::detail::require(status != InverseStatus::RejectedShortPreview,
+                        "the reference window needs " + std::to_string(window_size) +
+                            " samples (r(k + nk), ..., r(k + preview)), got " + std::to_string(given));
+}
+
+template <class Model>
+using InverseOf = bonl::control::InverseModel<Model>;
+
+class AnyInverse {
+ public:
+  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::Models, InverseOf>::type, std::variant>::type;
+
+  template <class Model>
+  AnyInverse(const Model& model, const bonl::control::InverseOptions& options)
+      : m_inverse(std::in_place_type<InverseOf<Model>>, model, options) {}
+
+  bonl::control::InverseStep<double> step(const py::object& reference) {
+    return std::visit(
+        [&](auto& inverse) {
+          bonl::control::InverseStep<double> out{0.0, InverseStatus::Exact};
+          Eigen::Index given = 1;
+          if (py::isinstance<py::array>(reference) || py::isinstance<py::list>(reference) ||
+              py::isinstance<py::tuple>(reference)) {
+            const Eigen::VectorXd window = to_vector(reference, "reference");
+            given = window.size();
+            out = inverse.step(window);
+          } else {
+            out = inverse.step(to_scalar(reference, "reference"));
+          }
+          raise_if_rejected(out.status, inverse.window_size(), given);
+          return out;
+        },
+        m_inverse);
+  }
+
+  InverseRunArrays commands(const py::object& reference_object) const {
+    const Eigen::VectorXd reference = to_vector(reference_object, "reference");
+    bonl::control::InverseRun<double> run;
+    {
+      py::gil_scoped_release release;
+      run = std::visit([&](const auto& inverse) { return inverse.commands(reference); }, m_inverse);
+    }
+    py::array_t<std::uint8_t> status(static_cast<py::ssize_t>(run.status.size()));
+    for (std::size_t k = 0; k < run.status.size(); ++k) status.mutable_at(k) = static_cast<std::uint8_t>(run.status[k]);
+    return {to_numpy(std::move(run.command)), std::move(status)};
+  }
+
+  void reset() noexcept {
+    std::visit([](auto& inverse) { inverse.reset(); }, m_inverse);
+  }
+  Eigen::Index nk() const {
+    return std::visit([](const auto& inverse) { return inverse.nk(); }, m_inverse);
+  }
+  Eigen::Index preview() const {
+    return std::visit([](const auto& inverse) { return inverse.preview(); }, m_inverse);
+  }
+  Eigen::Index window_size() const {
+    return std::visit([](const auto& inverse) { return inverse.window_size(); }, m_inverse);
+  }
+  bool minimum_phase() const {
+    return std::visit([](const auto& inverse) { return inverse.minimum_phase(); }, m_inverse);
+  }
+  double command_min() const {
+    return std::visit([](const auto& inverse) { return inverse.command_min(); }, m_inverse);
+  }
+  double command_max() const {
+    return std::visit([](const auto& inverse) { return inverse.command_max(); }, m_inverse);
+  }
+  Eigen::VectorXd stable_factor() const {
+    return std::visit([](const auto& inverse) { return inverse.linear_inverse().stable_factor(); }, m_inverse);
+  }
+  Eigen::VectorXd unstable_factor() const {
+    return std::visit([](const auto& inverse) { return inverse.linear_inverse().unstable_factor(); }, m_inverse);
+  }
+
+ private:
+  Variant m_inverse;
+};
+
+template <class Model>
+void def_inverse_init(py::class_<AnyInverse>& cls) {
+  cls.def(py::init([](const Model& model, std::optional<double> command_min, std::optional<double> command_max,
+                      double backlash_band) {
+            bonl::control::InverseOptions options;
+            options.command_min = command_min.value_or(std::numeric_limits<double>::quiet_NaN());
+            options.command_max = command_max.value_or(std::numeric_limits<double>::quiet_NaN());
+            options.backlash_band = backlash_band;
+            return AnyInverse(model, options);
+          }),
+          py::arg("model"), py::kw_only(), py::arg("command_min") = py::none(), py::arg("command_max") = py::none(),
+          py::arg("backlash_band") = 0.0);
+}
+
+}  // namespace
+
+void bind_control(py::module_& m) {
+  py::module_ control = m.def_submodule(
+      "control", "Inverse models: the command that makes an identified model follow a reference (docs/control.md).");
+
+  py::enum_<InverseStatus>(control, "InverseStatus", py::arithmetic(),
+                           "What an inverse reports with a command: flags, exact (0) when the model follows the "
+                           "reference. Combined flags are their sum (status & InverseStatus.saturated).")
+      .value("exact", InverseStatus::Exact, "the command makes the model reach the reference")
+      .value("saturated", InverseStatus::Saturated,
+             "the command is at the end of its range (or of the input polynomial's monotone branch)")
+      .value("dead_band", InverseStatus::DeadBand,
+             "the reference asks for a w between the input polynomial's two segments at u = 0: command 0")
+      .value("out_of_range", InverseStatus::OutOfRange,
+             "the output polynomial's monotone branch through 0 does not reach the reference: its end is used")
+      .value("rejected_non_finite", InverseStatus::RejectedNonFinite,
+             "a reference was NaN or infinite; the inverse is untouched")
+      .value("rejected_short_preview", InverseStatus::RejectedShortPreview,
+             "the reference window was shorter than window_size; the inverse is untouched");
+
+  py::class_<bonl::control::InverseStep<double>>(control, "InverseStep", "One command and what the inverse reports.")
+      .def_readonly("value", &bonl::control::InverseStep<double>::value, "float: the command u(k)")
+      .def_property_readonly(
+          "status", [](const bonl::control::InverseStep<double>& s) { return static_cast<int>(s.status); },
+          "int: the InverseStatus flags (0: exact)")
+      .def("__repr__", [](const bonl::control::InverseStep<double>& s) {
+        return "InverseStep(value=" + bonl::detail::format_number(s.value) +
+               ", status=" + std::to_string(static_cast<int>(s.status)) + ")";
+      });
+
+  py::class_<InverseRunArrays>(control, "InverseRun", "The commands for a whole reference.")
+      .def_readonly("command", &InverseRunArrays::command, "numpy.ndarray: u(k) for every sample of the reference")
+      .def_readonly("status", &InverseRunArrays::status, "numpy.ndarray of uint8: each command's InverseStatus flags");
+
+  py::class_<AnyInverse> inverse(control, "InverseModel", R"doc(The inverse of an identified model.
+
+Per sample, given the reference output ``preview`` samples ahead, the command that makes the model
+follow it: the backlash inverse (P-H-W) or the output polynomial's inverse (H-W, Wiener), the linear
+block's inverse (exact where B is minimum phase, ZPETC where not), the input polynomial's inverse
+(Hammerstein, H-W, P-H-W). docs/control.md.
+
+Parameters
+----------
+model : one of bonl.MODELS
+command_min, command_max : float, optional
+    The command range (the model's input units); it must contain the operating point's u0. Default:
+    the model's input_range. Models with an input polynomial need it finite.
+backlash_band : float, default 0
+    P-H-W: the backlash inverse's transition band (the output's units); 0 is the exact switch.
+
+Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1, q_1 = 0, an input
+polynomial that is not monotone through 0).)doc");
+  bonl::for_each_model(bonl::Models{}, [&inverse](auto tag) { def_inverse_init<typename decltype(tag)::type>(inverse); });
+  inverse
+      .def("step", &AnyInverse::step, py::arg("reference"), R"doc(The command u(k) for the reference ahead.
+
+Parameters
+----------
+reference : float or 1-D array
+    r(k + nk) (a float, where window_size is 1), or the window r(k + nk), ..., r(k + preview) (at
+    least window_size entries).
+
+Returns
+-------
+InverseStep: ``value`` (the command) and ``status`` (InverseStatus flags). A non-finite reference or a
+window too short raises ValueError and leaves the inverse untouched.)doc")
+      .def("commands", &AnyInverse::commands, py::arg("reference"),
+           R"doc(The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
+
+u(k) is computed from r(k + nk), ..., r(k + preview), the reference held at its last value beyond its end;
+model.simulate(run.command) then follows r from k = nk on where every status is exact. ValueError for a
+non-finite reference or one of preview samples or fewer. Returns InverseRun (command, status).)doc")
+      .def("reset", &AnyInverse::reset, "Back to rest, as the model's free run starts.")
+      .def_property_readonly("nk", &AnyInverse::nk, "int: the model's delay")
+      .def_property_readonly("preview", &AnyInverse::preview,
+                             "int: how far ahead the last reference of a step lies (nk, plus ZPETC's preview)")
+      .def_property_readonly("window_size", &AnyInverse::window_size,
+                             "int: how many reference samples a step takes (1 when B is minimum phase)")
+      .def_property_readonly("minimum_phase", &AnyInverse::minimum_phase,
+                             "bool: B's zeros all inside the unit circle (the exact inverse; else ZPETC)")
+      .def_property_readonly("command_min", &AnyInverse::command_min, "float: the command range's lower end")
+      .def_property_readonly("command_max", &AnyInverse::command_max, "float: the command range's upper end")
+      .def_property_readonly("stable_factor", &AnyInverse::stable_factor,
+                             "numpy.ndarray: B_a, B's factor with the zeros inside the unit circle (b_0 included)")
+      .def_property_readonly("unstable_factor", &AnyInverse::unstable_factor,
+                             "numpy.ndarray: B_u, the factor with the others, leading 1 ([1.0] when minimum phase)");
+}
+
+}  // namespace bonl_python

@@ -1,0 +1,241 @@
+#pragma once
+// The inverse of an identified model: per sample, given the reference output preview() samples ahead
+// (the delay nk, plus ZPETC's preview where B is not minimum phase), the command u(k) that makes the
+// model follow it. The blocks' inverses in reverse order:
+//   reference r(k+nk) - y0
+//     -> the backlash inverse (P-H-W) or the output polynomial's inverse (H-W, Wiener): x_d(k+nk)
+//     -> the linear block's inverse (exact, or ZPETC): w(k)
+//     -> the input polynomial's inverse (Hammerstein, H-W, P-H-W; ARX and Wiener: w = u): u(k) - u0,
+// each reporting what it could not do (InverseStatus). The linear block's inverse runs on the w the
+// command actually gives, so after a saturated or dead-band command it aims at the reference from where
+// the model is. Allocation-free and noexcept per sample; all storage is made by the constructor.
+//
+// With everything reachable (Exact on every sample), a minimum-phase B and the model started from rest
+// together with the inverse, model.simulate(commands(r)) reproduces r(k) for k >= nk to rounding (the
+// P-H-W with band 0; with a band, except within the band after each reversal). r(0..nk-1) are the
+// model's response to its rest, which no command can change.
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "../blocks/two_segment_polynomial.hpp"
+#include "../detail/validate.hpp"
+#include "backlash_inverse.hpp"
+#include "input_polynomial_inverse.hpp"
+#include "inverse_status.hpp"
+#include "linear_inverse.hpp"
+#include "output_polynomial_inverse.hpp"
+
+namespace bonl::control {
+
+/// How the inverse is built.
+struct InverseOptions {
+  /// The command range [command_min, command_max], in the model's input units; it must contain the
+  /// operating point's u0. NaN: the model's input range (input_min(), input_max(); identify()
+  /// records it). Models with an input polynomial need it finite; for ARX and Wiener an infinite
+  /// range does not limit the command.
+  double command_min = std::numeric_limits<double>::quiet_NaN();
+  double command_max = std::numeric_limits<double>::quiet_NaN();
+  /// P-H-W: the backlash inverse's transition band, in the output's units (0: the exact switch).
+  double backlash_band = 0.0;
+};
+
+/// A whole reference's commands and the status of each.
+template <typename Scalar>
+struct InverseRun {
+  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> command;
+  std::vector<InverseStatus> status;
+};
+
+namespace detail {
+template <class M, class = void>
+struct has_input_block : std::false_type {};
+template <class M>
+struct has_input_block<M, std::void_t<decltype(std::declval<const M&>().input_block())>> : std::true_type {};
+template <class M, class = void>
+struct has_output_block : std::false_type {};
+template <class M>
+struct has_output_block<M, std::void_t<decltype(std::declval<const M&>().output_block())>> : std::true_type {};
+template <class M, class = void>
+struct has_backlash : std::false_type {};
+template <class M>
+struct has_backlash<M, std::void_t<decltype(std::declval<const M&>().backlash())>> : std::true_type {};
+}  // namespace detail
+
+template <class Model>
+class InverseModel {
+ public:
+  using Scalar = typename Model::Scalar;
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  static constexpr bool kHasInputPolynomial = detail::has_input_block<Model>::value;
+  static constexpr bool kHasOutputPolynomial = detail::has_output_block<Model>::value;
+  static constexpr bool kHasBacklash = detail::has_backlash<Model>::value;
+
+  /// Throws std::invalid_argument where the model has no inverse (b_0 = 0, a zero of B at z = 1,
+  /// q_1 = 0, an input polynomial not monotone through 0 or constant), for a command range that is
+  /// not finite (with an input polynomial) or does not contain u0, or a band < 0.
+  explicit InverseModel(const Model& model, const InverseOptions& options = {})
+      : m_linear(model.a(), model.b(), model.nk()),
+        m_u0(static_cast<Scalar>(model.u0())),
+        m_y0(static_cast<Scalar>(model.y0())),
+        m_command_min(static_cast<Scalar>(std::isnan(options.command_min) ? model.input_min() : options.command_min)),
+        m_command_max(static_cast<Scalar>(std::isnan(options.command_max) ? model.input_max() : options.command_max)),
+        m_input(make_input(model, m_command_min - m_u0, m_command_max - m_u0)),
+        m_output(make_output(model)),
+        m_backlash(make_backlash(model, static_cast<Scalar>(options.backlash_band))),
+        m_window(VectorX::Zero(m_linear.window_size())) {
+    bonl::detail::require(!std::isnan(m_command_min) && !std::isnan(m_command_max) && m_command_min <= m_u0 &&
+                              m_u0 <= m_command_max,
+                          "the command range must contain the operating point u0 = " +
+                              bonl::detail::format_number(static_cast<double>(m_u0)) + ", got [" +
+                              bonl::detail::format_number(static_cast<double>(m_command_min)) + ", " +
+                              bonl::detail::format_number(static_cast<double>(m_command_max)) + "]");
+    if constexpr (kHasInputPolynomial) {
+      m_f = model.f();
+      m_p = model.p();
+    }
+  }
+
+  /// The reference the step at sample k takes: r(k + nk), ..., r(k + preview()).
+  Eigen::Index nk() const noexcept { return m_linear.nk(); }
+  Eigen::Index preview() const noexcept { return m_linear.nk() + m_linear.preview(); }
+  /// How many reference samples step() needs: preview() - nk() + 1 (1 when B is minimum phase).
+  Eigen::Index window_size() const noexcept { return m_linear.window_size(); }
+  bool minimum_phase() const noexcept { return m_linear.minimum_phase(); }
+  Scalar command_min() const noexcept { return m_command_min; }
+  Scalar command_max() const noexcept { return m_command_max; }
+  const LinearInverse<Scalar>& linear_inverse() const noexcept { return m_linear; }
+
+  /// Back to rest, as the model's free run starts.
+  void reset() noexcept {
+    m_linear.reset();
+    if constexpr (kHasBacklash) m_backlash.reset();
+  }
+
+  /// The command u(k) for the reference window r(k+nk), ..., r(k+nk+window_size()-1) (the model's
+  /// output units; more entries are ignored). A window too short (RejectedShortPreview) or with a
+  /// non-finite entry (RejectedNonFinite) leaves the inverse untouched and the command NaN.
+  template <typename W>
+  InverseStep<Scalar> step(const Eigen::MatrixBase<W>& reference) noexcept {
+    const Eigen::Index n = m_window.size();
+    const Scalar nan = std::numeric_limits<Scalar>::quiet_NaN();
+    if (reference.size() < n) return {nan, InverseStatus::RejectedShortPreview};
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (!std::isfinite(reference[i])) return {nan, InverseStatus::RejectedNonFinite};
+    }
+    InverseStatus status = InverseStatus::Exact;
+    // The output block's inverse over the window; the backlash's direction advances with r(k+nk) only.
+    if constexpr (kHasBacklash) {
+      auto state = m_backlash.state();
+      for (Eigen::Index i = 0; i < n; ++i) m_window[i] = m_backlash.map(reference[i] - m_y0, state);
+    } else if constexpr (kHasOutputPolynomial) {
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const InverseStep<Scalar> x = m_output(reference[i] - m_y0);
+        m_window[i] = x.value;
+        if (i == 0) status |= x.status;
+      }
+    } else {
+      for (Eigen::Index i = 0; i < n; ++i) m_window[i] = reference[i] - m_y0;
+    }
+    const Scalar w_desired = m_linear.input(m_window);
+    Scalar u = Scalar(0);
+    Scalar w = Scalar(0);
+    if constexpr (kHasInputPolynomial) {
+      const InverseStep<Scalar> command = m_input(w_desired);
+      u = command.value;
+      status |= command.status;
+      w = TwoSegmentPolynomial<Scalar>::evaluate(m_f, m_p, u);
+    } else {
+      u = std::min(std::max(w_desired, m_command_min - m_u0), m_command_max - m_u0);
+      if (u != w_desired) status |= InverseStatus::Saturated;
+      w = u;
+    }
+    m_linear.commit(m_window[0], w);
+    if constexpr (kHasBacklash) m_backlash.step(reference[0] - m_y0);
+    return {u + m_u0, status};
+  }
+
+  /// step() for a window of one sample, r(k + nk): only where window_size() is 1 (else
+  /// RejectedShortPreview).
+  InverseStep<Scalar> step(Scalar reference) noexcept {
+    return step(Eigen::Matrix<Scalar, 1, 1>::Constant(reference));
+  }
+
+  /// The commands for a whole reference r(0..N-1), from rest (this inverse's state is not used or
+  /// changed): u(k) for k = 0..N-1 from r(k+nk), ..., r(k+preview()), the reference held at r(N-1)
+  /// beyond its end. model.simulate(command) then follows r from k = nk on. Throws
+  /// std::invalid_argument for a non-finite reference, or one of preview() samples or fewer.
+  template <typename R>
+  InverseRun<Scalar> commands(const Eigen::MatrixBase<R>& reference) const {
+    bonl::detail::require_finite(reference, "reference");
+    const Eigen::Index size = reference.size();
+    bonl::detail::require(size > preview(), "the reference must be longer than the inverse's preview (nk + " +
+                                                std::to_string(m_linear.preview()) + " = " +
+                                                std::to_string(preview()) + " samples), got " +
+                                                std::to_string(size));
+    InverseModel run = *this;
+    run.reset();
+    InverseRun<Scalar> out{VectorX(size), std::vector<InverseStatus>(static_cast<std::size_t>(size))};
+    VectorX window(window_size());
+    for (Eigen::Index k = 0; k < size; ++k) {
+      for (Eigen::Index i = 0; i < window.size(); ++i) window[i] = reference[std::min(k + nk() + i, size - 1)];
+      const InverseStep<Scalar> step = run.step(window);
+      out.command[k] = step.value;
+      out.status[static_cast<std::size_t>(k)] = step.status;
+    }
+    return out;
+  }
+
+ private:
+  using InputInverse = std::conditional_t<kHasInputPolynomial, InputPolynomialInverse<Scalar>, int>;
+  using OutputInverse = std::conditional_t<kHasOutputPolynomial, OutputPolynomialInverse<Scalar>, int>;
+  using BacklashInverseType = std::conditional_t<kHasBacklash, BacklashInverse<Scalar>, int>;
+
+  static InputInverse make_input(const Model& model, Scalar low, Scalar high) {
+    if constexpr (kHasInputPolynomial) {
+      bonl::detail::require(std::isfinite(low) && std::isfinite(high),
+                            std::string("the inverse of a ") + Model::kName +
+                                " model needs a finite command range: set InverseOptions::command_min and "
+                                "command_max, or the model's input range (identify() records it)");
+      return InputPolynomialInverse<Scalar>(model.f(), model.p(), low, high);
+    } else {
+      (void)model, (void)low, (void)high;
+      return 0;
+    }
+  }
+  static OutputInverse make_output(const Model& model) {
+    if constexpr (kHasOutputPolynomial) {
+      return OutputPolynomialInverse<Scalar>(model.q());
+    } else {
+      (void)model;
+      return 0;
+    }
+  }
+  static BacklashInverseType make_backlash(const Model& model, Scalar band) {
+    if constexpr (kHasBacklash) {
+      return BacklashInverse<Scalar>(model.c(), band);
+    } else {
+      (void)model;
+      bonl::detail::require(std::isfinite(band) && band >= Scalar(0),
+                            "the backlash inverse's transition band must be finite and >= 0");
+      return 0;
+    }
+  }
+
+  LinearInverse<Scalar> m_linear;
+  Scalar m_u0, m_y0;
+  Scalar m_command_min, m_command_max;
+  InputInverse m_input;
+  OutputInverse m_output;
+  BacklashInverseType m_backlash;
+  VectorX m_window;  // x_d(k+nk), ..., x_d(k+nk+s)
+  VectorX m_f, m_p;  // the input polynomial, as the model evaluates it
+};
+
+}  // namespace bonl::control

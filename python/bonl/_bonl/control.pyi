@@ -1,0 +1,225 @@
+"""
+Inverse models: the command that makes an identified model follow a reference (docs/control.md).
+"""
+from __future__ import annotations
+import bonl._bonl
+import numpy
+import numpy.typing
+import typing
+__all__: list[str] = ['InverseModel', 'InverseRun', 'InverseStatus', 'InverseStep']
+class InverseStatus:
+    """
+    What an inverse reports with a command: flags, exact (0) when the model follows the reference. Combined flags are their sum (status & InverseStatus.saturated).
+    
+    Members:
+    
+      exact : the command makes the model reach the reference
+    
+      saturated : the command is at the end of its range (or of the input polynomial's monotone branch)
+    
+      dead_band : the reference asks for a w between the input polynomial's two segments at u = 0: command 0
+    
+      out_of_range : the output polynomial's monotone branch through 0 does not reach the reference: its end is used
+    
+      rejected_non_finite : a reference was NaN or infinite; the inverse is untouched
+    
+      rejected_short_preview : the reference window was shorter than window_size; the inverse is untouched
+    """
+    __members__: typing.ClassVar[dict[str, InverseStatus]]
+    dead_band: typing.ClassVar[InverseStatus]
+    exact: typing.ClassVar[InverseStatus]
+    out_of_range: typing.ClassVar[InverseStatus]
+    rejected_non_finite: typing.ClassVar[InverseStatus]
+    rejected_short_preview: typing.ClassVar[InverseStatus]
+    saturated: typing.ClassVar[InverseStatus]
+    @typing.overload
+    def __eq__(self, other: InverseStatus) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    @typing.overload
+    def __ge__(self, other: InverseStatus) -> bool:
+        ...
+    @typing.overload
+    def __ge__(self, other: typing.Any) -> None:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    @typing.overload
+    def __gt__(self, other: InverseStatus) -> bool:
+        ...
+    @typing.overload
+    def __gt__(self, other: typing.Any) -> None:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __le__(self, other: InverseStatus) -> bool:
+        ...
+    @typing.overload
+    def __le__(self, other: typing.Any) -> None:
+        ...
+    @typing.overload
+    def __lt__(self, other: InverseStatus) -> bool:
+        ...
+    @typing.overload
+    def __lt__(self, other: typing.Any) -> None:
+        ...
+    @typing.overload
+    def __ne__(self, other: InverseStatus) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class InverseStep:
+    """
+    One command and what the inverse reports.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def status(self) -> int:
+        """
+        int: the InverseStatus flags (0: exact)
+        """
+    @property
+    def value(self) -> float:
+        """
+        float: the command u(k)
+        """
+class InverseRun:
+    """
+    The commands for a whole reference.
+    """
+    @property
+    def command(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: u(k) for every sample of the reference
+        """
+    @property
+    def status(self) -> numpy.typing.NDArray[numpy.uint8]:
+        """
+        numpy.ndarray of uint8: each command's InverseStatus flags
+        """
+class InverseModel:
+    """
+    The inverse of an identified model.
+    
+    Per sample, given the reference output ``preview`` samples ahead, the command that makes the model
+    follow it: the backlash inverse (P-H-W) or the output polynomial's inverse (H-W, Wiener), the linear
+    block's inverse (exact where B is minimum phase, ZPETC where not), the input polynomial's inverse
+    (Hammerstein, H-W, P-H-W). docs/control.md.
+    
+    Parameters
+    ----------
+    model : one of bonl.MODELS
+    command_min, command_max : float, optional
+        The command range (the model's input units); it must contain the operating point's u0. Default:
+        the model's input_range. Models with an input polynomial need it finite.
+    backlash_band : float, default 0
+        P-H-W: the backlash inverse's transition band (the output's units); 0 is the exact switch.
+    
+    Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1, q_1 = 0, an input
+    polynomial that is not monotone through 0).
+    """
+    @typing.overload
+    def __init__(self, model: bonl._bonl.ARX, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.Hammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.HammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.PseudoHammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.Wiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    def commands(self, reference: typing.Any) -> InverseRun:
+        """
+        The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
+        
+        u(k) is computed from r(k + nk), ..., r(k + preview), the reference held at its last value beyond its end;
+        model.simulate(run.command) then follows r from k = nk on where every status is exact. ValueError for a
+        non-finite reference or one of preview samples or fewer. Returns InverseRun (command, status).
+        """
+    def reset(self) -> None:
+        """
+        Back to rest, as the model's free run starts.
+        """
+    def step(self, reference: typing.Any) -> InverseStep:
+        """
+        The command u(k) for the reference ahead.
+        
+        Parameters
+        ----------
+        reference : float or 1-D array
+            r(k + nk) (a float, where window_size is 1), or the window r(k + nk), ..., r(k + preview) (at
+            least window_size entries).
+        
+        Returns
+        -------
+        InverseStep: ``value`` (the command) and ``status`` (InverseStatus flags). A non-finite reference or a
+        window too short raises ValueError and leaves the inverse untouched.
+        """
+    @property
+    def command_max(self) -> float:
+        """
+        float: the command range's upper end
+        """
+    @property
+    def command_min(self) -> float:
+        """
+        float: the command range's lower end
+        """
+    @property
+    def minimum_phase(self) -> bool:
+        """
+        bool: B's zeros all inside the unit circle (the exact inverse; else ZPETC)
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: the model's delay
+        """
+    @property
+    def preview(self) -> int:
+        """
+        int: how far ahead the last reference of a step lies (nk, plus ZPETC's preview)
+        """
+    @property
+    def stable_factor(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: B_a, B's factor with the zeros inside the unit circle (b_0 included)
+        """
+    @property
+    def unstable_factor(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: B_u, the factor with the others, leading 1 ([1.0] when minimum phase)
+        """
+    @property
+    def window_size(self) -> int:
+        """
+        int: how many reference samples a step takes (1 when B is minimum phase)
+        """

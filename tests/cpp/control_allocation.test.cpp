@@ -1,0 +1,62 @@
+// The inverse models' per-sample step allocates nothing and is noexcept (bonl/control/inverse_model.hpp),
+// for every model, fixed and run-time orders, minimum-phase and ZPETC. Allocations are counted as in
+// allocation.test.cpp: this executable replaces operator new and forbids Eigen's malloc.
+
+namespace bonl_test {
+inline long g_eigen_allocations = 0;
+}  // namespace bonl_test
+#define EIGEN_RUNTIME_NO_MALLOC
+#define eigen_assert(x) ((x) ? static_cast<void>(0) : static_cast<void>(++bonl_test::g_eigen_allocations))
+
+#include <bonl/control.hpp>
+
+#include "counting_allocator.hpp"
+#include "test_support.hpp"
+
+using namespace bonl_test;
+using bonl::control::InverseModel;
+
+namespace {
+template <class Model>
+void check_steps_allocate_nothing(const Model& model) {
+  INFO(Model::kName);
+  bonl::control::InverseOptions options;
+  options.command_min = -1.0;
+  options.command_max = 1.0;
+  options.backlash_band = 0.01;
+  InverseModel<Model> inverse(model, options);
+  Eigen::VectorXd window = Eigen::VectorXd::Zero(inverse.window_size());
+  static_assert(noexcept(inverse.step(window)), "InverseModel::step must be noexcept");
+  static_assert(noexcept(inverse.step(0.0)), "InverseModel::step must be noexcept");
+  const long before = allocations() + g_eigen_allocations;
+  Eigen::internal::set_is_malloc_allowed(false);
+  double sum = 0.0;
+  for (Eigen::Index k = 0; k < 2000; ++k) {
+    for (Eigen::Index i = 0; i < window.size(); ++i) window[i] = 0.3 * std::sin(0.01 * static_cast<double>(k + i));
+    sum += inverse.step(window).value;
+    if (window.size() == 1) sum += inverse.step(window[0]).value;
+  }
+  inverse.step(std::nan(""));
+  inverse.reset();
+  Eigen::internal::set_is_malloc_allowed(true);
+  CHECK(allocations() + g_eigen_allocations - before == 0);
+  CHECK(std::isfinite(sum));
+}
+}  // namespace
+
+TEST_CASE("the inverse models step without allocating") {
+  check_steps_allocate_nothing(known_system<bonl::ARXd>("small"));
+  check_steps_allocate_nothing(known_system<bonl::Hammersteind>("small"));
+  check_steps_allocate_nothing(known_system<bonl::HammersteinWienerd>("small"));
+  check_steps_allocate_nothing(known_system<bonl::PseudoHammersteinWienerd>("small"));
+  check_steps_allocate_nothing(known_system<bonl::Wienerd>("small"));
+  check_steps_allocate_nothing(known_arx());
+  check_steps_allocate_nothing(known_hammerstein());
+  check_steps_allocate_nothing(known_hammerstein_wiener());
+  check_steps_allocate_nothing(known_phw());
+  check_steps_allocate_nothing(known_system<bonl::PaperWiener>());
+  // ZPETC: a zero of B outside the unit circle.
+  auto nonminimum = known_system<bonl::PseudoHammersteinWienerd>("small");
+  nonminimum.set_b(vec({1.0, 1.5}));
+  check_steps_allocate_nothing(nonminimum);
+}

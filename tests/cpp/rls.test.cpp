@@ -123,19 +123,13 @@ void require_run_time_size_equals_fixed() {
 }  // namespace
 
 TEST_CASE("run-time sizes give the fixed sizes' results to rounding, at every padded length", "[rls]") {
-  // Each padded length (4, 8, 16, 24, 32), at its ends and within.
+  // Each padded length (4, 8, 16, 24, 32) once, and both ends of the first. Each fixed size
+  // compiles two kernels, so a few sizes, not all 32.
   require_run_time_size_equals_fixed<1>();
-  require_run_time_size_equals_fixed<3>();
   require_run_time_size_equals_fixed<4>();
-  require_run_time_size_equals_fixed<5>();
   require_run_time_size_equals_fixed<6>();
-  require_run_time_size_equals_fixed<8>();
-  require_run_time_size_equals_fixed<9>();
   require_run_time_size_equals_fixed<14>();
-  require_run_time_size_equals_fixed<16>();
   require_run_time_size_equals_fixed<17>();
-  require_run_time_size_equals_fixed<24>();
-  require_run_time_size_equals_fixed<25>();
   require_run_time_size_equals_fixed<32>();
 }
 

@@ -95,11 +95,13 @@ BONL_FLATTEN bool rls_update_fixed_length(Storage& M, Scalar* theta, const Scala
   // count <= kLength always (Rls dispatches on it); the bound, known to the compiler, keeps every
   // index inside the locals (GCC warns otherwise, -Warray-bounds).
   const Eigen::Index n = std::min(count, Eigen::Index(kLength));
-  Column padded_phi = Column::Zero();
-  Column padded_theta = Column::Zero();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    padded_phi[i] = phi[i];
-    padded_theta[i] = theta[i];
+  // Over the whole fixed length, each entry read only below n: a loop GCC neither turns into
+  // memcpy calls (which cost 15% of a 4-parameter update) nor reads past n in.
+  Column padded_phi;
+  Column padded_theta;
+  for (Eigen::Index i = 0; i < kLength; ++i) {
+    padded_phi[i] = i < n ? phi[i] : Scalar(0);
+    padded_theta[i] = i < n ? theta[i] : Scalar(0);
   }
   // work = M phi, as a sum of columns, even and odd ones separately in locals: see Rls::update.
   Column even = M.col(0) * padded_phi[0];

@@ -9,7 +9,8 @@
 // update (docs/performance.md).
 
 // Under AddressSanitizer BONL_FLATTEN is empty: the inlining buys speed only, and inlining the
-// instrumented Eigen helpers everywhere tripled the compile time of the sanitized tests.
+// instrumented Eigen helpers everywhere made the sanitized build several times slower to compile
+// (docs/performance.md).
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)
 #define BONL_SANITIZED_BUILD 1

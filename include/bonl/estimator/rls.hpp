@@ -38,7 +38,7 @@ namespace detail {
 /// Storage size of a covariance: rounded up to a multiple of 8 (4 below 5), so that every column
 /// is a whole number of SIMD registers (SSE2 to AVX-512, double and float). At the paper's 14
 /// parameters Eigen otherwise falls back to 2-wide packets with scalar remainders; the padding rows
-/// and columns stay exactly zero (see rls_update).
+/// and columns stay exactly zero (see Rls::update).
 constexpr int padded_size(int n) { return n == Eigen::Dynamic ? n : (n <= 4 ? 4 : (n + 7) / 8 * 8); }
 
 /// The scalars of an Rls's state besides M and theta.
@@ -96,7 +96,8 @@ BONL_FLATTEN bool rls_update_fixed_length(Storage& M, Scalar* theta, const Scala
   // index inside the locals (GCC warns otherwise, -Warray-bounds).
   const Eigen::Index n = std::min(count, Eigen::Index(kLength));
   // Over the whole fixed length, each entry read only below n: a loop GCC neither turns into
-  // memcpy calls (which cost 15% of a 4-parameter update) nor reads past n in.
+  // memcpy calls (a loop over the n entries became two, a sizeable share of a small update:
+  // docs/performance.md) nor reads past n in.
   Column padded_phi;
   Column padded_theta;
   for (Eigen::Index i = 0; i < kLength; ++i) {
@@ -236,8 +237,9 @@ class Rls {
     if constexpr (N_ == Eigen::Dynamic) {
       // Run-time sizes up to 32 parameters run the kernel of their storage length, fixed at compile
       // time: whole SIMD registers and locals in registers, what makes the fixed sizes fast. Five
-      // lengths cover 1 to 32 parameters; a kernel per exact size compiled 32 of them, which took
-      // about a minute per translation unit (docs/performance.md). Above 32, the generic kernel.
+      // lengths cover 1 to 32 parameters; a kernel per exact size compiled 32 of them, which came to
+      // dominate the build of every translation unit using a run-time size (docs/performance.md).
+      // Above 32, the generic kernel.
       switch (m_M.rows()) {
         case 4: return fixed_length_update<kGivenError, 4>(phi, target_or_error, lambda, max_trace);
         case 8: return fixed_length_update<kGivenError, 8>(phi, target_or_error, lambda, max_trace);

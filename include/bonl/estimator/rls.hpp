@@ -240,6 +240,10 @@ class Rls {
       // lengths cover 1 to 32 parameters; a kernel per exact size compiled 32 of them, which came to
       // dominate the build of every translation unit using a run-time size (docs/performance.md).
       // Above 32, the generic kernel.
+      // One case per padded length up to kMaxCompiledSize: the constructor allocates the generic
+      // kernel's scratch only above it, so a length without its case here would run on none.
+      static_assert(detail::padded_size(kMaxCompiledSize) == 32,
+                    "a case for every padded length up to kMaxCompiledSize");
       switch (m_M.rows()) {
         case 4: return fixed_length_update<kGivenError, 4>(phi, target_or_error, lambda, max_trace);
         case 8: return fixed_length_update<kGivenError, 8>(phi, target_or_error, lambda, max_trace);

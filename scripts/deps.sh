@@ -3,7 +3,13 @@ BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-d
 # scripts/fuzz.sh only: clang and its runtimes (libclang_rt.fuzzer, asan, ubsan).
 BONL_FUZZ_APT_PACKAGES=(clang-14 libclang-rt-14-dev)
 
-step() { printf '\n==> %s\n' "$*"; }
+# Each step prints the wall time since the first script of the run started (the CI's log shows
+# where its minutes go); BONL_STEP_T0 is exported so that scripts started by scripts share it.
+export BONL_STEP_T0=${BONL_STEP_T0:-$(date +%s)}
+step() {
+  local elapsed=$(($(date +%s) - BONL_STEP_T0))
+  printf '\n==> [%d:%02d] %s\n' $((elapsed / 60)) $((elapsed % 60)) "$*"
+}
 
 # apt-get update + install of every package (through sudo when not root).
 bonl_apt_install() {

@@ -16,7 +16,7 @@ cmake --build build/ci -j2
 
 step "ctest"
 status=0
-ctest --test-dir build/ci --output-on-failure --no-tests=error || status=1
+ctest --test-dir build/ci --output-on-failure --no-tests=error -j2 || status=1
 bash scripts/check_test_discovery.sh build/ci || status=1
 
 step "install to a temporary prefix, build and run examples/consumer against it"

@@ -137,6 +137,24 @@ Raises
 ValueError
     For a bad ``initial_position``; the plant is left as it was.)doc";
 
+const char* const kSetParametersDoc = R"doc(Change the plant from the current sample on, keeping its state.
+
+As a machine changes in service (the oil warms and its bulk modulus drops, the pilot valve wears):
+the next ``step`` runs with ``parameters`` from the state the plant is in (position, velocity,
+pressures, spool, the hysteresis' and the backlash's memories, the noise sequence). Later ``reset()``\s
+keep the new parameters.
+
+Parameters
+----------
+parameters : Parameters
+    The new parameters. The linkage's geometry (``stroke``, ``pivot_to_rod_pin``,
+    ``pivot_to_base_pin``, ``retracted_length``) must stay as it is.
+
+Raises
+------
+ValueError
+    For non-physical parameters or a changed geometry, naming them; the plant is left as it was.)doc";
+
 }  // namespace
 
 void bind_plant_stepping(py::module_& sub) {
@@ -168,6 +186,12 @@ void bind_plant_stepping(py::module_& sub) {
                               noise_seed.value_or(self.options().noise_seed));
           },
           py::arg("initial_position") = py::none(), py::arg("noise_seed") = py::none(), kResetDoc)
+      .def(
+          "set_parameters",
+          [](plant::SteppingPlant& self, const py::object& parameters) {
+            self.set_parameters(parameters_argument(parameters));
+          },
+          py::arg("parameters"), kSetParametersDoc)
       .def_property_readonly(
           "measurement", [](const plant::SteppingPlant& self) { return self.measurement(); },
           "Measurement: the latest, at ``time`` (a copy).")

@@ -163,6 +163,7 @@ Integrator::Integrator(const Parameters& parameters, const SimulationOptions& op
       m_sample_time(options.sample_time),
       m_decay(std::exp(-1.0 / (options.command_rate * parameters.valve_time_constant))),
       m_phi0(parameters.angle_offset()),
+      m_noise_requested(options.sensor_noise),
       m_noise(options.sensor_noise && parameters.sensor_noise > 0.0),
       m_engine(options.noise_seed) {
   const double h0 = options.initial_position >= 0.0 ? options.initial_position : 0.5 * parameters.stroke;
@@ -249,6 +250,23 @@ GridInputs Integrator::read_inputs(const Command& command, long j, double previo
                          bonl::detail::format_number(in.load));
   }
   return in;
+}
+
+void Integrator::set_parameters(const Parameters& parameters) {
+  if (m_failed)
+    throw std::logic_error("bonl: " + m_where + ": a step failed at t = " + bonl::detail::format_number(m_failed_at) +
+                           " s and left the plant between samples; reset() it");
+  // Everything derived from the parameters is computed before anything changes (none of it throws).
+  UserData data(parameters, m_data.rate);
+  const double decay = std::exp(-1.0 / (m_data.rate * parameters.valve_time_constant));
+  const double time = m_measurement.time;
+  // The state is CVODE's y at the current sample time; only the history of its BDF steps goes.
+  check(CVodeReInit(m_cvode.get(), time, m_y.get()), "CVodeReInit", time);
+  m_parameters = parameters;
+  m_data.model = data.model;
+  m_data.inv_tau = data.inv_tau;
+  m_decay = decay;
+  m_noise = m_noise_requested && parameters.sensor_noise > 0.0;
 }
 
 GridInputs Integrator::inputs_now(const Command& command) { return read_inputs(command, m_grid, m_pilot); }

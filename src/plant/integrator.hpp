@@ -108,6 +108,12 @@ class Integrator {
   /// throws std::logic_error.
   GridInputs advance(const Command& command);
 
+  /// The plant's parameters from now on, the state kept (position, velocity, pressures, spool, pilot
+  /// and pin memories, noise sequence): CVODE restarts its history at the current sample time, the
+  /// right-hand side having changed there. `parameters` must be valid and keep the geometry that maps
+  /// the position to the angle (SteppingPlant::set_parameters checks both).
+  void set_parameters(const Parameters& parameters);
+
   /// The inputs of the current sample time's grid point under `command` (command and load read once;
   /// nothing advances): simulate's last sample.
   GridInputs inputs_now(const Command& command);
@@ -134,6 +140,7 @@ class Integrator {
   double m_sample_time;
   double m_decay;  ///< the spool's decay over one command interval, exp(-dt / tau_v)
   double m_phi0;
+  bool m_noise_requested;  ///< SimulationOptions::sensor_noise
   bool m_noise;
 
   // State at the current sample time (and, during an advance, at the last grid point reached).

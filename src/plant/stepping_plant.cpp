@@ -55,6 +55,27 @@ Measurement SteppingPlant::reset(double initial_position, std::uint64_t noise_se
   return m_integrator->measurement();
 }
 
+void SteppingPlant::set_parameters(const Parameters& parameters) {
+  integrator();
+  parameters.validate();
+  const struct {
+    const char* name;
+    double Parameters::*member;
+  } geometry[] = {{"stroke", &Parameters::stroke},
+                  {"pivot_to_rod_pin", &Parameters::pivot_to_rod_pin},
+                  {"pivot_to_base_pin", &Parameters::pivot_to_base_pin},
+                  {"retracted_length", &Parameters::retracted_length}};
+  for (const auto& g : geometry) {
+    if (parameters.*(g.member) != m_parameters.*(g.member))
+      bonl::detail::fail(std::string(kWhere) + ": set_parameters: " + g.name +
+                         " cannot change while the plant runs (the linkage maps the position to the angle), was " +
+                         bonl::detail::format_number(m_parameters.*(g.member)) + ", got " +
+                         bonl::detail::format_number(parameters.*(g.member)));
+  }
+  m_integrator->set_parameters(parameters);
+  m_parameters = parameters;
+}
+
 const Measurement& SteppingPlant::measurement() const { return integrator().measurement(); }
 double SteppingPlant::time() const { return integrator().measurement().time; }
 long SteppingPlant::steps() const { return integrator().steps(); }

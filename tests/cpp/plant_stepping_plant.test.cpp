@@ -285,3 +285,101 @@ TEST_CASE("a moved plant goes on where it was, and the moved-from one says so") 
   assigned = std::move(moved);
   CHECK(same(assigned.measurement(), twin.measurement()));
 }
+
+TEST_CASE("parameters changed at t = 0 equal a plant built with them") {
+  // The oracle: a plant that had the changed parameters from the start. The rest state depends on
+  // neither parameter changed here (bulk modulus, pilot hysteresis), so the two start alike, and
+  // CVODE's restart at t = 0 is its start.
+  Parameters changed;
+  changed.bulk_modulus *= 0.7;
+  changed.pilot_hysteresis *= 2.0;
+  SteppingPlant plant(Parameters{});
+  plant.set_parameters(changed);
+  SteppingPlant twin(changed);
+  CHECK(same(plant.measurement(), twin.measurement()));
+  double worst = 0.0;
+  for (Eigen::Index k = 0; k < short_commands().size(); ++k) {
+    const Measurement a = plant.step(short_commands()[k]);
+    const Measurement b = twin.step(short_commands()[k]);
+    worst = std::max({worst, std::abs(a.joint_angle - b.joint_angle), std::abs(a.measured_angle - b.measured_angle)});
+  }
+  CHECK(worst <= 1e-12);
+  CHECK(plant.parameters().bulk_modulus == changed.bulk_modulus);
+}
+
+TEST_CASE("parameters changed mid-run keep the state and change the dynamics from then on") {
+  SteppingPlant plant(Parameters{});
+  SteppingPlant unchanged(Parameters{});
+  SteppingPlant restarted(Parameters{});  // set_parameters with the same values: only CVODE's restart
+  for (Eigen::Index k = 0; k < 100; ++k) {
+    plant.step(short_commands()[k]);
+    unchanged.step(short_commands()[k]);
+    restarted.step(short_commands()[k]);
+  }
+  const Measurement before = plant.measurement();
+  Parameters changed;
+  changed.bulk_modulus *= 0.7;
+  changed.pilot_hysteresis *= 2.0;
+  plant.set_parameters(changed);
+  restarted.set_parameters(Parameters{});
+  CHECK(same(plant.measurement(), before));
+  double restart_difference = 0.0;
+  double change_difference = 0.0;
+  for (Eigen::Index k = 100; k < 200; ++k) {
+    const double reference = unchanged.step(short_commands()[k]).joint_angle;
+    restart_difference = std::max(restart_difference, std::abs(restarted.step(short_commands()[k]).joint_angle - reference));
+    change_difference = std::max(change_difference, std::abs(plant.step(short_commands()[k]).joint_angle - reference));
+  }
+  INFO("restart " << restart_difference << ", change " << change_difference);
+  // CVODE's restart alone moves the angle by about its tolerance; the new parameters by far more.
+  CHECK(restart_difference < 1e-5);
+  CHECK(change_difference > 100 * restart_difference);
+  CHECK(change_difference > 1e-4);
+}
+
+TEST_CASE("a doubled pilot hysteresis holds the pilot over the new width") {
+  // The play operator's oracle: after a rise the pilot holds while the commanded opening comes back
+  // by less than hv and follows beyond it. Coming back by 1.5 times the old hv moves the old pilot
+  // and holds the new one.
+  Parameters p;
+  SimulationOptions options;
+  options.sensor_noise = false;
+  SteppingPlant old_plant(p, options);
+  SteppingPlant new_plant(p, options);
+  Parameters doubled = p;
+  doubled.pilot_hysteresis *= 2.0;
+  new_plant.set_parameters(doubled);
+  const double up = 3.5;  // V: opening kv (3.5 - 2.5 - d)
+  const double back = up - 1.5 * p.pilot_hysteresis / p.valve_gain();
+  old_plant.step(up);
+  new_plant.step(up);
+  const double held = old_plant.step(up).pilot;
+  CHECK(new_plant.step(up).pilot == Approx(held));
+  old_plant.step(back);
+  new_plant.step(back);
+  CHECK(old_plant.measurement().pilot < held - 1e-3);
+  CHECK(new_plant.measurement().pilot == Approx(held));
+}
+
+TEST_CASE("set_parameters refuses non-physical values and another linkage, and changes nothing") {
+  SteppingPlant plant(Parameters{});
+  SteppingPlant twin(Parameters{});
+  for (Eigen::Index k = 0; k < 50; ++k) {
+    plant.step(short_commands()[k]);
+    twin.step(short_commands()[k]);
+  }
+  Parameters bad;
+  bad.bulk_modulus = -1.0;
+  CHECK_THROWS_AS(plant.set_parameters(bad), std::invalid_argument);
+  bad = Parameters{};
+  bad.bulk_modulus = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(plant.set_parameters(bad), std::invalid_argument);
+  for (const auto member : {&Parameters::stroke, &Parameters::pivot_to_rod_pin, &Parameters::pivot_to_base_pin,
+                            &Parameters::retracted_length}) {
+    Parameters other;
+    other.*member *= 1.01;
+    CHECK_THROWS_WITH(plant.set_parameters(other), Catch::Matchers::Contains("cannot change while the plant runs"));
+  }
+  CHECK(plant.parameters().bulk_modulus == Parameters{}.bulk_modulus);
+  for (Eigen::Index k = 50; k < 100; ++k) CHECK(same(plant.step(short_commands()[k]), twin.step(short_commands()[k])));
+}

@@ -45,6 +45,20 @@ def raises(exception, message, call, *args, **kwargs):
 # --- Models and blocks ---------------------------------------------------------------------------
 
 
+
+def test_p27_bad_parameters_mid_run_change_nothing():
+    stepping = plant.SteppingPlant()
+    twin = plant.SteppingPlant()
+    for _ in range(3):
+        stepping.step(3.0), twin.step(3.0)
+    raises(ValueError, "bonl: plant: bulk_modulus must be > 0 and finite, got -1", stepping.set_parameters,
+           plant.Parameters(bulk_modulus=-1.0))
+    raises(ValueError, "bonl: SteppingPlant: set_parameters: stroke cannot change while the plant runs (the linkage maps "
+           "the position to the angle), was 1.5, got 1.4", stepping.set_parameters, plant.Parameters(stroke=1.4))
+    raises(TypeError, "parameters must be a bonl.plant.Parameters", stepping.set_parameters, {})
+    assert stepping.parameters == plant.Parameters()
+    assert stepping.step(3.2).to_dict() == twin.step(3.2).to_dict()
+
 @pytest.mark.parametrize(
     "make, message",
     [

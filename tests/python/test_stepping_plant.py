@@ -162,3 +162,25 @@ def test_stepping_env_is_a_thin_gymnasium_style_wrapper():
     # A full command drives the piston into the end stop: terminated.
     env.reset()
     assert any(env.step(5.0)[2] for _ in range(300))
+
+
+def test_set_parameters_at_the_start_equals_a_plant_built_with_them_and_keeps_the_state_mid_run():
+    changed = plant.Parameters(bulk_modulus=0.7e9, pilot_hysteresis=0.1)
+    commands = paper_commands(150, 100.0)
+    stepping = plant.SteppingPlant()
+    stepping.set_parameters(changed)
+    built = plant.SteppingPlant(changed)
+    got = [stepping.step(c).joint_angle for c in commands]
+    expected = [built.step(c).joint_angle for c in commands]
+    np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12)
+    assert stepping.parameters == changed
+
+    # Mid-run: the state carries over; the changed plant then leaves the unchanged one.
+    stepping, unchanged = plant.SteppingPlant(), plant.SteppingPlant()
+    for c in commands[:100]:
+        stepping.step(c), unchanged.step(c)
+    before = stepping.measurement.to_dict()
+    stepping.set_parameters(changed)
+    assert stepping.measurement.to_dict() == before
+    gap = max(abs(stepping.step(c).joint_angle - unchanged.step(c).joint_angle) for c in commands[100:])
+    assert gap > 1e-4

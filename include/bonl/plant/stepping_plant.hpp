@@ -76,6 +76,15 @@ class SteppingPlant {
   /// nothing.
   Measurement reset(double initial_position, std::uint64_t noise_seed);
 
+  /// The plant changes from the current sample on, as a machine's does in service (the oil warms and
+  /// its bulk modulus drops, the pilot valve wears): the next step() runs with `parameters`, from the
+  /// state the plant is in (position, velocity, pressures, spool, the hysteresis' and the backlash's
+  /// memories, the noise sequence). The geometry that maps the piston position to the joint angle
+  /// (stroke, pivot_to_rod_pin, pivot_to_base_pin, retracted_length) must stay as it is: another
+  /// linkage is another machine. Non-physical parameters or a changed geometry throw
+  /// std::invalid_argument naming them and change nothing. Later reset()s keep the new parameters.
+  void set_parameters(const Parameters& parameters);
+
   const Measurement& measurement() const;  ///< the latest: at time()
   double time() const;                     ///< t_k [s]
   long steps() const;                      ///< CVODE's internal steps since the start or reset()

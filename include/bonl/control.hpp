@@ -2,8 +2,10 @@
 // Inverse models for control (issue 20): per sample, the command that makes an identified model follow
 // a reference output. The blocks' inverses (backlash, output polynomial, linear block with ZPETC where B
 // is not minimum phase, two-segment input polynomial) and InverseModel<Model>, which composes them for
-// ARX, Hammerstein, H-W, P-H-W and Wiener. docs/control.md explains each.
+// ARX, Hammerstein, H-W, P-H-W and Wiener; AdaptiveInverse<Model>, the online estimator and the inverse
+// together, re-derived as the estimate changes. docs/control.md explains each.
 
+#include "control/adaptive_inverse.hpp"
 #include "control/backlash_inverse.hpp"
 #include "control/input_polynomial_inverse.hpp"
 #include "control/inverse_model.hpp"

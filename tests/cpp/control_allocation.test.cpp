@@ -60,3 +60,27 @@ TEST_CASE("the inverse models step without allocating") {
   nonminimum.set_b(vec({1.0, 1.5}));
   check_steps_allocate_nothing(nonminimum);
 }
+
+TEST_CASE("the adaptive inverse steps and updates without allocating between its derivations") {
+  // Fixed orders (the paper's P-H-W): the estimator's update allocates nothing; only the derivation
+  // every rederive_every samples does (docs/control.md).
+  const auto model = known_phw();
+  bonl::control::AdaptiveInverseOptions options;
+  options.inverse.command_min = -1.0;
+  options.inverse.command_max = 1.0;
+  options.inverse.backlash_band_per_c = 1.0;
+  options.rederive_every = 1000;
+  bonl::control::AdaptiveInverse<bonl::PaperPseudoHammersteinWiener> adaptive(model, options);
+  const long before = allocations() + g_eigen_allocations;
+  Eigen::internal::set_is_malloc_allowed(false);
+  double sum = 0.0;
+  for (Eigen::Index k = 0; k < 999; ++k) {
+    const double u = adaptive.step(0.3 * std::sin(0.01 * static_cast<double>(k))).value;
+    adaptive.update(u, 0.1 * std::sin(0.01 * static_cast<double>(k - 8)));
+    sum += u;
+  }
+  Eigen::internal::set_is_malloc_allowed(true);
+  CHECK(allocations() + g_eigen_allocations - before == 0);
+  CHECK(adaptive.estimator().samples() == 999);
+  CHECK(std::isfinite(sum));
+}

@@ -11,13 +11,14 @@ set(ALLOWED_support support)
 set(ALLOWED_blocks support blocks)
 set(ALLOWED_signals support signals)
 set(ALLOWED_models support blocks models)
-# The inverses are templates on the model: they include the blocks they invert, not the models.
-set(ALLOWED_control support blocks control)
+# The inverses are templates on the model: they include the blocks they invert, not the models. The
+# adaptive inverse runs the online estimator and checks the estimate's poles: estimator and models.
+set(ALLOWED_control support blocks models estimator control)
 set(ALLOWED_metrics support metrics)
 set(ALLOWED_estimator support models estimator)
 set(ALLOWED_io support models io)
 set(ALLOWED_plant support blocks signals plant)
-set(ALLOWED_experiment support blocks signals models metrics estimator io plant experiment)
+set(ALLOWED_experiment support blocks signals models control metrics estimator io plant experiment)
 set(ALLOWED_umbrella ${LAYERS})
 
 # The layer of a path relative to include/bonl (or src/).

@@ -49,6 +49,8 @@ class BacklashInverse {
   Scalar c() const noexcept { return m_c; }
   Scalar band() const noexcept { return m_band; }
   const State& state() const noexcept { return m_state; }
+  /// Goes on from `state` (another inverse's, for one re-derived with a new c or band).
+  void continue_from(const State& state) noexcept { m_state = state; }
   /// Back to the start: the output at rest at y0, direction unknown.
   void reset(Scalar y0 = Scalar(0)) noexcept { m_state = State{0, y0}; }
 

@@ -44,6 +44,9 @@ struct InverseOptions {
   double command_max = std::numeric_limits<double>::quiet_NaN();
   /// P-H-W: the backlash inverse's transition band, in the output's units (0: the exact switch).
   double backlash_band = 0.0;
+  /// P-H-W: added to backlash_band, times the model's backlash half-width c (1: a band of c, which
+  /// scales with the model; what the tracking experiment uses, docs/control.md).
+  double backlash_band_per_c = 0.0;
 };
 
 /// A whole reference's commands and the status of each.
@@ -88,7 +91,7 @@ class InverseModel {
         m_command_max(static_cast<Scalar>(std::isnan(options.command_max) ? model.input_max() : options.command_max)),
         m_input(make_input(model, m_command_min - m_u0, m_command_max - m_u0)),
         m_output(make_output(model)),
-        m_backlash(make_backlash(model, static_cast<Scalar>(options.backlash_band))),
+        m_backlash(make_backlash(model, options)),
         m_window(VectorX::Zero(m_linear.window_size())) {
     bonl::detail::require(!std::isnan(m_command_min) && !std::isnan(m_command_max) && m_command_min <= m_u0 &&
                               m_u0 <= m_command_max,
@@ -116,6 +119,14 @@ class InverseModel {
   void reset() noexcept {
     m_linear.reset();
     if constexpr (kHasBacklash) m_backlash.reset();
+  }
+
+  /// Goes on from where `previous` (an inverse of another model of the same type, e.g. an earlier
+  /// estimate) is, instead of from rest: its linear block's stored past and its backlash's direction
+  /// (LinearInverse::continue_from). What AdaptiveInverse does when it re-derives the inverse.
+  void continue_from(const InverseModel& previous) noexcept {
+    m_linear.continue_from(previous.m_linear);
+    if constexpr (kHasBacklash) m_backlash.continue_from(previous.m_backlash.state());
   }
 
   /// The command u(k) for the reference window r(k+nk), ..., r(k+nk+window_size()-1) (the model's
@@ -217,12 +228,17 @@ class InverseModel {
       return 0;
     }
   }
-  static BacklashInverseType make_backlash(const Model& model, Scalar band) {
+  static BacklashInverseType make_backlash(const Model& model, const InverseOptions& options) {
+    bonl::detail::require(std::isfinite(options.backlash_band_per_c) && options.backlash_band_per_c >= 0.0,
+                          "the backlash inverse's backlash_band_per_c must be finite and >= 0, got " +
+                              bonl::detail::format_number(options.backlash_band_per_c));
     if constexpr (kHasBacklash) {
+      const Scalar band = static_cast<Scalar>(options.backlash_band) +
+                          static_cast<Scalar>(options.backlash_band_per_c) * model.c();
       return BacklashInverse<Scalar>(model.c(), band);
     } else {
       (void)model;
-      bonl::detail::require(std::isfinite(band) && band >= Scalar(0),
+      bonl::detail::require(std::isfinite(options.backlash_band) && options.backlash_band >= 0.0,
                             "the backlash inverse's transition band must be finite and >= 0");
       return 0;
     }

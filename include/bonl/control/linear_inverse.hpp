@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -82,6 +83,15 @@ class LinearInverse {
     m_w.clear();
   }
 
+  /// Goes on from where `previous` is instead of from rest: its newest stored x and w, as many of
+  /// each as both keep (an adaptive inverse re-derived from a new estimate; where one inverse is
+  /// exact and the other ZPETC, the stored x are the block's in one and the reference's in the other,
+  /// which differ by the tracking error).
+  void continue_from(const LinearInverse& previous) noexcept {
+    copy_newest(m_x, previous.m_x);
+    copy_newest(m_w, previous.m_w);
+  }
+
   /// w(k) for the reference window (at least window_size() entries; window[0] = x_d(k+nk)).
   template <typename W>
   Scalar input(const Eigen::MatrixBase<W>& window) const noexcept {
@@ -116,6 +126,11 @@ class LinearInverse {
   }
 
  private:
+  static void copy_newest(bonl::detail::History<Scalar>& to, const bonl::detail::History<Scalar>& from) noexcept {
+    to.clear();
+    for (Eigen::Index lag = std::min(to.capacity(), from.capacity()) - 1; lag >= 0; --lag) to.push(from[lag]);
+  }
+
   /// B = B_a B_u by B's zeros (the eigenvalues of its companion matrix); the ZPETC numerator
   /// A B_u* / B_u(1)^2.
   void split_zeros() {

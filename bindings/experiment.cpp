@@ -8,6 +8,7 @@
 #include <bonl/experiment.hpp>
 #include <bonl/models.hpp>
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -223,6 +224,83 @@ void bind_result(py::module_& sub) {
 
 }  // namespace
 
+void bind_tracking(py::module_& sub) {
+  py::class_<experiment::TrackingRun>(sub, "TrackingRun",
+                                      "One controller's run of ``run_tracking_experiment``.")
+      .def_readonly("controller", &experiment::TrackingRun::controller,
+                    "str: 'PI', a model's name (PI plus its inverse as feedforward), or '<model> (adaptive)'.")
+      .def_readonly("plant_changes", &experiment::TrackingRun::plant_changes, "bool: the plant changed at change_time.")
+      .def_readonly("rms", &experiment::TrackingRun::rms,
+                    "float: RMS of reference - joint rate over [period, duration] [rad/s].")
+      .def_readonly("rms_before_change", &experiment::TrackingRun::rms_before_change,
+                    "float: the same over the period before change_time.")
+      .def_readonly("rms_after_change", &experiment::TrackingRun::rms_after_change,
+                    "float: the same over [change_time + period, change_time + 2 period].")
+      .def_property_readonly("command", [](const experiment::TrackingRun& r) { return to_numpy(r.command); },
+                             "numpy.ndarray: V(k) applied [V].")
+      .def_property_readonly("feedforward", [](const experiment::TrackingRun& r) { return to_numpy(r.feedforward); },
+                             "numpy.ndarray: the feedforward's part of the command [V] (0 for PI).")
+      .def_property_readonly("joint_rate", [](const experiment::TrackingRun& r) { return to_numpy(r.joint_rate); },
+                             "numpy.ndarray: the plant's true joint rate [rad/s].")
+      .def_readonly("inexact", &experiment::TrackingRun::inexact,
+                    "int: feedforward samples whose InverseStatus was not Exact.")
+      .def_readonly("rederivations", &experiment::TrackingRun::rederivations,
+                    "int: adaptive: inverses derived from the estimate.")
+      .def_readonly("refused", &experiment::TrackingRun::refused, "int: adaptive: estimates the guard refused.")
+      .def("__repr__", [](const experiment::TrackingRun& r) {
+        return "TrackingRun(controller='" + r.controller + "', plant_changes=" + (r.plant_changes ? "True" : "False") +
+               ", rms=" + bonl::detail::format_number(r.rms) + ")";
+      });
+  py::class_<experiment::TrackingResult>(sub, "TrackingResult", "What ``run_tracking_experiment`` gives.")
+      .def_property_readonly("time", [](const experiment::TrackingResult& r) { return to_numpy(r.time); },
+                             "numpy.ndarray: t_k [s].")
+      .def_property_readonly("reference", [](const experiment::TrackingResult& r) { return to_numpy(r.reference); },
+                             "numpy.ndarray: the reference joint velocity [rad/s].")
+      .def_readonly("proportional_gain", &experiment::TrackingResult::proportional_gain, "float: the PI's Kc [V/(rad/s)].")
+      .def_readonly("integral_time", &experiment::TrackingResult::integral_time, "float: the PI's tau_I [s].")
+      .def_readonly("runs", &experiment::TrackingResult::runs,
+                    "list of TrackingRun: PI and each model's feedforward; then PI, P-H-W and adaptive P-H-W under the "
+                    "plant change.")
+      .def("run", &experiment::TrackingResult::run, py::arg("controller"), py::arg("plant_changes") = false,
+           py::return_value_policy::reference_internal,
+           "The run of ``controller`` with or without the plant change.\n\nRaises\n------\nValueError\n"
+           "    When there is no such run.")
+      .def_property_readonly(
+          "tracking_rms",
+          [](const experiment::TrackingResult& r) {
+            py::dict d;
+            for (const auto& run : r.runs)
+              if (!run.plant_changes) d[py::str(run.controller)] = run.rms;
+            return d;
+          },
+          "dict: controller name -> tracking RMS, for the runs without the plant change (bonl_demo --control --json).");
+
+  sub.def(
+      "run_tracking_experiment",
+      [](const py::object& parameters, const std::string& method, std::uint64_t reference_seed, std::uint64_t noise_seed) {
+        const bonl::plant::Parameters p = parameters_argument(parameters);
+        experiment::TrackingOptions options;
+        options.method = bonl::method_from_string(method);
+        options.reference_seed = reference_seed;
+        options.noise_seed = noise_seed;
+        py::gil_scoped_release release;
+        return experiment::run_tracking_experiment(p, options);
+      },
+      py::arg("parameters") = py::none(), py::kw_only(), py::arg("method") = "paper",
+      py::arg("reference_seed") = std::uint64_t{2020}, py::arg("noise_seed") = std::uint64_t{99},
+      "The tracking experiment, as ``bonl_demo --control`` runs it (docs/control.md).\n\n"
+      "The paper experiment's models are identified on the plant; then the plant, stepped with its sensor\n"
+      "noise, tracks a reference joint velocity under a PI loop alone (SIMC from the ARX model), the PI\n"
+      "loop plus each model's inverse as feedforward, and, while the plant changes at 40 s (pilot\n"
+      "hysteresis doubled, bulk modulus -30%), the PI alone, the P-H-W feedforward and the adaptive P-H-W\n"
+      "feedforward (bonl.control.AdaptiveInverse in C++). The GIL is released.\n\n"
+      "Parameters\n----------\nparameters : bonl.plant.Parameters, optional\n    The plant; None: the default.\n"
+      "method : str, optional\n    Which method's models feed forward: 'paper' (default) or 'output_error'.\n"
+      "reference_seed, noise_seed : int, optional\n    The reference's and the sensor noise's seeds.\n\n"
+      "Returns\n-------\nTrackingResult\n\nRaises\n------\nValueError\n"
+      "    For non-physical parameters, an unknown method, or a model without an inverse.");
+}
+
 void bind_experiment(py::module_& m) {
   py::module_ sub = m.def_submodule(
       "experiment",
@@ -232,6 +310,7 @@ void bind_experiment(py::module_& m) {
   bind_model_result(sub);
   bind_method_result(sub);
   bind_result(sub);
+  bind_tracking(sub);
 
   sub.def(
       "run_paper_experiment",
@@ -292,7 +371,8 @@ void bind_experiment(py::module_& m) {
       "Raises\n------\nValueError\n    When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.");
 
   sub.attr("__all__") = py::make_tuple("run_paper_experiment", "PaperExperimentResult", "MethodResult", "ModelResult",
-                                       "Record", "published_score", "low_pass", "differentiate");
+                                       "Record", "run_tracking_experiment", "TrackingResult", "TrackingRun",
+                                       "published_score", "low_pass", "differentiate");
   // `import bonl._bonl.experiment` works once sys.modules knows the submodule.
   py::module_::import("sys").attr("modules")[sub.attr("__name__")] = sub;
 }

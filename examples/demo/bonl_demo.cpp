@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "svg_plot.hpp"
+#include "tracking_report.hpp"
 
 namespace {
 
@@ -31,6 +32,7 @@ using experiment::PaperExperimentResult;
 
 const char* kUsage =
     "usage: bonl_demo [--method output_error|paper] [--json FILE] [--csv FILE] [--markdown FILE] [--sweep DIR]\n"
+    "       bonl_demo --control [--json FILE] [--csv FILE] [--markdown FILE]\n"
     "  Runs the paper's identification experiment on the default (20 t) plant and prints\n"
     "  Table 1 (identified parameters) and Table 2 (validation MSE of the velocity) for the\n"
     "  output-error and the paper's estimator, and the online estimates' validation MSE.\n"
@@ -40,7 +42,12 @@ const char* kUsage =
     "  --csv FILE   time, input, measured and predicted validation velocities\n"
     "  --markdown FILE  the validation MSE table of the README (docs/results/plant_experiment_summary.md)\n"
     "  --sweep DIR  vary the pilot hysteresis (0-8%) and the pin backlash (0-20 mrad); writes\n"
-    "               DIR/sweep.csv and DIR/sweep.svg (validation MSE of every model against each)\n";
+    "               DIR/sweep.csv and DIR/sweep.svg (validation MSE of every model against each)\n"
+    "  --control    instead: the tracking experiment (docs/control.md): a reference joint velocity tracked\n"
+    "               by a PI loop alone, with each identified model's inverse as feedforward, and with the\n"
+    "               adaptive P-H-W feedforward while the plant changes; --json writes\n"
+    "               {\"tracking_rms\": {\"PI\": ..., model name: ...}, \"plant_change\": {...}, ...},\n"
+    "               --markdown docs/results/tracking_summary.md, --csv the time series\n";
 
 /// Line colours of the sweep chart, in the paper's column order.
 const char* const kPalette[] = {"#d62728", "#ff7f0e", "#2ca02c", "#1f77b4", "#9467bd", "#8c564b", "#e377c2"};
@@ -396,6 +403,7 @@ void print_report(const PaperExperimentResult& result) {
 
 int main(int argc, char** argv) {
   std::string json, csv, sweep_dir, markdown;
+  bool control = false;
   bonl::Method chosen = bonl::Method::OutputError;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -415,6 +423,8 @@ int main(int argc, char** argv) {
       csv = value();
     } else if (arg == "--markdown") {
       markdown = value();
+    } else if (arg == "--control") {
+      control = true;
     } else if (arg == "--sweep") {
       sweep_dir = value();
     } else if (arg == "--method") {
@@ -431,6 +441,14 @@ int main(int argc, char** argv) {
   }
   try {
     if (!sweep_dir.empty()) return sweep(sweep_dir);
+    if (control) {
+      const experiment::TrackingResult result = experiment::run_tracking_experiment();
+      bonl_demo::print_tracking(result);
+      if (!json.empty()) bonl_demo::write_tracking_json(json, result);
+      if (!markdown.empty()) bonl_demo::write_tracking_markdown(markdown, result);
+      if (!csv.empty()) bonl_demo::write_tracking_csv(csv, result);
+      return 0;
+    }
     // The 20 t machine, with pilot hysteresis and pin backlash.
     const PaperExperimentResult result = experiment::run_paper_experiment(bonl::plant::Parameters{});
     print_report(result);

@@ -4,3 +4,4 @@
 
 #include "experiment/paper_experiment.hpp"
 #include "experiment/records.hpp"
+#include "experiment/tracking_experiment.hpp"

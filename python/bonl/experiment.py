@@ -6,6 +6,10 @@
   estimates alone, and with ``robustness=True`` the robustness check;
 - :class:`PaperExperimentResult` (its result), :class:`MethodResult`, :class:`ModelResult`,
   :class:`Record`: each model is named by its class name (``result.method("paper").models["ARX"]``);
+- :func:`run_tracking_experiment`: what ``bonl_demo --control`` runs: a reference joint velocity
+  tracked by a PI loop alone, with each identified model's inverse as feedforward, and with the
+  adaptive P-H-W feedforward while the plant changes (docs/control.md); :class:`TrackingResult`,
+  :class:`TrackingRun`;
 - :func:`published_score`: the paper's own Table 2, for comparison;
 - :func:`low_pass`, :func:`differentiate`: the records' signal processing.
 
@@ -25,6 +29,9 @@ __all__ = [
     "MethodResult",
     "ModelResult",
     "Record",
+    "run_tracking_experiment",
+    "TrackingResult",
+    "TrackingRun",
     "published_score",
     "low_pass",
     "differentiate",

@@ -18,6 +18,8 @@ QUOTES = [
     ("plant_experiment_summary", ROOT / "docs" / "results" / "plant_experiment_summary.md", [ROOT / "README.md"]),
     ("measured_data_summary", ROOT / "docs" / "results" / "measured_data_summary.md",
      [ROOT / "README.md", ROOT / "docs" / "measured_data.md"]),
+    ("tracking_summary", ROOT / "docs" / "results" / "tracking_summary.md",
+     [ROOT / "README.md", ROOT / "docs" / "control.md"]),
 ]
 
 

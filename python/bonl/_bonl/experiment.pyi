@@ -6,7 +6,7 @@ from __future__ import annotations
 import bonl._bonl.plant
 import numpy
 import typing
-__all__: tuple = ('run_paper_experiment', 'PaperExperimentResult', 'MethodResult', 'ModelResult', 'Record', 'published_score', 'low_pass', 'differentiate')
+__all__: tuple = ('run_paper_experiment', 'PaperExperimentResult', 'MethodResult', 'ModelResult', 'Record', 'run_tracking_experiment', 'TrackingResult', 'TrackingRun', 'published_score', 'low_pass', 'differentiate')
 class Record:
     """
     One processed record of the experiment, on the output grid (bonl/experiment/records.hpp).
@@ -212,6 +212,110 @@ class PaperExperimentResult:
         """
         Record: the validation record (a smooth random signal).
         """
+class TrackingRun:
+    """
+    One controller's run of ``run_tracking_experiment``.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def command(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: V(k) applied [V].
+        """
+    @property
+    def controller(self) -> str:
+        """
+        str: 'PI', a model's name (PI plus its inverse as feedforward), or '<model> (adaptive)'.
+        """
+    @property
+    def feedforward(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: the feedforward's part of the command [V] (0 for PI).
+        """
+    @property
+    def inexact(self) -> int:
+        """
+        int: feedforward samples whose InverseStatus was not Exact.
+        """
+    @property
+    def joint_rate(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: the plant's true joint rate [rad/s].
+        """
+    @property
+    def plant_changes(self) -> bool:
+        """
+        bool: the plant changed at change_time.
+        """
+    @property
+    def rederivations(self) -> int:
+        """
+        int: adaptive: inverses derived from the estimate.
+        """
+    @property
+    def refused(self) -> int:
+        """
+        int: adaptive: estimates the guard refused.
+        """
+    @property
+    def rms(self) -> float:
+        """
+        float: RMS of reference - joint rate over [period, duration] [rad/s].
+        """
+    @property
+    def rms_after_change(self) -> float:
+        """
+        float: the same over [change_time + period, change_time + 2 period].
+        """
+    @property
+    def rms_before_change(self) -> float:
+        """
+        float: the same over the period before change_time.
+        """
+class TrackingResult:
+    """
+    What ``run_tracking_experiment`` gives.
+    """
+    def run(self, controller: str, plant_changes: bool = False) -> TrackingRun:
+        """
+        The run of ``controller`` with or without the plant change.
+        
+        Raises
+        ------
+        ValueError
+            When there is no such run.
+        """
+    @property
+    def integral_time(self) -> float:
+        """
+        float: the PI's tau_I [s].
+        """
+    @property
+    def proportional_gain(self) -> float:
+        """
+        float: the PI's Kc [V/(rad/s)].
+        """
+    @property
+    def reference(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: the reference joint velocity [rad/s].
+        """
+    @property
+    def runs(self) -> list[TrackingRun]:
+        """
+        list of TrackingRun: PI and each model's feedforward; then PI, P-H-W and adaptive P-H-W under the plant change.
+        """
+    @property
+    def time(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: t_k [s].
+        """
+    @property
+    def tracking_rms(self) -> dict:
+        """
+        dict: controller name -> tracking RMS, for the runs without the plant change (bonl_demo --control --json).
+        """
 def differentiate(x: typing.Any, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
     """
     Numerical derivative: central differences, one-sided at both ends.
@@ -296,4 +400,32 @@ def run_paper_experiment(parameters: typing.Any = None, *, robustness: bool = Fa
     ------
     ValueError
         For non-physical parameters.
+    """
+def run_tracking_experiment(parameters: typing.Any = None, *, method: str = 'paper', reference_seed: typing.SupportsInt | typing.SupportsIndex = 2020, noise_seed: typing.SupportsInt | typing.SupportsIndex = 99) -> TrackingResult:
+    """
+    The tracking experiment, as ``bonl_demo --control`` runs it (docs/control.md).
+    
+    The paper experiment's models are identified on the plant; then the plant, stepped with its sensor
+    noise, tracks a reference joint velocity under a PI loop alone (SIMC from the ARX model), the PI
+    loop plus each model's inverse as feedforward, and, while the plant changes at 40 s (pilot
+    hysteresis doubled, bulk modulus -30%), the PI alone, the P-H-W feedforward and the adaptive P-H-W
+    feedforward (bonl.control.AdaptiveInverse in C++). The GIL is released.
+    
+    Parameters
+    ----------
+    parameters : bonl.plant.Parameters, optional
+        The plant; None: the default.
+    method : str, optional
+        Which method's models feed forward: 'paper' (default) or 'output_error'.
+    reference_seed, noise_seed : int, optional
+        The reference's and the sensor noise's seeds.
+    
+    Returns
+    -------
+    TrackingResult
+    
+    Raises
+    ------
+    ValueError
+        For non-physical parameters, an unknown method, or a model without an inverse.
     """

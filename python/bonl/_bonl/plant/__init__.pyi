@@ -703,6 +703,26 @@ class SteppingPlant:
         ValueError
             For a bad ``initial_position``; the plant is left as it was.
         """
+    def set_parameters(self, parameters: typing.Any) -> None:
+        """
+        Change the plant from the current sample on, keeping its state.
+        
+        As a machine changes in service (the oil warms and its bulk modulus drops, the pilot valve wears):
+        the next ``step`` runs with ``parameters`` from the state the plant is in (position, velocity,
+        pressures, spool, the hysteresis' and the backlash's memories, the noise sequence). Later ``reset()``\\s
+        keep the new parameters.
+        
+        Parameters
+        ----------
+        parameters : Parameters
+            The new parameters. The linkage's geometry (``stroke``, ``pivot_to_rod_pin``,
+            ``pivot_to_base_pin``, ``retracted_length``) must stay as it is.
+        
+        Raises
+        ------
+        ValueError
+            For non-physical parameters or a changed geometry, naming them; the plant is left as it was.
+        """
     def step(self, command: typing.Any) -> Measurement:
         """
         Hold ``command`` over one sample and return the measurement at its end.

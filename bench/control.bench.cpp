@@ -3,7 +3,11 @@
 // reference the model gives on the record's input (random levels in [-1, 1]); and each block inverse
 // alone. One iteration runs the whole 4096-sample reference; `per_sample` is the time per sample.
 //
-// Names: inverse/<Model::kName>/<fixed|dynamic>/double, inverse/blocks/<block>.
+// The adaptive inverse (AdaptiveInverse) per sample: step, then update with the model's own output
+// on the command, the inverse derived again every 100 samples (its cost spread over them).
+//
+// Names: inverse/<Model::kName>/<fixed|dynamic>/double, inverse/blocks/<block>,
+// inverse/adaptive/PseudoHammersteinWiener/fixed/double.
 
 #include <benchmark/benchmark.h>
 
@@ -99,6 +103,34 @@ void backlash(benchmark::State& state, double band) {
   per_sample(state, r.size());
 }
 
+void adaptive_inverse(benchmark::State& state) {
+  using Model = bonl::PaperPseudoHammersteinWiener;
+  const Model model = bonl_bench::make_known_model<Model>();
+  const Eigen::VectorXd reference = model.simulate(bonl_bench::record<double>().u);
+  bonl::control::AdaptiveInverseOptions options;
+  options.inverse = command_range();
+  options.inverse.backlash_band_per_c = 1.0;
+  options.estimator.forgetting = bonl::ForgettingSchedule::constant(0.999);
+  options.estimator.p0 = 0.01;
+  const Eigen::Index n = reference.size() - model.nk();
+  // The measured output: the model's response to the commands the inverse gives (computed once).
+  const auto commands = bonl::control::InverseModel<Model>(model, options.inverse).commands(reference);
+  const Eigen::VectorXd y = model.simulate(commands.command);
+  double sum = 0.0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    bonl::control::AdaptiveInverse<Model> adaptive(model, options);
+    state.ResumeTiming();
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const double u = adaptive.step(reference[k + model.nk()]).value;
+      adaptive.update(u, y[k]);
+      sum += u;
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  per_sample(state, n);
+}
+
 const int registered = [] {
   register_sizes<true>("fixed/double");
   register_sizes<false>("dynamic/double");
@@ -117,6 +149,7 @@ const int registered = [] {
   });
   benchmark::RegisterBenchmark("inverse/blocks/backlash", [](benchmark::State& s) { backlash(s, 0.0); });
   benchmark::RegisterBenchmark("inverse/blocks/backlash_band", [](benchmark::State& s) { backlash(s, 0.02); });
+  benchmark::RegisterBenchmark("inverse/adaptive/PseudoHammersteinWiener/fixed/double", adaptive_inverse);
   return 0;
 }();
 

@@ -17,6 +17,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "estimator_options.hpp"
 
 namespace bonl_python {
 namespace {
@@ -37,6 +38,23 @@ void raise_if_rejected(InverseStatus status, Eigen::Index window_size, Eigen::In
                             " samples (r(k + nk), ..., r(k + preview)), got " + std::to_string(given));
 }
 
+/// One step of `inverse` (an InverseModel or an AdaptiveInverse) on a Python reference: a window (array,
+/// list or tuple) or a single number; ValueError for a refused step.
+template <class Inverse>
+bonl::control::InverseStep<double> step_on(Inverse& inverse, Eigen::Index window_size, const py::object& reference) {
+  bonl::control::InverseStep<double> out{0.0, InverseStatus::Exact};
+  Eigen::Index given = 1;
+  if (py::isinstance<py::array>(reference) || py::isinstance<py::list>(reference) || py::isinstance<py::tuple>(reference)) {
+    const Eigen::VectorXd window = to_vector(reference, "reference");
+    given = window.size();
+    out = inverse.step(window);
+  } else {
+    out = inverse.step(to_scalar(reference, "reference"));
+  }
+  raise_if_rejected(out.status, window_size, given);
+  return out;
+}
+
 template <class Model>
 using InverseOf = bonl::control::InverseModel<Model>;
 
@@ -49,22 +67,7 @@ class AnyInverse {
       : m_inverse(std::in_place_type<InverseOf<Model>>, model, options) {}
 
   bonl::control::InverseStep<double> step(const py::object& reference) {
-    return std::visit(
-        [&](auto& inverse) {
-          bonl::control::InverseStep<double> out{0.0, InverseStatus::Exact};
-          Eigen::Index given = 1;
-          if (py::isinstance<py::array>(reference) || py::isinstance<py::list>(reference) ||
-              py::isinstance<py::tuple>(reference)) {
-            const Eigen::VectorXd window = to_vector(reference, "reference");
-            given = window.size();
-            out = inverse.step(window);
-          } else {
-            out = inverse.step(to_scalar(reference, "reference"));
-          }
-          raise_if_rejected(out.status, inverse.window_size(), given);
-          return out;
-        },
-        m_inverse);
+    return std::visit([&](auto& inverse) { return step_on(inverse, inverse.window_size(), reference); }, m_inverse);
   }
 
   InverseRunArrays commands(const py::object& reference_object) const {
@@ -111,18 +114,91 @@ class AnyInverse {
   Variant m_inverse;
 };
 
+bonl::control::InverseOptions inverse_options(std::optional<double> command_min, std::optional<double> command_max,
+                                              double backlash_band, double backlash_band_per_c) {
+  bonl::control::InverseOptions options;
+  options.command_min = command_min.value_or(std::numeric_limits<double>::quiet_NaN());
+  options.command_max = command_max.value_or(std::numeric_limits<double>::quiet_NaN());
+  options.backlash_band = backlash_band;
+  options.backlash_band_per_c = backlash_band_per_c;
+  return options;
+}
+
 template <class Model>
 void def_inverse_init(py::class_<AnyInverse>& cls) {
   cls.def(py::init([](const Model& model, std::optional<double> command_min, std::optional<double> command_max,
-                      double backlash_band) {
-            bonl::control::InverseOptions options;
-            options.command_min = command_min.value_or(std::numeric_limits<double>::quiet_NaN());
-            options.command_max = command_max.value_or(std::numeric_limits<double>::quiet_NaN());
-            options.backlash_band = backlash_band;
-            return AnyInverse(model, options);
+                      double backlash_band, double backlash_band_per_c) {
+            return AnyInverse(model, inverse_options(command_min, command_max, backlash_band, backlash_band_per_c));
           }),
           py::arg("model"), py::kw_only(), py::arg("command_min") = py::none(), py::arg("command_max") = py::none(),
-          py::arg("backlash_band") = 0.0);
+          py::arg("backlash_band") = 0.0, py::arg("backlash_band_per_c") = 0.0);
+}
+
+template <class Model>
+using AdaptiveOf = bonl::control::AdaptiveInverse<Model>;
+
+/// bonl.control.AdaptiveInverse over AdaptiveInverse<Model> for every model of bonl::Models.
+class AnyAdaptive {
+ public:
+  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::Models, AdaptiveOf>::type, std::variant>::type;
+
+  template <class Model>
+  AnyAdaptive(const Model& model, const bonl::control::AdaptiveInverseOptions& options)
+      : m_adaptive(std::in_place_type<AdaptiveOf<Model>>, model, options) {}
+
+  bonl::control::InverseStep<double> step(const py::object& reference) {
+    return std::visit(
+        [&](auto& adaptive) { return step_on(adaptive, adaptive.inverse().window_size(), reference); }, m_adaptive);
+  }
+  bonl::UpdateStatus update(const py::object& u, const py::object& y) {
+    const double u_value = to_scalar(u, "u");
+    const double y_value = to_scalar(y, "y");
+    return std::visit([&](auto& adaptive) { return adaptive.update(u_value, y_value); }, m_adaptive);
+  }
+  bool rederive() {
+    return std::visit([](auto& adaptive) { return adaptive.rederive(); }, m_adaptive);
+  }
+  py::object model() const {
+    return std::visit([](const auto& adaptive) { return py::cast(adaptive.model()); }, m_adaptive);
+  }
+  py::object estimate() const {
+    return std::visit([](const auto& adaptive) { return py::cast(adaptive.estimator().model()); }, m_adaptive);
+  }
+  py::dict health() const {
+    const bonl::control::AdaptiveInverseHealth h =
+        std::visit([](const auto& adaptive) { return adaptive.health(); }, m_adaptive);
+    py::dict d;
+    d["rederivations"] = h.rederivations;
+    d["refused_diverged"] = h.refused_diverged;
+    d["refused_covariance"] = h.refused_covariance;
+    d["refused_unstable"] = h.refused_unstable;
+    d["refused_no_inverse"] = h.refused_no_inverse;
+    d["last_refusal"] = h.last_refusal;
+    return d;
+  }
+
+ private:
+  Variant m_adaptive;
+};
+
+template <class Model>
+void def_adaptive_init(py::class_<AnyAdaptive>& cls) {
+  cls.def(py::init([](const Model& model, std::optional<double> command_min, std::optional<double> command_max,
+                      double backlash_band, double backlash_band_per_c, const std::string& method,
+                      const py::object& forgetting, std::optional<double> p0, Eigen::Index rederive_every,
+                      double max_covariance_trace, double stability_radius) {
+            bonl::control::AdaptiveInverseOptions options;
+            options.inverse = inverse_options(command_min, command_max, backlash_band, backlash_band_per_c);
+            options.estimator = estimator_options({method, forgetting, p0, 0.01, std::nullopt});
+            options.rederive_every = rederive_every;
+            options.max_covariance_trace = max_covariance_trace;
+            options.stability_radius = stability_radius;
+            return AnyAdaptive(model, options);
+          }),
+          py::arg("model"), py::kw_only(), py::arg("command_min") = py::none(), py::arg("command_max") = py::none(),
+          py::arg("backlash_band") = 0.0, py::arg("backlash_band_per_c") = 0.0, py::arg("method") = "output_error",
+          py::arg("forgetting") = py::none(), py::arg("p0") = py::none(), py::arg("rederive_every") = 100,
+          py::arg("max_covariance_trace") = 10.0, py::arg("stability_radius") = 0.999);
 }
 
 }  // namespace
@@ -175,6 +251,8 @@ command_min, command_max : float, optional
     the model's input_range. Models with an input polynomial need it finite.
 backlash_band : float, default 0
     P-H-W: the backlash inverse's transition band (the output's units); 0 is the exact switch.
+backlash_band_per_c : float, default 0
+    P-H-W: added to the band, times the model's c (1: a band of c).
 
 Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1, q_1 = 0, an input
 polynomial that is not monotone through 0).)doc");
@@ -212,6 +290,42 @@ non-finite reference or one of preview samples or fewer. Returns InverseRun (com
                              "numpy.ndarray: B_a, B's factor with the zeros inside the unit circle (b_0 included)")
       .def_property_readonly("unstable_factor", &AnyInverse::unstable_factor,
                              "numpy.ndarray: B_u, the factor with the others, leading 1 ([1.0] when minimum phase)");
+
+  py::class_<AnyAdaptive> adaptive(control, "AdaptiveInverse", R"doc(The online estimator and the inverse together.
+
+``update(u, y)`` feeds the command applied (feedback included) and the output measured to the
+estimator, warm-started from ``model``; every ``rederive_every`` samples the inverse is derived
+again from the estimate, if the guard trusts it (the estimator has not diverged, trace(P) <=
+max_covariance_trace * n * p0, every pole inside stability_radius, the estimate has an inverse), and
+goes on from where the old one was. ``step`` is the inverse in use. docs/control.md, "Adaptive use".
+
+Parameters
+----------
+model : one of bonl.MODELS
+    The identified model to start from.
+command_min, command_max, backlash_band, backlash_band_per_c
+    As for InverseModel.
+method, forgetting, p0
+    As for Estimator (default: output_error, the method's forgetting and p0).
+rederive_every : int, default 100
+max_covariance_trace : float, default 10
+stability_radius : float, default 0.999
+
+Raises ValueError for bad options or a model without an inverse.)doc");
+  bonl::for_each_model(bonl::Models{}, [&adaptive](auto tag) { def_adaptive_init<typename decltype(tag)::type>(adaptive); });
+  adaptive
+      .def("step", &AnyAdaptive::step, py::arg("reference"),
+           "The command for the reference ahead, from the inverse in use (as InverseModel.step).")
+      .def("update", &AnyAdaptive::update, py::arg("u"), py::arg("y"),
+           "One sample of the plant: the command applied and the output measured. Returns the estimator's\n"
+           "UpdateStatus (rejected_non_finite for a NaN or infinite value: nothing changes).")
+      .def("rederive", &AnyAdaptive::rederive,
+           "Derive the inverse from the estimate now, if the guard trusts it; returns whether it is in use.")
+      .def_property_readonly("model", &AnyAdaptive::model, "The model the inverse in use was derived from.")
+      .def_property_readonly("estimate", &AnyAdaptive::estimate, "The estimator's current estimate, as a model.")
+      .def_property_readonly("health", &AnyAdaptive::health,
+                             "dict: rederivations, the refusals by reason (refused_diverged, refused_covariance,\n"
+                             "refused_unstable, refused_no_inverse) and last_refusal (why, '' if none).");
 }
 
 }  // namespace bonl_python

@@ -15,6 +15,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "estimator_options.hpp"
 
 namespace bonl_python {
 namespace {
@@ -73,17 +74,7 @@ std::optional<bonl::ForgettingSchedule> parse_forgetting(const py::object& forge
   return bonl::ForgettingSchedule::constant(forgetting_factor(forgetting, "forgetting"));
 }
 
-/// The keyword arguments Estimator and identify share; None leaves an option at its method's default.
-struct OptionArguments {
-  std::string method;
-  py::object forgetting;
-  std::optional<double> p0;
-  double c0;
-  std::optional<double> trace_ceiling;
-  Eigen::Index recover_after = 0;
-  double stability_radius = 0.999;
-  Eigen::Index backlash_hold = 200;
-};
+}  // namespace
 
 bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
   bonl::EstimatorOptions options;
@@ -98,6 +89,8 @@ bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
   options.validate();
   return options;
 }
+
+namespace {
 
 const char* kIdentifyDoc = R"doc(Identify a model's parameters from an input/output record, or from several.
 

@@ -1,7 +1,9 @@
 """Inverse models (docs/control.md): :class:`InverseModel` gives, per sample, the command that makes an
 identified model follow a reference output, and :meth:`InverseModel.commands` the commands for a whole
-reference; :class:`InverseStatus` says where a command cannot (saturation, dead band, out of range).
-Spelled as in C++ (``bonl::control``).
+reference; :class:`InverseStatus` says where a command cannot (saturation, dead band, out of range);
+:class:`AdaptiveInverse` runs the online estimator beside the inverse and derives it again as the
+estimate changes, keeping the last good one when the estimate is not trusted. Spelled as in C++
+(``bonl::control``).
 
 Examples
 --------
@@ -13,6 +15,6 @@ Examples
 True
 """
 
-from ._bonl.control import InverseModel, InverseRun, InverseStatus, InverseStep
+from ._bonl.control import AdaptiveInverse, InverseModel, InverseRun, InverseStatus, InverseStep
 
-__all__ = ["InverseModel", "InverseRun", "InverseStatus", "InverseStep"]
+__all__ = ["AdaptiveInverse", "InverseModel", "InverseRun", "InverseStatus", "InverseStep"]

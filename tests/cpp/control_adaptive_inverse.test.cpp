@@ -149,7 +149,7 @@ TEST_CASE("the guard keeps the last good inverse and says why") {
   }
 }
 
-TEST_CASE("a non-finite sample changes nothing; bad options are refused") {
+TEST_CASE("a non-finite sample changes nothing, and bad options are refused") {
   using Model = bonl::Hammersteind;
   const Model truth = known_system<Model>("small");
   AdaptiveInverse<Model> adaptive(truth, adaptive_options());

@@ -120,3 +120,36 @@ def test_input_range_is_the_default_command_range():
     assert (inverse.command_min, inverse.command_max) == (-1.0, 1.0)
     run = inverse.commands(model.simulate(u))
     np.testing.assert_allclose(run.command[: -model.nk], u[: -model.nk], rtol=0, atol=1e-9)
+
+
+def test_the_adaptive_inverse_learns_a_known_system_and_keeps_its_inverse_when_not_trusted():
+    """bonl.control.AdaptiveInverse against the known system (the oracle): started with the input
+    polynomial 50% too large, fed the system's noise-free response, its inverse makes the system follow
+    a reference; a guard that trusts nothing keeps the first inverse; bad input is refused."""
+    truth = SMALL["Hammerstein"]
+    params = truth.params
+    wrong = bonl.Hammerstein(*truth.orders, b=params["b"], a=params["a"], f=1.5 * params["f"], p=1.5 * params["p"])
+    adaptive = bonl.control.AdaptiveInverse(wrong, command_min=-3.0, command_max=3.0, method="equation_error", p0=1.0,
+                                            forgetting=0.995)
+    rng = np.random.default_rng(5)
+    u = np.repeat(rng.uniform(-1, 1, 1200), 5)
+    y = truth.simulate(u)
+    for uk, yk in zip(u, y):
+        adaptive.update(uk, yk)
+    assert adaptive.health["rederivations"] == 60
+    reference = truth.simulate(np.sin(np.arange(2000) / 60.0) * 0.5)
+    commands = bonl.control.InverseModel(adaptive.model, command_min=-3.0, command_max=3.0).commands(reference).command
+    assert np.max(np.abs(truth.simulate(commands)[200:] - reference[200:])) < 1e-4
+    np.testing.assert_allclose(adaptive.estimate.theta, adaptive.model.theta, atol=1e-3)
+
+    strict = bonl.control.AdaptiveInverse(truth, command_min=-3.0, command_max=3.0, stability_radius=0.1)
+    for uk, yk in zip(u[:300], y[:300]):
+        strict.update(uk, yk)
+    assert strict.health["refused_unstable"] == 3 and strict.health["rederivations"] == 0
+    assert "a pole of the estimate has magnitude" in strict.health["last_refusal"]
+    np.testing.assert_array_equal(strict.model.theta, truth.theta)
+    assert strict.update(float("nan"), 1.0) == bonl.UpdateStatus.rejected_non_finite
+    with pytest.raises(ValueError, match="rederive_every must be >= 1"):
+        bonl.control.AdaptiveInverse(truth, command_min=-3.0, command_max=3.0, rederive_every=0)
+    with pytest.raises(ValueError, match="reference must be finite"):
+        strict.step(float("inf"))

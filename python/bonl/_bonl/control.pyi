@@ -6,7 +6,7 @@ import bonl._bonl
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['InverseModel', 'InverseRun', 'InverseStatus', 'InverseStep']
+__all__: list[str] = ['AdaptiveInverse', 'InverseModel', 'InverseRun', 'InverseStatus', 'InverseStep']
 class InverseStatus:
     """
     What an inverse reports with a command: flags, exact (0) when the model follows the reference. Combined flags are their sum (status & InverseStatus.saturated).
@@ -137,24 +137,26 @@ class InverseModel:
         the model's input_range. Models with an input polynomial need it finite.
     backlash_band : float, default 0
         P-H-W: the backlash inverse's transition band (the output's units); 0 is the exact switch.
+    backlash_band_per_c : float, default 0
+        P-H-W: added to the band, times the model's c (1: a band of c).
     
     Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1, q_1 = 0, an input
     polynomial that is not monotone through 0).
     """
     @typing.overload
-    def __init__(self, model: bonl._bonl.ARX, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, model: bonl._bonl.ARX, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.Hammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, model: bonl._bonl.Hammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.HammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, model: bonl._bonl.HammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.PseudoHammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, model: bonl._bonl.PseudoHammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.Wiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, model: bonl._bonl.Wiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
     def commands(self, reference: typing.Any) -> InverseRun:
         """
@@ -222,4 +224,72 @@ class InverseModel:
     def window_size(self) -> int:
         """
         int: how many reference samples a step takes (1 when B is minimum phase)
+        """
+class AdaptiveInverse:
+    """
+    The online estimator and the inverse together.
+    
+    ``update(u, y)`` feeds the command applied (feedback included) and the output measured to the
+    estimator, warm-started from ``model``; every ``rederive_every`` samples the inverse is derived
+    again from the estimate, if the guard trusts it (the estimator has not diverged, trace(P) <=
+    max_covariance_trace * n * p0, every pole inside stability_radius, the estimate has an inverse), and
+    goes on from where the old one was. ``step`` is the inverse in use. docs/control.md, "Adaptive use".
+    
+    Parameters
+    ----------
+    model : one of bonl.MODELS
+        The identified model to start from.
+    command_min, command_max, backlash_band, backlash_band_per_c
+        As for InverseModel.
+    method, forgetting, p0
+        As for Estimator (default: output_error, the method's forgetting and p0).
+    rederive_every : int, default 100
+    max_covariance_trace : float, default 10
+    stability_radius : float, default 0.999
+    
+    Raises ValueError for bad options or a model without an inverse.
+    """
+    @typing.overload
+    def __init__(self, model: bonl._bonl.ARX, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.Hammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.HammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.PseudoHammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.Wiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+        ...
+    def rederive(self) -> bool:
+        """
+        Derive the inverse from the estimate now, if the guard trusts it; returns whether it is in use.
+        """
+    def step(self, reference: typing.Any) -> InverseStep:
+        """
+        The command for the reference ahead, from the inverse in use (as InverseModel.step).
+        """
+    def update(self, u: typing.Any, y: typing.Any) -> bonl._bonl.UpdateStatus:
+        """
+        One sample of the plant: the command applied and the output measured. Returns the estimator's
+        UpdateStatus (rejected_non_finite for a NaN or infinite value: nothing changes).
+        """
+    @property
+    def estimate(self) -> typing.Any:
+        """
+        The estimator's current estimate, as a model.
+        """
+    @property
+    def health(self) -> dict:
+        """
+        dict: rederivations, the refusals by reason (refused_diverged, refused_covariance,
+        refused_unstable, refused_no_inverse) and last_refusal (why, '' if none).
+        """
+    @property
+    def model(self) -> typing.Any:
+        """
+        The model the inverse in use was derived from.
         """

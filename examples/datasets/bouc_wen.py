@@ -5,6 +5,11 @@ from rest and score its RMS error [m]."""
 import numpy as np
 
 from benchmark import DATA, Benchmark, Test, main
+from comparison import Comparison
+
+
+#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+COMPARISON = Comparison(test="validation multisine", best=("decoupled PNLSS, Esfahani et al. 2017", 1.87e-5))
 
 
 def make():

@@ -7,6 +7,11 @@ the orders."""
 import numpy as np
 
 from benchmark import DATA, Benchmark, Test, main
+from comparison import Comparison
+
+
+#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+COMPARISON = Comparison(test="validation record", best=("grey box with overflow, Rogers et al. 2017", 0.18))
 
 
 def make():

@@ -5,6 +5,11 @@ first 250 samples, simulate the whole record from rest and score the RMS error o
 import numpy as np
 
 from benchmark import DATA, Benchmark, Test, main
+from comparison import Comparison
+
+
+#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+COMPARISON = Comparison(test="samples 251-500")  # SOURCE.md gives no figures for this split
 
 
 def make():

@@ -7,11 +7,16 @@ import numpy as np
 import scipy.io
 
 from benchmark import DATA, Benchmark, Test, main
+from comparison import Comparison
 
 
 def _record(name):
     data = scipy.io.loadmat(DATA / "emps" / name)
     return data["vir"].ravel().astype(float), data["qm"].ravel().astype(float)
+
+
+#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+COMPARISON = Comparison(test="pulses record", best=("dynoNet, Forgione and Piga 2021", 2.64e-3))
 
 
 def make():

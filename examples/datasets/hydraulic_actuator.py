@@ -4,6 +4,14 @@
 import numpy as np
 
 from benchmark import DATA, Benchmark, Test, main
+from comparison import Comparison
+
+
+#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+COMPARISON = Comparison(
+    test="samples 513-1024",
+    best=("one-hidden-layer neural network", 0.47),
+    note="about; SOURCE.md quotes the paper from memory")
 
 
 def make():

@@ -6,6 +6,14 @@ estimate and its last 25 % to test; and the arrow [100:40575], whole and its fir
 import numpy as np
 
 from benchmark import DATA, Benchmark, Test, main
+from comparison import Comparison
+
+
+#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+COMPARISON = Comparison(
+    test="arrow",
+    best=("PNLSS, Paduart et al. 2010", 2.6e-4),
+    note="as SOURCE.md gives it, not checked against the paper")
 
 
 def make():

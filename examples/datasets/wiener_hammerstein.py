@@ -5,11 +5,19 @@ simulate 100 001-188 000 from rest and score the RMS error without the first 1 0
 import numpy as np
 
 from benchmark import DATA, Benchmark, Test, main
+from comparison import Comparison
 
 
 def load():
     data = np.genfromtxt(DATA / "wiener-hammerstein-2009" / "WienerHammerBenchmark.csv", delimiter=",", names=True)
     return data["uBenchMark"], data["yBenchMark"]
+
+
+#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+COMPARISON = Comparison(
+    test="samples 101 001-188 000",
+    best=("M. Schoukens, Pintelon and Rolain 2014", 2.8e-4),
+    block_oriented=("M. Schoukens, Pintelon and Rolain 2014", 2.8e-4))
 
 
 def make():

@@ -63,6 +63,16 @@ def test_the_summary_is_the_table_of_the_results_files():
     assert table_text in page
 
 
+def test_the_comparison_with_the_literature_is_what_the_results_files_give():
+    """docs/results/benchmarks_summary.md (docs/benchmarks.md) from the committed results and each script's
+    COMPARISON; every data set has a row, and its test is one the script scores."""
+    comparison = _script("comparison")
+    assert sorted(comparison.SCRIPTS) == sorted(SCRIPTS)
+    assert (ROOT / "docs" / "results" / "benchmarks_summary.md").read_text() == comparison.table() + "\n"
+    for name in SCRIPTS:
+        assert _script(name).COMPARISON.test in [t["name"] for t in _results(name)["tests"]], name
+
+
 def test_the_committed_cluster_run_ranked_64_candidates_identically():
     run = json.loads((ROOT / "docs" / "results" / "select_on_dask.json").read_text())
     assert run["candidates"] == len(run["local"]) == len(run["local_cluster"]) == 64

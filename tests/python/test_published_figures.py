@@ -20,6 +20,7 @@ QUOTES = [
      [ROOT / "README.md", ROOT / "docs" / "measured_data.md"]),
     ("tracking_summary", ROOT / "docs" / "results" / "tracking_summary.md",
      [ROOT / "README.md", ROOT / "docs" / "control.md"]),
+    ("benchmarks_summary", ROOT / "docs" / "results" / "benchmarks_summary.md", [ROOT / "docs" / "benchmarks.md"]),
 ]
 
 

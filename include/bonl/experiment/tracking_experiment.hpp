@@ -44,7 +44,8 @@ struct TrackingOptions {
   Method method = Method::Paper;
   /// P-H-W: the backlash inverse's transition band, per unit of the model's c (docs/control.md).
   double backlash_band_per_c = 1.0;
-  /// The adaptive feedforward's estimator and guard (defaults: adaptive_defaults()).
+  /// The adaptive feedforward's estimator and guard (defaults: adaptive_defaults()); its `inverse`
+  /// is replaced by the experiment's (the valve's command range, the band of backlash_band_per_c).
   control::AdaptiveInverseOptions adaptive = adaptive_defaults();
 
   /// The output-error estimator (bonl's default method) with a constant forgetting of 0.999 (a

@@ -33,6 +33,8 @@ struct InverseRunArrays {
 /// ValueError for a refused step (the inverse is untouched).
 void raise_if_rejected(InverseStatus status, Eigen::Index window_size, Eigen::Index given) {
   bonl::detail::require(status != InverseStatus::RejectedNonFinite, "reference must be finite (every entry of the window)");
+  bonl::detail::require(status != InverseStatus::RejectedOverflow,
+                        "the reference is too large: the inverse's arithmetic overflowed (nothing changed)");
   bonl::detail::require(status != InverseStatus::RejectedShortPreview,
                         "the reference window needs " + std::to_string(window_size) +
                             " samples (r(k + nk), ..., r(k + preview)), got " + std::to_string(given));
@@ -219,6 +221,8 @@ void bind_control(py::module_& m) {
              "the output polynomial's monotone branch through 0 does not reach the reference: its end is used")
       .value("rejected_non_finite", InverseStatus::RejectedNonFinite,
              "a reference was NaN or infinite; the inverse is untouched")
+      .value("rejected_overflow", InverseStatus::RejectedOverflow,
+             "the reference is so large that the inverse's arithmetic overflowed; the inverse is untouched")
       .value("rejected_short_preview", InverseStatus::RejectedShortPreview,
              "the reference window was shorter than window_size; the inverse is untouched");
 

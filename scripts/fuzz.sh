@@ -10,7 +10,7 @@
 #   --seconds S  S seconds per target, -seed=1.
 # The long modes keep what they find in build/fuzz/corpus/<target>/ (not committed) and start from
 # it next time, together with the committed seeds. Targets: fuzz_model_json, fuzz_plant_parameters,
-# fuzz_estimator_update (default: all three). A crash, a sanitizer report, a leak, a timeout (10 s
+# fuzz_estimator_update, fuzz_inverse_model (default: all four). A crash, a sanitizer report, a leak, a timeout (10 s
 # for one input) or a violated invariant is a finding: the input is saved under
 # build/fuzz/findings/<target>/, the log under build/fuzz/logs/, and the script exits 1 after
 # running the remaining targets.
@@ -26,14 +26,14 @@ while (($#)); do
     --quick) mode=quick; amount=10 ;;
     --runs) mode=runs; amount="${2:?--runs needs a number}"; shift ;;
     --seconds) mode=seconds; amount="${2:?--seconds needs a number}"; shift ;;
-    fuzz_model_json | fuzz_plant_parameters | fuzz_estimator_update) targets+=("$1") ;;
+    fuzz_model_json | fuzz_plant_parameters | fuzz_estimator_update | fuzz_inverse_model) targets+=("$1") ;;
     -h | --help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "fuzz.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
   shift
 done
 [[ $amount =~ ^[0-9]+$ && $amount -gt 0 ]] || { echo "fuzz.sh: expected a positive integer, got $amount" >&2; exit 2; }
-((${#targets[@]})) || targets=(fuzz_model_json fuzz_plant_parameters fuzz_estimator_update)
+((${#targets[@]})) || targets=(fuzz_model_json fuzz_plant_parameters fuzz_estimator_update fuzz_inverse_model)
 
 bonl_ensure_deps
 bonl_ensure_fuzz_deps
@@ -53,7 +53,7 @@ build_seconds=$(seconds_since "$start")
 
 # Largest input per target: JSON documents up to 4 KiB; the parameter and estimator inputs are
 # decoded into a few dozen numbers, or a few hundred samples.
-declare -A max_len=([fuzz_model_json]=4096 [fuzz_plant_parameters]=1024 [fuzz_estimator_update]=512)
+declare -A max_len=([fuzz_model_json]=4096 [fuzz_plant_parameters]=1024 [fuzz_estimator_update]=512 [fuzz_inverse_model]=512)
 declare -A extra=([fuzz_model_json]="-dict=fuzz/model_json.dict")
 
 export ASAN_OPTIONS="detect_leaks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"

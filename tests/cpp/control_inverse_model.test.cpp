@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "test_support.hpp"
 
@@ -282,4 +283,27 @@ TEST_CASE("C1-C5 bad input to the inverse model: clear errors, the state untouch
   even.set_p(vec({0.0, 0.0, 0.0}));  // w = u^2 on both sides
   CHECK_THROWS_WITH(InverseModel<bonl::Hammersteind>(even, range(-1.0, 1.0)),
                     Catch::Contains("rises with u on one side of 0 and falls on the other"));
+}
+
+TEST_CASE("a reference that overflows the arithmetic is refused and changes nothing") {
+  // fuzz_inverse_model's first finding: -1.8e308 (finite) through a Wiener model gave a NaN command
+  // with a Saturated status. Now RejectedOverflow, the inverse as it was (a twin that never saw it
+  // steps alike), for every model on a huge reference.
+  const auto check = [](const auto& model, const InverseOptions& options) {
+    using Model = std::decay_t<decltype(model)>;
+    INFO(Model::kName);
+    InverseModel<Model> inverse(model, options);
+    InverseModel<Model> twin(model, options);
+    for (int k = 0; k < 20; ++k) CHECK(inverse.step(0.01 * k).value == twin.step(0.01 * k).value);
+    const double huge = -std::numeric_limits<double>::max();
+    const auto refused = inverse.step(huge);
+    CHECK(refused.status == InverseStatus::RejectedOverflow);
+    CHECK(bonl::control::rejected(refused.status));
+    CHECK(std::isnan(refused.value));
+    for (int k = 0; k < 20; ++k) CHECK(inverse.step(0.2 - 0.01 * k).value == twin.step(0.2 - 0.01 * k).value);
+  };
+  auto wiener = known_system<bonl::Wienerd>("small");
+  wiener.set_q(vec({1.0, 4.9406564584124654e-324, 0.0}));  // a monotone branch reaching beyond 1e308
+  check(wiener, {});
+  check(known_system<bonl::ARXd>("small"), {});
 }

@@ -153,3 +153,16 @@ def test_the_adaptive_inverse_learns_a_known_system_and_keeps_its_inverse_when_n
         bonl.control.AdaptiveInverse(truth, command_min=-3.0, command_max=3.0, rederive_every=0)
     with pytest.raises(ValueError, match="reference must be finite"):
         strict.step(float("inf"))
+
+
+def test_a_reference_that_overflows_the_arithmetic_is_refused():
+    model = SMALL["ARX"]
+    inverse = InverseModel(model)
+    twin = InverseModel(model)
+    for r in np.linspace(0, 0.3, 10):
+        assert inverse.step(r).value == twin.step(r).value
+    with pytest.raises(ValueError, match="the reference is too large: the inverse's arithmetic overflowed"):
+        inverse.step(-np.finfo(float).max)
+    for r in np.linspace(0.3, 0, 10):
+        assert inverse.step(r).value == twin.step(r).value
+    assert int(InverseStatus.rejected_overflow) == 32

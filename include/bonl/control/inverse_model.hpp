@@ -130,8 +130,9 @@ class InverseModel {
   }
 
   /// The command u(k) for the reference window r(k+nk), ..., r(k+nk+window_size()-1) (the model's
-  /// output units; more entries are ignored). A window too short (RejectedShortPreview) or with a
-  /// non-finite entry (RejectedNonFinite) leaves the inverse untouched and the command NaN.
+  /// output units; more entries are ignored). A window too short (RejectedShortPreview), with a
+  /// non-finite entry (RejectedNonFinite), or so large that the arithmetic overflows
+  /// (RejectedOverflow) leaves the inverse untouched and the command NaN.
   template <typename W>
   InverseStep<Scalar> step(const Eigen::MatrixBase<W>& reference) noexcept {
     const Eigen::Index n = m_window.size();
@@ -155,6 +156,7 @@ class InverseModel {
       for (Eigen::Index i = 0; i < n; ++i) m_window[i] = reference[i] - m_y0;
     }
     const Scalar w_desired = m_linear.input(m_window);
+    if (!std::isfinite(w_desired)) return {nan, InverseStatus::RejectedOverflow};
     Scalar u = Scalar(0);
     Scalar w = Scalar(0);
     if constexpr (kHasInputPolynomial) {
@@ -167,7 +169,7 @@ class InverseModel {
       if (u != w_desired) status |= InverseStatus::Saturated;
       w = u;
     }
-    m_linear.commit(m_window[0], w);
+    if (!m_linear.commit(m_window[0], w)) return {nan, InverseStatus::RejectedOverflow};
     if constexpr (kHasBacklash) m_backlash.step(reference[0] - m_y0);
     return {u + m_u0, status};
   }

@@ -1,7 +1,8 @@
 #pragma once
 // What an inverse reports with each command: a set of flags, Exact (none) when the command makes the
 // model follow the reference. A per-sample step is noexcept and returns its status instead of
-// throwing; a refused sample (RejectedNonFinite, RejectedShortPreview) leaves the inverse untouched.
+// throwing; a refused sample (RejectedNonFinite, RejectedShortPreview, RejectedOverflow) leaves the
+// inverse untouched.
 
 #include <cstdint>
 
@@ -17,6 +18,8 @@ enum class InverseStatus : std::uint8_t {
                               ///< reference: its end is used
   RejectedNonFinite = 8,      ///< a reference in the window was NaN or infinite; the inverse is untouched
   RejectedShortPreview = 16,  ///< the reference window is shorter than window_size(); the inverse is untouched
+  RejectedOverflow = 32,      ///< the reference is so large that the inverse's arithmetic left the finite
+                              ///< numbers (e.g. 1e308 through a model that amplifies it); the inverse is untouched
 };
 
 constexpr InverseStatus operator|(InverseStatus a, InverseStatus b) noexcept {
@@ -32,7 +35,8 @@ constexpr bool has(InverseStatus status, InverseStatus flags) noexcept {
 constexpr bool rejected(InverseStatus status) noexcept {
   return (static_cast<std::uint8_t>(status) &
           (static_cast<std::uint8_t>(InverseStatus::RejectedNonFinite) |
-           static_cast<std::uint8_t>(InverseStatus::RejectedShortPreview))) != 0;
+           static_cast<std::uint8_t>(InverseStatus::RejectedShortPreview) |
+           static_cast<std::uint8_t>(InverseStatus::RejectedOverflow))) != 0;
 }
 
 /// One value an inverse produced and what it reports about it.

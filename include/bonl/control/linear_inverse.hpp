@@ -112,17 +112,19 @@ class LinearInverse {
     return v / m_stable[0];
   }
 
-  /// Stores the step: x_d(k+nk) (window[0]) and the w(k) actually applied.
-  void commit(Scalar x_reference, Scalar w) noexcept {
+  /// Stores the step: x_d(k+nk) (window[0]) and the w(k) actually applied. Returns false, storing
+  /// nothing, where w or the x it gives is not finite (a reference beyond the arithmetic's range).
+  bool commit(Scalar x_reference, Scalar w) noexcept {
+    Scalar x = x_reference;
     if (m_minimum_phase) {
-      Scalar x = m_b[0] * w;
+      x = m_b[0] * w;
       for (Eigen::Index i = 1; i < m_b.size(); ++i) x += m_b[i] * m_w[i - 1];
       for (Eigen::Index j = 0; j < m_a.size(); ++j) x -= m_a[j] * m_x[j];
-      m_x.push(x);
-    } else {
-      m_x.push(x_reference);
     }
+    if (!std::isfinite(x) || !std::isfinite(w)) return false;
+    m_x.push(x);
     m_w.push(w);
+    return true;
   }
 
  private:

@@ -23,6 +23,8 @@ class InverseStatus:
     
       rejected_non_finite : a reference was NaN or infinite; the inverse is untouched
     
+      rejected_overflow : the reference is so large that the inverse's arithmetic overflowed; the inverse is untouched
+    
       rejected_short_preview : the reference window was shorter than window_size; the inverse is untouched
     """
     __members__: typing.ClassVar[dict[str, InverseStatus]]
@@ -30,6 +32,7 @@ class InverseStatus:
     exact: typing.ClassVar[InverseStatus]
     out_of_range: typing.ClassVar[InverseStatus]
     rejected_non_finite: typing.ClassVar[InverseStatus]
+    rejected_overflow: typing.ClassVar[InverseStatus]
     rejected_short_preview: typing.ClassVar[InverseStatus]
     saturated: typing.ClassVar[InverseStatus]
     @typing.overload

@@ -4,7 +4,8 @@
 // estimator; every `rederive_every` samples the inverse is derived again from the estimate, if the
 // estimate is trusted, and goes on from where the old inverse was (InverseModel::continue_from). An
 // estimate that is not trusted leaves the last good inverse in use and is counted by the reason:
-//   - the estimator diverged (a refused update: diverged());
+//   - the estimator diverged (a refused update: diverged(); it stays so unless
+//     options.estimator.recover_after lets it reset its covariance by itself);
 //   - its covariance is large: trace(P) above max_covariance_trace * trace(P(0)) (the estimate has
 //     lost what it knew, e.g. after a long stretch without excitation under forgetting);
 //   - its linear block is not stable: a pole at or beyond stability_radius;

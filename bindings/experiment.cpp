@@ -229,6 +229,8 @@ void bind_tracking(py::module_& sub) {
                                       "One controller's run of ``run_tracking_experiment``.")
       .def_readonly("controller", &experiment::TrackingRun::controller,
                     "str: 'PI', a model's name (PI plus its inverse as feedforward), or '<model> (adaptive)'.")
+      .def_readonly("label", &experiment::TrackingRun::label,
+                    "str: as the tables write it: 'PI', 'PI + P-H-W', 'PI + P-H-W (adaptive)'.")
       .def_readonly("plant_changes", &experiment::TrackingRun::plant_changes, "bool: the plant changed at change_time.")
       .def_readonly("rms", &experiment::TrackingRun::rms,
                     "float: RMS of reference - joint rate over [period, duration] [rad/s].")

@@ -11,14 +11,6 @@
 
 namespace bonl_demo {
 
-/// "PseudoHammersteinWiener (adaptive)" -> "P-H-W (adaptive)"; "PI" stays.
-inline std::string tracking_label(const std::string& controller) {
-  if (controller == "PI") return "PI";
-  const std::size_t space = controller.find(' ');
-  const std::string model = controller.substr(0, space);
-  return "PI + " + bonl::experiment::paper_label(model) + (space == std::string::npos ? "" : controller.substr(space));
-}
-
 inline void print_tracking(const bonl::experiment::TrackingResult& result) {
   const auto& o = result.options;
   std::printf("Tracking a reference joint velocity (smooth random, %.2g Hz, RMS %.3g rad/s, period %.0f s) for %.0f s\n",
@@ -30,7 +22,7 @@ inline void print_tracking(const bonl::experiment::TrackingResult& result) {
   std::printf("%-28s %14s %14s\n", "controller", "RMS [rad/s]", "vs PI alone");
   for (const auto& run : result.runs) {
     if (run.plant_changes) continue;
-    std::printf("%-28s %14.5f %13.1f%%\n", tracking_label(run.controller).c_str(), run.rms, 100.0 * (run.rms / pi - 1.0));
+    std::printf("%-28s %14.5f %13.1f%%\n", run.label.c_str(), run.rms, 100.0 * (run.rms / pi - 1.0));
   }
   std::printf("\nThe plant changes at %.0f s (pilot hysteresis x%.3g, bulk modulus x%.3g): RMS over the period before "
               "it, and over %.0f-%.0f s after it\n",
@@ -38,7 +30,7 @@ inline void print_tracking(const bonl::experiment::TrackingResult& result) {
   std::printf("%-28s %14s %14s %10s\n", "controller", "before", "after", "ratio");
   for (const auto& run : result.runs) {
     if (!run.plant_changes) continue;
-    std::printf("%-28s %14.5f %14.5f %10.2f\n", tracking_label(run.controller).c_str(), run.rms_before_change,
+    std::printf("%-28s %14.5f %14.5f %10.2f\n", run.label.c_str(), run.rms_before_change,
                 run.rms_after_change, run.rms_after_change / run.rms_before_change);
   }
   const auto& adaptive = result.runs.back();
@@ -80,7 +72,7 @@ inline void write_tracking_markdown(const std::string& path, const bonl::experim
   out << "| controller | tracking RMS [rad/s] | vs PI alone |\n|---|---:|---:|\n";
   for (const auto& run : result.runs) {
     if (run.plant_changes) continue;
-    std::snprintf(line, sizeof line, "| %s | %.5f | %+.1f%% |\n", tracking_label(run.controller).c_str(), run.rms,
+    std::snprintf(line, sizeof line, "| %s | %.5f | %+.1f%% |\n", run.label.c_str(), run.rms,
                   100.0 * (run.rms / pi - 1.0));
     out << line;
   }
@@ -89,7 +81,7 @@ inline void write_tracking_markdown(const std::string& path, const bonl::experim
   out << line << "|---|---:|---:|---:|\n";
   for (const auto& run : result.runs) {
     if (!run.plant_changes) continue;
-    std::snprintf(line, sizeof line, "| %s | %.5f | %.5f | %.2f |\n", tracking_label(run.controller).c_str(),
+    std::snprintf(line, sizeof line, "| %s | %.5f | %.5f | %.2f |\n", run.label.c_str(),
                   run.rms_before_change, run.rms_after_change, run.rms_after_change / run.rms_before_change);
     out << line;
   }

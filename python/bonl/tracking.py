@@ -10,23 +10,8 @@ from __future__ import annotations
 
 import argparse
 import json
-import re
 
 from . import experiment
-
-
-def paper_label(name: str) -> str:
-    """How the paper writes a model's name: the initials of a name of several words ('H-W'), else the name."""
-    words = re.findall(r"[A-Z][a-z]+", name)
-    return "-".join(word[0] for word in words) if len(words) > 1 else name
-
-
-def label(controller: str) -> str:
-    """'PseudoHammersteinWiener (adaptive)' -> 'PI + P-H-W (adaptive)'; 'PI' stays."""
-    if controller == "PI":
-        return "PI"
-    model, _, rest = controller.partition(" ")
-    return "PI + " + paper_label(model) + (" " + rest if rest else "")
 
 
 def report(result) -> str:
@@ -35,12 +20,12 @@ def report(result) -> str:
     lines = ["%-28s %14s %14s" % ("controller", "RMS [rad/s]", "vs PI alone")]
     for run in result.runs:
         if not run.plant_changes:
-            lines.append("%-28s %14.5f %13.1f%%" % (label(run.controller), run.rms, 100.0 * (run.rms / pi - 1.0)))
+            lines.append("%-28s %14.5f %13.1f%%" % (run.label, run.rms, 100.0 * (run.rms / pi - 1.0)))
     lines += ["", "under the plant change: RMS before it and 20-40 s after it",
               "%-28s %14s %14s %10s" % ("controller", "before", "after", "ratio")]
     for run in result.runs:
         if run.plant_changes:
-            lines.append("%-28s %14.5f %14.5f %10.2f" % (label(run.controller), run.rms_before_change,
+            lines.append("%-28s %14.5f %14.5f %10.2f" % (run.label, run.rms_before_change,
                                                          run.rms_after_change,
                                                          run.rms_after_change / run.rms_before_change))
     return "\n".join(lines)
@@ -69,18 +54,18 @@ def figure(result, path: str) -> None:
     fig, axes = plt.subplots(3, 1, figsize=(10, 9), sharex=True)
     axes[0].plot(t, result.reference, "k", lw=1.5, label="reference")
     for name, colour in (("PI", "tab:orange"), ("PseudoHammersteinWiener", "tab:blue")):
-        axes[0].plot(t, result.run(name).joint_rate, colour, lw=0.8, label=label(name))
+        axes[0].plot(t, result.run(name).joint_rate, colour, lw=0.8, label=result.run(name).label)
     axes[0].set_ylabel("joint rate [rad/s]")
     axes[0].set_title("Tracking on the plant (no change)")
     axes[0].legend(loc="upper right", fontsize=8)
     for name, colour in (("PI", "tab:orange"), ("PseudoHammersteinWiener", "tab:blue")):
-        axes[1].plot(t, result.run(name).command, colour, lw=0.8, label=label(name))
+        axes[1].plot(t, result.run(name).command, colour, lw=0.8, label=result.run(name).label)
     axes[1].set_ylabel("command V [V]")
     axes[1].legend(loc="upper right", fontsize=8)
     change = result.runs[-1]
     fixed = result.run("PseudoHammersteinWiener", True)
-    axes[2].plot(t, result.reference - fixed.joint_rate, "tab:red", lw=0.6, label=label(fixed.controller))
-    axes[2].plot(t, result.reference - change.joint_rate, "tab:green", lw=0.6, label=label(change.controller))
+    axes[2].plot(t, result.reference - fixed.joint_rate, "tab:red", lw=0.6, label=fixed.label)
+    axes[2].plot(t, result.reference - change.joint_rate, "tab:green", lw=0.6, label=change.label)
     axes[2].axvline(40.0, color="k", ls="--", lw=1)
     axes[2].set_ylabel("tracking error [rad/s]")
     axes[2].set_xlabel("time [s]")

@@ -12,13 +12,17 @@
 
 namespace bonl::experiment {
 
+double low_pass_gain(double cutoff_hz, double ts) {
+  return 1.0 - std::exp(-2.0 * 3.14159265358979323846 * cutoff_hz * ts);
+}
+
 Eigen::VectorXd low_pass(const Eigen::VectorXd& x, double cutoff_hz, double ts) {
   detail::require(std::isfinite(cutoff_hz) && cutoff_hz > 0.0, "low_pass: cutoff_hz must be finite and > 0");
   detail::require(std::isfinite(ts) && ts > 0.0, "low_pass: ts must be finite and > 0");
   detail::require_finite(x, "x");
   Eigen::VectorXd z(x.size());
   if (x.size() == 0) return z;
-  const double alpha = 1.0 - std::exp(-2.0 * 3.14159265358979323846 * cutoff_hz * ts);
+  const double alpha = low_pass_gain(cutoff_hz, ts);
   z[0] = x[0];
   for (Eigen::Index k = 1; k < x.size(); ++k) z[k] = z[k - 1] + alpha * (x[k] - z[k - 1]);
   return z;

@@ -11,14 +11,13 @@
 
 #include "bonl/control/inverse_model.hpp"
 #include "bonl/detail/validate.hpp"
+#include "bonl/experiment/records.hpp"
 #include "bonl/plant/excitation.hpp"
 #include "bonl/plant/stepping_plant.hpp"
 
 namespace bonl::experiment {
 
 namespace {
-
-constexpr double kPi = 3.141592653589793;
 
 /// Samples in `seconds` at the experiment's sample time (the options make these whole numbers).
 Eigen::Index samples_in(double seconds, const TrackingOptions& options) {
@@ -33,6 +32,14 @@ bool whole_multiple(double value, double unit) {
 
 double rms(const Eigen::VectorXd& error, Eigen::Index from, Eigen::Index to) {
   return std::sqrt(error.segment(from, to - from).squaredNorm() / static_cast<double>(to - from));
+}
+
+/// "PseudoHammersteinWiener (adaptive)" -> "PI + P-H-W (adaptive)"; "PI" stays.
+std::string label_of(const std::string& controller) {
+  if (controller == "PI") return controller;
+  const std::size_t space = controller.find(' ');
+  const std::string suffix = space == std::string::npos ? "" : controller.substr(space);
+  return "PI + " + paper_label(controller.substr(0, space)) + suffix;
 }
 
 /// The PI: u = Kc (e + (1 / tau_I) integral of e), the integral held while the command saturates.
@@ -98,13 +105,14 @@ TrackingRun track(const plant::Parameters& parameters, const TrackingResult& set
   changed.bulk_modulus *= options.bulk_modulus_factor;
 
   TrackingRun run;
+  run.label = label_of(controller);
   run.controller = std::move(controller);
   run.plant_changes = change;
   run.command.resize(n);
   run.feedforward.resize(n);
   run.joint_rate.resize(n);
   PI pi{setup.proportional_gain, setup.integral_time, ts};
-  const double alpha = 1.0 - std::exp(-2.0 * kPi * options.cutoff_hz * ts);
+  const double alpha = low_pass_gain(options.cutoff_hz, ts);  // the records' filter
   const Eigen::Index change_at = samples_in(options.change_time, options);
   // The low-passed angle at t_k, t_{k-1}, t_{k-2}, and the command applied at t_{k-1}.
   double z = stepping.measurement().measured_angle;

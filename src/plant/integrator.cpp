@@ -86,6 +86,11 @@ std::string flag_name(int flag) {
   return name ? std::string(name.get()) : "flag " + std::to_string(flag);
 }
 
+/// The spool's decay over one command interval, exp(-dt / tau_v).
+double spool_decay(const Parameters& p, double command_rate) {
+  return std::exp(-1.0 / (command_rate * p.valve_time_constant));
+}
+
 /// Pilot-stage input kv * uv for a command V (plant.md 1-2, before the hysteresis).
 double commanded_opening(const Parameters& p, double voltage) {
   const double e = std::clamp(voltage, 0.0, p.max_voltage) - p.neutral_voltage;
@@ -161,10 +166,10 @@ Integrator::Integrator(const Parameters& parameters, const SimulationOptions& op
       m_data(parameters, options.command_rate),
       m_per_sample(std::lround(options.sample_time * options.command_rate)),
       m_sample_time(options.sample_time),
-      m_decay(std::exp(-1.0 / (options.command_rate * parameters.valve_time_constant))),
+      m_decay(spool_decay(parameters, options.command_rate)),
       m_phi0(parameters.angle_offset()),
       m_noise_requested(options.sensor_noise),
-      m_noise(options.sensor_noise && parameters.sensor_noise > 0.0),
+      m_noise(m_noise_requested && parameters.sensor_noise > 0.0),
       m_engine(options.noise_seed) {
   const double h0 = options.initial_position >= 0.0 ? options.initial_position : 0.5 * parameters.stroke;
   const State s0 = initial_state(parameters, h0);
@@ -257,15 +262,14 @@ void Integrator::set_parameters(const Parameters& parameters) {
     throw std::logic_error("bonl: " + m_where + ": a step failed at t = " + bonl::detail::format_number(m_failed_at) +
                            " s and left the plant between samples; reset() it");
   // Everything derived from the parameters is computed before anything changes (none of it throws).
-  UserData data(parameters, m_data.rate);
-  const double decay = std::exp(-1.0 / (m_data.rate * parameters.valve_time_constant));
+  const Model model(parameters);
   const double time = m_measurement.time;
   // The state is CVODE's y at the current sample time; only the history of its BDF steps goes.
   check(CVodeReInit(m_cvode.get(), time, m_y.get()), "CVodeReInit", time);
   m_parameters = parameters;
-  m_data.model = data.model;
-  m_data.inv_tau = data.inv_tau;
-  m_decay = decay;
+  m_data.model = model;
+  m_data.inv_tau = model.inverse_time_constant();
+  m_decay = spool_decay(parameters, m_data.rate);
   m_noise = m_noise_requested && parameters.sensor_noise > 0.0;
 }
 

@@ -57,6 +57,9 @@ def test_each_run_is_scored_as_documented(result):
         assert run.rms_after_change == pytest.approx(window(60, 80), rel=1e-12)
         assert np.all((run.command >= 0) & (run.command <= 5))
     assert np.all(result.run("PI").feedforward == 0)
+    assert [run.label for run in result.runs] == [
+        "PI", "PI + ARX", "PI + Hammerstein", "PI + H-W", "PI + P-H-W", "PI + P-H-W (exact switch)",
+        "PI", "PI + P-H-W", "PI + P-H-W (adaptive)"]
     with pytest.raises(ValueError, match="tracking: no run of 'LQR'"):
         result.run("LQR")
     with pytest.raises(ValueError, match="method"):

@@ -40,6 +40,8 @@ struct Record {
 
 /// First-order low-pass z[k] = z[k-1] + alpha (x[k] - z[k-1]), alpha = 1 - exp(-2 pi fc ts), z[0] = x[0].
 Eigen::VectorXd low_pass(const Eigen::VectorXd& x, double cutoff_hz, double ts);
+/// low_pass's alpha = 1 - exp(-2 pi fc ts), for a filter run sample by sample (the tracking experiment's).
+double low_pass_gain(double cutoff_hz, double ts);
 
 /// Central differences, one-sided at both ends.
 Eigen::VectorXd differentiate(const Eigen::VectorXd& x, double ts);

@@ -60,6 +60,8 @@ struct TrackingRun {
   /// "PI", a model's name (PI plus its inverse as feedforward), "<model> (adaptive)", or
   /// "<model> (exact switch)" (P-H-W with the backlash inverse's band 0).
   std::string controller;
+  /// As the tables write it: "PI", "PI + P-H-W", "PI + P-H-W (adaptive)" (paper_label of the model).
+  std::string label;
   bool plant_changes = false;  ///< the plant changed at change_time
   double rms = 0.0;            ///< RMS of reference - joint rate over [period, duration] [rad/s]
   double rms_before_change = 0.0;  ///< over the period before change_time

@@ -244,6 +244,11 @@ class TrackingRun:
         numpy.ndarray: the plant's true joint rate [rad/s].
         """
     @property
+    def label(self) -> str:
+        """
+        str: as the tables write it: 'PI', 'PI + P-H-W', 'PI + P-H-W (adaptive)'.
+        """
+    @property
     def plant_changes(self) -> bool:
         """
         bool: the plant changed at change_time.

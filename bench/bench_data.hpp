@@ -68,7 +68,7 @@ struct PaperOrderModels {
   static constexpr int R = Fixed ? 3 : Eigen::Dynamic;
   using type = bonl::ModelList<bonl::ARX<S, Na, Nb>, bonl::Hammerstein<S, Na, Nb, R>,
                                bonl::HammersteinWiener<S, Na, Nb, R, R>, bonl::PseudoHammersteinWiener<S, Na, Nb, R>,
-                               bonl::Wiener<S, Na, Nb, R>>;
+                               bonl::Wiener<S, Na, Nb, R>, bonl::WienerHammerstein<S, Na, Nb, R, Na, Nb>>;
 };
 static_assert(bonl::Models::size == PaperOrderModels<double, true>::type::size,
               "bench/bench_data.hpp: every model of bonl::Models has an entry in PaperOrderModels");
@@ -80,7 +80,8 @@ Model make_structure() {
   std::array<Eigen::Index, Model::kDescription.orders.size()> orders{};
   for (std::size_t i = 0; i < orders.size(); ++i) {
     const std::string name = Model::kDescription.orders[i].name;
-    orders[i] = name == "na" ? kNa : name == "nb" ? kNb : name == "nk" ? kNk : name == "r" ? kR : kR1;
+    const std::string kind = name.substr(0, 2);  // na1 and na2 as na, nb1 and nb2 as nb
+    orders[i] = kind == "na" ? kNa : kind == "nb" ? kNb : name == "nk" ? kNk : name == "r" ? kR : kR1;
   }
   return bonl::make_model<Model>(orders);
 }

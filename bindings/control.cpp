@@ -1,6 +1,7 @@
 // bonl.control: the inverse models (bonl/control/): per sample, the command that makes an identified
 // model follow a reference, and the commands for a whole reference. One Python class over
-// InverseModel<Model> for every model of bonl::Models.
+// InverseModel<Model> for every model of bonl::control::InvertibleModels; the others are refused with
+// a ValueError that says why.
 
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
@@ -12,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <variant>
 
@@ -62,7 +64,7 @@ using InverseOf = bonl::control::InverseModel<Model>;
 
 class AnyInverse {
  public:
-  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::Models, InverseOf>::type, std::variant>::type;
+  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::control::InvertibleModels, InverseOf>::type, std::variant>::type;
 
   template <class Model>
   AnyInverse(const Model& model, const bonl::control::InverseOptions& options)
@@ -139,10 +141,10 @@ void def_inverse_init(py::class_<AnyInverse>& cls) {
 template <class Model>
 using AdaptiveOf = bonl::control::AdaptiveInverse<Model>;
 
-/// bonl.control.AdaptiveInverse over AdaptiveInverse<Model> for every model of bonl::Models.
+/// bonl.control.AdaptiveInverse over AdaptiveInverse<Model> for every model of InvertibleModels.
 class AnyAdaptive {
  public:
-  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::Models, AdaptiveOf>::type, std::variant>::type;
+  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::control::InvertibleModels, AdaptiveOf>::type, std::variant>::type;
 
   template <class Model>
   AnyAdaptive(const Model& model, const bonl::control::AdaptiveInverseOptions& options)
@@ -203,6 +205,31 @@ void def_adaptive_init(py::class_<AnyAdaptive>& cls) {
           py::arg("max_covariance_trace") = 10.0, py::arg("stability_radius") = 0.999);
 }
 
+/// For a model without an inverse: the constructor that says so (a ValueError, not pybind11's
+/// "incompatible arguments").
+template <class Model, class Class>
+void def_no_inverse_init(Class& cls) {
+  cls.def(py::init([](const Model&, const py::kwargs&) -> typename Class::type* {
+            throw std::invalid_argument(std::string("bonl.control: the ") + Model::kName +
+                                        " model has no inverse yet (only models with one linear block do)");
+          }),
+          py::arg("model"));
+}
+
+/// def_init<Model>(cls) for every model of bonl::Models: the real constructor where the model has an
+/// inverse, def_no_inverse_init where it does not.
+template <class Class, class DefInit>
+void def_inits(Class& cls, DefInit def_init) {
+  bonl::for_each_model(bonl::Models{}, [&](auto tag) {
+    using Model = typename decltype(tag)::type;
+    if constexpr (bonl::control::has_inverse<Model>::value) {
+      def_init(cls, tag);
+    } else {
+      def_no_inverse_init<Model>(cls);
+    }
+  });
+}
+
 }  // namespace
 
 void bind_control(py::module_& m) {
@@ -260,7 +287,7 @@ backlash_band_per_c : float, default 0
 
 Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1, q_1 = 0, an input
 polynomial that is not monotone through 0).)doc");
-  bonl::for_each_model(bonl::Models{}, [&inverse](auto tag) { def_inverse_init<typename decltype(tag)::type>(inverse); });
+  def_inits(inverse, [](auto& cls, auto tag) { def_inverse_init<typename decltype(tag)::type>(cls); });
   inverse
       .def("step", &AnyInverse::step, py::arg("reference"), R"doc(The command u(k) for the reference ahead.
 
@@ -316,7 +343,7 @@ max_covariance_trace : float, default 10
 stability_radius : float, default 0.999
 
 Raises ValueError for bad options or a model without an inverse.)doc");
-  bonl::for_each_model(bonl::Models{}, [&adaptive](auto tag) { def_adaptive_init<typename decltype(tag)::type>(adaptive); });
+  def_inits(adaptive, [](auto& cls, auto tag) { def_adaptive_init<typename decltype(tag)::type>(cls); });
   adaptive
       .def("step", &AnyAdaptive::step, py::arg("reference"),
            "The command for the reference ahead, from the inverse in use (as InverseModel.step).")

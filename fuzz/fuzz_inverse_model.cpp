@@ -1,4 +1,4 @@
-// libFuzzer target: bytes -> bonl::control::InverseModel<Model> for a model of bonl::Models at small
+// libFuzzer target: bytes -> bonl::control::InverseModel<Model> for a model of bonl::control::InvertibleModels at small
 // run-time orders with arbitrary parameters and options, then a stream of reference windows with NaN,
 // inf, huge, tiny and denormal values among ordinary ones (bonl/control/inverse_model.hpp).
 //
@@ -112,10 +112,10 @@ void fuzz_inverse(FuzzedDataProvider& in) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider in(data, size);
-  const int kind = in.ConsumeIntegralInRange<int>(0, static_cast<int>(bonl::Models::size) - 1);
+  const int kind = in.ConsumeIntegralInRange<int>(0, static_cast<int>(bonl::control::InvertibleModels::size) - 1);
   try {
     int index = 0;
-    bonl::for_each_model(bonl::Models{}, [&](auto tag) {
+    bonl::for_each_model(bonl::control::InvertibleModels{}, [&](auto tag) {
       if (index++ == kind) fuzz_inverse<typename decltype(tag)::type>(in);
     });
   } catch (const std::exception& e) {

@@ -10,3 +10,4 @@
 #include "estimator/recursive_estimator.hpp"
 #include "estimator/rls.hpp"
 #include "estimator/select.hpp"
+#include "estimator/wiener_hammerstein_start.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The models: the four of the paper and the Wiener model. Each one simulates free-run from rest (simulate), predicts one
+// The models: the four of the paper, the Wiener model and the Wiener-Hammerstein model. Each one simulates free-run from rest (simulate), predicts one
 // step ahead from measured data (predict), exposes its parameters as the eq. (19) vector (theta)
 // and by name, and carries its key-term-separated regressor (KeyTerms) for bonl::Estimator.
 //
@@ -24,6 +24,7 @@
 #include "models/pseudo_hammerstein_wiener.hpp"
 #include "models/rescale.hpp"
 #include "models/wiener.hpp"
+#include "models/wiener_hammerstein.hpp"
 
 namespace bonl {
 
@@ -41,9 +42,11 @@ using Hammersteind = Hammerstein<double>;
 using HammersteinWienerd = HammersteinWiener<double>;
 using PseudoHammersteinWienerd = PseudoHammersteinWiener<double>;
 using Wienerd = Wiener<double>;
+using WienerHammersteind = WienerHammerstein<double>;
 
 /// Every model, at run-time orders in double: what a model file can hold, what Python binds, what
 /// the property suites run over. A new model is one entry here.
-using Models = ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd>;
+using Models =
+    ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd, WienerHammersteind>;
 
 }  // namespace bonl

@@ -318,7 +318,7 @@ TEST_CASE("bad files are rejected with a message naming the problem", "[io]") {
     check_rejected(edited(good, [](Json& d) { d.erase("model"); }), "missing key model");
     check_rejected(edited(good, [](Json& d) { d["model"] = "Pseudo-Hammerstein-Wiener"; }),
                    "model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", "
-                   "\"PseudoHammersteinWiener\", \"Wiener\", got \"Pseudo-Hammerstein-Wiener\"");
+                   "\"PseudoHammersteinWiener\", \"Wiener\", \"WienerHammerstein\", got \"Pseudo-Hammerstein-Wiener\"");
     check_rejected(edited(good, [](Json& d) { d["model"] = 3; }), "model must be one of");
     check_rejected<bonl::Hammersteind>(good,
                                        "model is \"PseudoHammersteinWiener\", but the model type asked for is "

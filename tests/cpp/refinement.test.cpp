@@ -63,9 +63,9 @@ TEMPLATE_LIST_TEST_CASE("a start with an unstable linear block is reflected insi
   REQUIRE(bonl::pole_radius(truth) < 1.0);
 
   TestType start = truth;
-  Eigen::VectorXd a = truth.a();
+  Eigen::VectorXd a = bonl::detail::denominator(truth, 0);  // the (first) linear block's
   a[a.size() - 1] = 2.5;  // the product of the poles' magnitudes is |a_na| > 1: some pole outside
-  start.set_a(a);
+  bonl::detail::set_denominator(start, 0, a);
   REQUIRE(bonl::pole_radius(start) > 1.0);
 
   bonl::RefinementReport report;

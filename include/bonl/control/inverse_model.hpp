@@ -26,6 +26,7 @@
 
 #include "../blocks/two_segment_polynomial.hpp"
 #include "../detail/validate.hpp"
+#include "../models.hpp"
 #include "backlash_inverse.hpp"
 #include "input_polynomial_inverse.hpp"
 #include "inverse_status.hpp"
@@ -71,8 +72,18 @@ template <class M>
 struct has_backlash<M, std::void_t<decltype(std::declval<const M&>().backlash())>> : std::true_type {};
 }  // namespace detail
 
+/// The models InverseModel inverts: those with one linear block. The Wiener-Hammerstein model's inverse
+/// (B2/A2's, the polynomial's and B1/A1's in turn, with the two delays' preview) is not written yet.
+template <class Model>
+struct has_inverse : std::bool_constant<bonl::detail::linear_block_count<Model>::value == 1> {};
+
+/// The models of bonl::Models that have an inverse (what the Python bindings and the fuzz harness loop over).
+using InvertibleModels = FilterModels<Models, has_inverse>::type;
+
 template <class Model>
 class InverseModel {
+  static_assert(has_inverse<Model>::value, "bonl::control::InverseModel inverts models with one linear block");
+
  public:
   using Scalar = typename Model::Scalar;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;

@@ -17,6 +17,7 @@
 #include "output_error.hpp"
 #include "record_view.hpp"
 #include "recursive_estimator.hpp"
+#include "wiener_hammerstein_start.hpp"
 
 namespace bonl {
 
@@ -174,7 +175,13 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
       failures += std::string(failures.empty() ? "" : "; ") + error.what();
     }
   }
-  if (starts.empty()) throw NumericalError("bonl: identification failed from both starts: " + failures);
+  // A Wiener-Hammerstein model also starts from the best linear approximation's best splits
+  // (wiener_hammerstein_start.hpp): its recursive estimates alone depend on where they happen to go.
+  if constexpr (is_wiener_hammerstein<Model>::value) {
+    const auto splits = wiener_hammerstein_splits(structure, records);
+    for (std::size_t i = 0; i < splits.size() && i < kWienerHammersteinStarts; ++i) starts.push_back(splits[i].model);
+  }
+  if (starts.empty()) throw NumericalError("bonl: identification failed from every start: " + failures);
   return refine_output_error(starts, records, options.refine_iterations);
 }
 }  // namespace detail

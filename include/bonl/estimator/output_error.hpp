@@ -196,8 +196,7 @@ Model refine_output_error(const std::vector<Model>& starts, const Records<typena
     detail::require(candidate.num_params() == starts.front().num_params(),
                     "starts must all have the same structure (starts[" + std::to_string(i) + "] differs)");
     typename Model::OutputErrorTerms checker(candidate);
-    if (!checker.stable(candidate.theta(), Scalar(1)) && candidate.a().allFinite()) {
-      candidate.set_a(detail::reflected_inside(candidate.a(), Scalar(0.999)));
+    if (!checker.stable(candidate.theta(), Scalar(1)) && detail::reflect_poles_inside(candidate, Scalar(0.999))) {
       local.reflected = true;
     }
     costs[i] = detail::simulation_cost(candidate, records, y, simulated, scratch);

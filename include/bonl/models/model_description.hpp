@@ -18,6 +18,7 @@
 #include <string>
 #include <tuple>
 #include <stdexcept>
+#include <type_traits>
 
 #include "../detail/validate.hpp"
 
@@ -102,6 +103,29 @@ struct MapModels;
 template <class... Models, template <class> class F>
 struct MapModels<ModelList<Models...>, F> {
   using type = ModelList<F<Models>...>;
+};
+
+/// Filter<ModelList<A, B>, P>: the models M of the list with P<M>::value, in order (e.g. the models
+/// that have an inverse).
+template <class List, template <class> class P>
+struct FilterModels;
+template <template <class> class P>
+struct FilterModels<ModelList<>, P> {
+  using type = ModelList<>;
+};
+template <class First, class... Rest, template <class> class P>
+struct FilterModels<ModelList<First, Rest...>, P> {
+ private:
+  template <class List>
+  struct Prepend;
+  template <class... Kept>
+  struct Prepend<ModelList<Kept...>> {
+    using type = ModelList<First, Kept...>;
+  };
+  using Tail = typename FilterModels<ModelList<Rest...>, P>::type;
+
+ public:
+  using type = std::conditional_t<P<First>::value, typename Prepend<Tail>::type, Tail>;
 };
 
 /// A model of type Model at the given orders (its constructor, called with them in order).

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstddef>
 #include <limits>
+#include <type_traits>
 
 namespace bonl {
 
@@ -28,19 +30,69 @@ Eigen::Matrix<std::complex<typename A::Scalar>, Eigen::Dynamic, 1> denominator_p
   return companion.eigenvalues();
 }
 
-/// The largest pole magnitude of `model`'s linear block: < 1 stable, >= 1 not; near 1 barely damped.
+namespace detail {
+
+/// How many linear blocks a model has: Model::kLinearBlocks (the Wiener-Hammerstein model's two), or one.
+template <class Model, class = void>
+struct linear_block_count : std::integral_constant<std::size_t, 1> {};
+template <class Model>
+struct linear_block_count<Model, std::void_t<decltype(Model::kLinearBlocks)>>
+    : std::integral_constant<std::size_t, Model::kLinearBlocks> {};
+
+/// The denominator a_1..a_na of the model's linear block i: a() where it has one block.
+template <class Model>
+typename Model::VectorX denominator(const Model& model, std::size_t i) {
+  if constexpr (linear_block_count<Model>::value > 1) {
+    return model.denominator(i);
+  } else {
+    (void)i;
+    return model.a();
+  }
+}
+
+/// Sets the denominator of the model's linear block i: set_a() where it has one block.
+template <class Model, typename A>
+void set_denominator(Model& model, std::size_t i, const A& a) {
+  if constexpr (linear_block_count<Model>::value > 1) {
+    model.set_denominator(i, a);
+  } else {
+    (void)i;
+    model.set_a(a);
+  }
+}
+
+}  // namespace detail
+
+/// The largest pole magnitude of `model`'s linear blocks: < 1 stable, >= 1 not; near 1 barely damped.
 /// Infinity where the coefficients are not finite.
 template <class Model>
 double pole_radius(const Model& model) {
-  const auto a = model.a();
-  if (!a.allFinite()) return std::numeric_limits<double>::infinity();
-  const auto poles = denominator_poles(a);
   double radius = 0.0;
-  for (Eigen::Index i = 0; i < poles.size(); ++i) radius = std::max(radius, static_cast<double>(std::abs(poles[i])));
+  for (std::size_t block = 0; block < detail::linear_block_count<Model>::value; ++block) {
+    const auto a = detail::denominator(model, block);
+    if (!a.allFinite()) return std::numeric_limits<double>::infinity();
+    const auto poles = denominator_poles(a);
+    for (Eigen::Index i = 0; i < poles.size(); ++i) radius = std::max(radius, static_cast<double>(std::abs(poles[i])));
+  }
   return radius;
 }
 
 namespace detail {
+
+/// [1, c_1, ..., c_n]: the coefficients of prod_i (1 - roots_i z^-1), real where the complex roots
+/// come in conjugate pairs (their imaginary parts, rounding, are dropped).
+template <typename Scalar>
+Eigen::Matrix<Scalar, Eigen::Dynamic, 1> monic_from_roots(
+    const Eigen::Matrix<std::complex<Scalar>, Eigen::Dynamic, 1>& roots) {
+  using Complex = std::complex<Scalar>;
+  Eigen::Matrix<Complex, Eigen::Dynamic, 1> product =
+      Eigen::Matrix<Complex, Eigen::Dynamic, 1>::Zero(roots.size() + 1);
+  product[0] = Complex(1);
+  for (Eigen::Index i = 0; i < roots.size(); ++i) {
+    for (Eigen::Index j = i + 1; j >= 1; --j) product[j] -= roots[i] * product[j - 1];
+  }
+  return product.real();
+}
 
 /// The denominator a_1..a_na with every pole of magnitude >= 1 reflected to 1 / conj(z) and, if that
 /// leaves it on the unit circle, moved to magnitude `limit`. Stable denominators come back as they were.
@@ -48,7 +100,6 @@ template <typename A>
 Eigen::Matrix<typename A::Scalar, Eigen::Dynamic, 1> reflected_inside(const Eigen::MatrixBase<A>& a,
                                                                      typename A::Scalar limit) {
   using Scalar = typename A::Scalar;
-  using Complex = std::complex<Scalar>;
   auto poles = denominator_poles(a);
   bool changed = false;
   for (Eigen::Index i = 0; i < poles.size(); ++i) {
@@ -61,13 +112,23 @@ Eigen::Matrix<typename A::Scalar, Eigen::Dynamic, 1> reflected_inside(const Eige
     }
   }
   if (!changed) return a;
-  // prod_i (1 - z_i z^-1): the coefficients of z^-1..z^-na; conjugate pairs make them real.
-  Eigen::Matrix<Complex, Eigen::Dynamic, 1> product = Eigen::Matrix<Complex, Eigen::Dynamic, 1>::Zero(a.size() + 1);
-  product[0] = Complex(1);
-  for (Eigen::Index i = 0; i < poles.size(); ++i) {
-    for (Eigen::Index j = i + 1; j >= 1; --j) product[j] -= poles[i] * product[j - 1];
+  return monic_from_roots(poles).tail(a.size());
+}
+
+/// Every linear block of `model` with a finite denominator reflected inside (reflected_inside, poles
+/// of magnitude >= 1 to 1 / conj(z), at most `limit`); true if one changed.
+template <class Model>
+bool reflect_poles_inside(Model& model, typename Model::Scalar limit) {
+  bool changed = false;
+  for (std::size_t block = 0; block < linear_block_count<Model>::value; ++block) {
+    const typename Model::VectorX a = denominator(model, block);
+    if (!a.allFinite()) continue;
+    const typename Model::VectorX reflected = reflected_inside(a, limit);
+    if (reflected == a) continue;
+    set_denominator(model, block, reflected);
+    changed = true;
   }
-  return product.tail(a.size()).real();
+  return changed;
 }
 
 }  // namespace detail

@@ -1,0 +1,397 @@
+#pragma once
+// Wiener-Hammerstein model: a linear block, a static polynomial, a second linear block
+//   x1(k) = -sum_{j=1..na1} a1_j x1(k-j) + sum_{i=0..nb1} b1_i u(k-nk-i),
+//   w(k)  = x1(k) + sum_{m=2..r} f_m x1(k)^m,
+//   y(k)  = -sum_{j=1..na2} a2_j y(k-j) + sum_{i=0..nb2} b2_i w(k-i),
+// normalised to f_1 = 1 and b2_0 = 1 (the gain lives in b1; the whole delay in the first block, where
+// a delay commutes with the static polynomial, so that b2_0 is not zero).
+// Parameters: b1_0..b1_nb1, a1_1..a1_na1, f_2..f_r, b2_1..b2_nb2, a2_1..a2_na2.
+// Key-term form, separating twice (w's key term x1, then y's key term w(k) with b2_0 = 1):
+//   y(k) = [u lags] . b1 - [x1 lags] . a1 + sum_{m>=2} f_m x1(k)^m + [w lags] . b2 - [y lags] . a2,
+// linear in theta once x1 and w are estimated. estimator/wiener_hammerstein_start.hpp starts
+// identify() from the best linear approximation.
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "../blocks/linear_block.hpp"
+#include "../blocks/output_polynomial.hpp"
+#include "../detail/history.hpp"
+#include "../detail/stability.hpp"
+#include "../detail/validate.hpp"
+#include "detail/linear_terms.hpp"
+#include "detail/model_runs.hpp"
+#include "detail/simulated_lags.hpp"
+#include "model_description.hpp"
+#include "model_steps.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int Na1_ = Eigen::Dynamic, int Nb1_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
+          int Na2_ = Eigen::Dynamic, int Nb2_ = Eigen::Dynamic>
+class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na1_, Nb1_, R_, Na2_, Nb2_>> {
+  static constexpr int kFirstParams = detail::add_sizes(detail::poly_size(Nb1_), Na1_);  // b1, a1
+  static constexpr int kFrontParams =
+      detail::add_sizes(kFirstParams, R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1);  // and f
+
+ public:
+  using Scalar = Scalar_;
+  static constexpr int kNumParams = detail::add_sizes(kFrontParams, detail::add_sizes(Nb2_, Na2_));
+  static constexpr bool kHasInternalVariables = true;
+  static constexpr const char* kName = "WienerHammerstein";
+  static constexpr ModelDescription<6, 5> kDescription{
+      kName,
+      "Wiener-Hammerstein model: the linear block x1 = z^-nk B1/A1 u, then w = sum_{m=1..r} f_m x1^m (f_1 = 1), "
+      "then the linear block y = B2/A2 w (b2_0 = 1).",
+      {{{"na1", 1, detail::kMaxOrder, Na1_, "poles of the first linear block (na1 >= 1)"},
+        {"nb1", 0, detail::kMaxOrder, Nb1_, "B1 has nb1 + 1 coefficients b1_0..b1_nb1"},
+        {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples (in the first block)"},
+        {"r", 2, 32, R_, "degree of the static polynomial (2..32)"},
+        {"na2", 1, detail::kMaxOrder, Na2_, "poles of the second linear block (na2 >= 1)"},
+        {"nb2", 0, detail::kMaxOrder, Nb2_, "B2 has nb2 + 1 coefficients b2_0..b2_nb2, b2_0 = 1"}}},
+      {{{"b1", ParameterShape::Vector, 0, "b1_0..b1_nb1 (free: f_1 = b2_0 = 1 fix the other gains)", nullptr,
+         false, {1, 0, -1, 0}},
+        {"a1", ParameterShape::Vector, 1, "a1_1..a1_na1", nullptr, false, {}},
+        {"f", ParameterShape::Vector, 1, "f_1..f_r with f_1 = 1",
+         "the Wiener-Hammerstein model is normalised so that f_1 = 1", false, {1, -1, 0, 0}},
+        {"b2", ParameterShape::Vector, 0, "b2_0..b2_nb2 with b2_0 = 1",
+         "the Wiener-Hammerstein model is normalised so that b2_0 = 1", false, {}},
+        {"a2", ParameterShape::Vector, 1, "a2_1..a2_na2", nullptr, false, {}}}}};
+  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using First = LinearBlock<Scalar, Na1_, Nb1_>;
+  using Second = LinearBlock<Scalar, Na2_, Nb2_>;
+  using Middle = OutputPolynomial<Scalar, R_>;
+  /// Both linear blocks' denominators: what pole_radius() and the refinement's stabilisation look at.
+  static constexpr std::size_t kLinearBlocks = 2;
+
+  WienerHammerstein(Eigen::Index na1, Eigen::Index nb1, Eigen::Index nk, Eigen::Index r, Eigen::Index na2,
+                    Eigen::Index nb2)
+      : m_na1(na1), m_nb1(nb1), m_nk(nk), m_r(r), m_na2(na2), m_nb2(nb2) {
+    detail::require_order(na1, 1, "na1");
+    detail::require_order(nb1, 0, "nb1");
+    detail::require_order(nk, 0, "nk");
+    detail::require_order(r, 2, "r (static polynomial degree)");
+    detail::require(r <= 32, "r (static polynomial degree) must be <= 32");
+    detail::require_order(na2, 1, "na2");
+    detail::require_order(nb2, 0, "nb2");
+    detail::require_matches_template(na1, Na1_, "na1");
+    detail::require_matches_template(nb1, Nb1_, "nb1");
+    detail::require_matches_template(r, R_, "r");
+    detail::require_matches_template(na2, Na2_, "na2");
+    detail::require_matches_template(nb2, Nb2_, "nb2");
+    m_theta = Params::Zero(nb1 + 1 + na1 + r - 1 + nb2 + na2);
+  }
+
+  Eigen::Index na1() const noexcept { return m_na1; }
+  Eigen::Index nb1() const noexcept { return m_nb1; }
+  Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index r() const noexcept { return m_r; }
+  Eigen::Index na2() const noexcept { return m_na2; }
+  Eigen::Index nb2() const noexcept { return m_nb2; }
+  Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  std::array<Eigen::Index, 6> orders() const noexcept { return {m_na1, m_nb1, m_nk, m_r, m_na2, m_nb2}; }
+
+  const Params& theta() const noexcept { return m_theta; }
+  template <typename T>
+  void set_theta(const Eigen::MatrixBase<T>& theta) {
+    detail::assign_checked(m_theta, theta, "theta");
+  }
+
+  VectorX b1() const { return m_theta.head(m_nb1 + 1); }
+  VectorX a1() const { return m_theta.segment(first_a(), m_na1); }
+  /// f_1..f_r with f_1 = 1.
+  VectorX f() const { return with_leading_one(m_theta.segment(first_f(), m_r - 1)); }
+  /// b2_0..b2_nb2 with b2_0 = 1.
+  VectorX b2() const { return with_leading_one(m_theta.segment(first_b2(), m_nb2)); }
+  VectorX a2() const { return m_theta.segment(first_a2(), m_na2); }
+  template <typename T>
+  void set_b1(const Eigen::MatrixBase<T>& b1) {
+    detail::assign_checked(m_theta.head(m_nb1 + 1), b1, "b1");
+  }
+  template <typename T>
+  void set_a1(const Eigen::MatrixBase<T>& a1) {
+    detail::assign_checked(m_theta.segment(first_a(), m_na1), a1, "a1");
+  }
+  template <typename T>
+  void set_f(const Eigen::MatrixBase<T>& f) {
+    set_normalised(f, m_r, first_f(), "f", "f[0] (f_1)", 2);
+  }
+  template <typename T>
+  void set_b2(const Eigen::MatrixBase<T>& b2) {
+    set_normalised(b2, m_nb2 + 1, first_b2(), "b2", "b2[0] (b2_0)", 3);
+  }
+  template <typename T>
+  void set_a2(const Eigen::MatrixBase<T>& a2) {
+    detail::assign_checked(m_theta.segment(first_a2(), m_na2), a2, "a2");
+  }
+
+  /// The parameter block kDescription.parameters[i]: b1, a1, f, b2, a2.
+  VectorX parameter(std::size_t i) const {
+    switch (i) {
+      case 0: return b1();
+      case 1: return a1();
+      case 2: return f();
+      case 3: return b2();
+      case 4: return a2();
+      default: detail::no_such_parameter(kName, i);
+    }
+  }
+  void set_parameter(std::size_t i, const VectorX& value) {
+    switch (i) {
+      case 0: return set_b1(value);
+      case 1: return set_a1(value);
+      case 2: return set_f(value);
+      case 3: return set_b2(value);
+      case 4: return set_a2(value);
+      default: detail::no_such_parameter(kName, i);
+    }
+  }
+
+  /// Linear block i (0: B1/A1 with the delay, 1: B2/A2) and its denominator.
+  First first_block() const {
+    First block(m_na1, m_nb1, m_nk);
+    block.set_a(a1());
+    block.set_b(b1());
+    return block;
+  }
+  Second second_block() const {
+    Second block(m_na2, m_nb2, 0);
+    block.set_a(a2());
+    block.set_b(b2());
+    return block;
+  }
+  VectorX denominator(std::size_t i) const { return i == 0 ? a1() : a2(); }
+  template <typename T>
+  void set_denominator(std::size_t i, const Eigen::MatrixBase<T>& a) {
+    if (i == 0) return set_a1(a);
+    set_a2(a);
+  }
+
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  template <typename U>
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+    First first = first_block();
+    Second second = second_block();
+    const VectorX fv = f();
+    y.resize(u.size());
+    for (Eigen::Index k = 0; k < u.size(); ++k) {
+      y[k] = second.step(Middle::evaluate(fv, first.step(u[k])));
+      if (!std::isfinite(y[k])) return false;
+    }
+    return true;
+  }
+
+  /// Where the recursive estimator starts (all zero).
+  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
+  /// Projects an estimate onto the model's valid set: every theta is valid.
+  void constrain(Params& /*theta*/) const noexcept {}
+
+  /// Key-term form: regressor [u(k-nk..k-nk-nb1), -x1(k-1..k-na1), x1(k)^2..x1(k)^r, w(k-1..k-nb2),
+  /// -y(k-1..k-na2)], target y(k), with x1(k) the a-priori estimate [u lags, -x1 lags] . [b1, a1] and
+  /// w(k) = x1(k) + sum f_m x1(k)^m. The past x1 and w are the model's own in both methods: mapping
+  /// the measured y back to w would run the inverse of B2, whose zeros may lie on the unit circle (a
+  /// notch filter's do). The equation-error method stores them with the step's theta, the paper's
+  /// a posteriori at the next step (eq. 24); the y lags are measured (the model's prediction where y
+  /// is NaN). predict() runs the equation-error form.
+  class KeyTerms {
+   public:
+    KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
+        : m_first(model.na1(), model.nb1(), model.nk()), m_w(model.nb2()), m_y(model.na2()), m_method(method),
+          m_first_size(model.nb1() + 1 + model.na1()), m_r(model.r()), m_nb2(model.nb2()), m_na2(model.na2()),
+          m_phi(Params::Zero(model.num_params())) {}
+    void reset() noexcept {
+      m_first.reset();
+      m_w.clear();
+      m_y.clear();
+      m_pending = false;
+    }
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      if (m_pending) store(theta, first_part(theta));
+      m_first.begin(u, m_phi);
+      const Scalar x1 = first_part(theta);
+      Scalar w = x1;
+      Scalar power = x1;
+      for (Eigen::Index m = 2; m <= m_r; ++m) {
+        power *= x1;
+        m_phi[m_first_size + m - 2] = power;
+        w += theta[m_first_size + m - 2] * power;
+      }
+      const Eigen::Index second = m_first_size + m_r - 1;
+      for (Eigen::Index i = 0; i < m_nb2; ++i) m_phi[second + i] = m_w[i];
+      for (Eigen::Index j = 0; j < m_na2; ++j) m_phi[second + m_nb2 + j] = -m_y[j];
+      const Eigen::Index n2 = m_nb2 + m_na2;
+      const Scalar prediction = w + m_phi.tail(n2).dot(theta.tail(n2));
+      if (m_method == KeyTermMethod::EquationError) {
+        m_first.end(std::isnan(y) ? x1 : measured_x1(theta, y, x1, prediction - w));
+        m_w.push(w);
+      } else {
+        m_pending = true;
+      }
+      m_y.push(std::isnan(y) ? prediction : y);
+      return {m_phi, y, prediction, x1, true};
+    }
+
+   private:
+    /// x1(k) = [u lags, -x1 lags] . [b1, a1], from the regressor's first part.
+    Scalar first_part(const Params& theta) const noexcept {
+      return m_phi.template head<kFirstParams>(m_first_size).dot(theta.template head<kFirstParams>(m_first_size));
+    }
+    /// The x1(k) the measured y(k) says: w(k) = y(k) - (the second block's part from the past,
+    /// `past` = [w lags] . b2 - [y lags] . a2, the model's own w lags), mapped back through the
+    /// polynomial (Newton from the model's x1, the branch nearest it; where f cannot be inverted
+    /// there, the model's x1). One step of B2's inverse only: the past w stay the model's, so B2's
+    /// zeros, which may lie on the unit circle, are never inverted.
+    Scalar measured_x1(const Params& theta, Scalar y, Scalar x1_model, Scalar past) const noexcept {
+      Scalar f_buffer[32];
+      f_buffer[0] = Scalar(1);
+      for (Eigen::Index m = 2; m <= m_r; ++m) f_buffer[m - 1] = theta[m_first_size + m - 2];
+      const Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>> f(f_buffer, m_r);
+      Scalar x1 = x1_model;
+      Middle::invert(f, y - past, x1_model, x1);
+      return x1;
+    }
+    /// Stores x1 and its w as the newest lags.
+    void store(const Params& theta, Scalar x1) noexcept {
+      Scalar w = x1;
+      Scalar power = x1;
+      for (Eigen::Index m = 2; m <= m_r; ++m) {
+        power *= x1;
+        w += theta[m_first_size + m - 2] * power;
+      }
+      m_first.end(x1);
+      m_w.push(w);
+      m_pending = false;
+    }
+
+    detail::LinearKeyTerms<Scalar, Na1_> m_first;
+    detail::History<Scalar> m_w;  // w(k-1..k-nb2)
+    detail::History<Scalar> m_y;  // y(k-1..k-na2)
+    KeyTermMethod m_method;
+    Eigen::Index m_first_size, m_r, m_nb2, m_na2;
+    Params m_phi;
+    bool m_pending = false;  // the paper's method: the previous sample's x1 and w wait to be stored
+  };
+
+  /// The output-error method's view: one step of the free run with its sensitivities. The first
+  /// block's as the Wiener model's (detail::LinearOutputError); dw/d[b1, a1] = f'(x1) dx1/d[b1, a1],
+  /// dw/df_m = x1^m; and through the second block
+  ///   dy(k) = dw(k) + sum_i b2_i dw(k-i) + [w(k-i) at b2_i] + [-y(k-j) at a2_j] - sum_j a2_j dy(k-j),
+  /// so the past w and their sensitivities are kept (nb2 of them) as the past y and theirs (SimulatedLags).
+  class OutputErrorTerms {
+   public:
+    using FirstSensitivity = Eigen::Matrix<Scalar, kFirstParams, 1>;
+    using FrontSensitivity = Eigen::Matrix<Scalar, kFrontParams, 1>;
+
+    explicit OutputErrorTerms(const WienerHammerstein& model, Eigen::Index /*hold*/ = 0)
+        : m_first(model.na1(), model.nb1(), model.nk(), model.nb1() + 1 + model.na1()),
+          m_y(model.na2(), model.num_params()), m_r(model.r()), m_nb2(model.nb2()), m_na2(model.na2()),
+          m_first_size(model.nb1() + 1 + model.na1()), m_front_size(m_first_size + model.r() - 1),
+          m_dx(FirstSensitivity::Zero(m_first_size)), m_dw(FrontSensitivity::Zero(m_front_size)),
+          m_w_lags(Eigen::Matrix<Scalar, Nb2_, 1>::Zero(model.nb2())),
+          m_dw_lags(Eigen::Matrix<Scalar, kFrontParams, Nb2_>::Zero(m_front_size, model.nb2())),
+          m_work(Eigen::Matrix<Scalar, Na2_, 1>::Zero(model.na2())), m_psi(Params::Zero(model.num_params())) {}
+    void reset() noexcept {
+      m_first.reset();
+      m_y.reset();
+      m_dx.setZero();
+      m_w_lags.setZero();
+      m_dw_lags.setZero();
+    }
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
+      const Scalar x1 = m_first.step(theta, u, m_dx);
+      Scalar w = x1;
+      Scalar slope = Scalar(1);
+      Scalar power = x1;  // x1^(m-1), then x1^m
+      for (Eigen::Index m = 2; m <= m_r; ++m) {
+        const Scalar fm = theta[m_first_size + m - 2];
+        slope += Scalar(m) * fm * power;
+        power *= x1;
+        w += fm * power;
+        m_dw[m_first_size + m - 2] = power;
+      }
+      m_dw.head(m_first_size) = slope * m_dx;
+      const Eigen::Index second = m_front_size;
+      auto front = m_psi.head(m_front_size);
+      front = m_dw;
+      Scalar y = w;
+      for (Eigen::Index i = 0; i < m_nb2; ++i) {
+        const Scalar b2 = theta[second + i];
+        front += b2 * m_dw_lags.col(i);
+        m_psi[second + i] = m_w_lags[i];
+        y += b2 * m_w_lags[i];
+      }
+      y += m_y.apply(theta.segment(second + m_nb2, m_na2), m_psi, second + m_nb2);
+      m_w = w;
+      m_output = y;
+      return {y, m_psi, x1};
+    }
+    void accept() noexcept {
+      m_first.commit(m_dx);
+      for (Eigen::Index i = m_nb2 - 1; i > 0; --i) {
+        m_w_lags[i] = m_w_lags[i - 1];
+        m_dw_lags.col(i) = m_dw_lags.col(i - 1);
+      }
+      if (m_nb2 > 0) {
+        m_w_lags[0] = m_w;
+        m_dw_lags.col(0) = m_dw;
+      }
+      m_y.push(m_output, m_psi);
+    }
+    void accept(const Params& delta) noexcept {
+      accept();
+      m_first.correct(delta.template head<kFirstParams>(m_first_size));
+      for (Eigen::Index i = 0; i < m_nb2; ++i) m_w_lags[i] += m_dw_lags.col(i).dot(delta.head(m_front_size));
+      m_y.correct(delta);
+    }
+    bool stable(const Params& theta, Scalar radius) noexcept {
+      return m_first.stable(theta, radius) &&
+             detail::roots_inside(theta.segment(m_front_size + m_nb2, m_na2), radius, m_work);
+    }
+
+   private:
+    detail::LinearOutputError<Scalar, Na1_, kFirstParams> m_first;
+    detail::SimulatedLags<Scalar, Na2_, kNumParams> m_y;
+    Eigen::Index m_r, m_nb2, m_na2, m_first_size, m_front_size;
+    FirstSensitivity m_dx;   // d x1(k) / d [b1, a1]
+    FrontSensitivity m_dw;   // d w(k) / d [b1, a1, f]
+    Eigen::Matrix<Scalar, Nb2_, 1> m_w_lags;                 // w(k-1..k-nb2)
+    Eigen::Matrix<Scalar, kFrontParams, Nb2_> m_dw_lags;     // their sensitivities, one column each
+    Eigen::Matrix<Scalar, Na2_, 1> m_work;                   // for the stability test
+    Params m_psi;
+    Scalar m_w = Scalar(0), m_output = Scalar(0);
+  };
+
+ private:
+  Eigen::Index first_a() const noexcept { return m_nb1 + 1; }
+  Eigen::Index first_f() const noexcept { return m_nb1 + 1 + m_na1; }
+  Eigen::Index first_b2() const noexcept { return first_f() + m_r - 1; }
+  Eigen::Index first_a2() const noexcept { return first_b2() + m_nb2; }
+
+  template <typename T>
+  static VectorX with_leading_one(const Eigen::MatrixBase<T>& tail) {
+    VectorX out(tail.size() + 1);
+    out[0] = Scalar(1);
+    out.tail(tail.size()) = tail;
+    return out;
+  }
+  /// A block whose first entry is fixed to 1 (f, b2): checked, then its other entries into theta.
+  template <typename T>
+  void set_normalised(const Eigen::MatrixBase<T>& value, Eigen::Index size, Eigen::Index first, const char* name,
+                      const char* first_name, std::size_t block) {
+    detail::require_size(value, size, name);
+    detail::require_finite(value, name);
+    detail::require(value[0] == 1,
+                    std::string(first_name) + " must be 1: " + kDescription.parameters[block].normalised);
+    m_theta.segment(first, size - 1) = value.tail(size - 1);
+  }
+
+  Params m_theta;
+  Eigen::Index m_na1, m_nb1, m_nk, m_r, m_na2, m_nb2;
+};
+
+}  // namespace bonl

@@ -64,6 +64,17 @@ class Benchmark:
     #: identify's options; several sets are candidates like the orders (each family keeps the set
     #: whose chosen structure scores best on the held-out estimation data)
     identify: List[Dict[str, object]] = dataclasses.field(default_factory=lambda: [{}])
+    #: a family's own grid, by its name, where the shared one does not fit it (the Wiener-Hammerstein
+    #: model's polynomial degree and its two blocks' orders); a family whose orders neither grid names
+    #: is not run on this data set
+    family_orders: Dict[str, Dict[str, Sequence[int]]] = dataclasses.field(default_factory=dict)
+
+    def grid_of(self, family) -> Optional[Dict[str, Sequence[int]]]:
+        """The orders ``family`` is selected over here, or None where this data set does not run it."""
+        orders = {**self.orders, **self.family_orders.get(family.__name__, {})}
+        if not all(name in orders for name in family.ORDERS):
+            return None
+        return {name: orders[name] for name in family.ORDERS}
 
     @property
     def window(self) -> int:
@@ -72,10 +83,6 @@ class Benchmark:
         if len(windows) != 1:
             raise ValueError(f"{self.name}: the tests have different windows {sorted(windows)}")
         return windows.pop()
-
-
-def _grid(model_class, orders):
-    return bonl.grid(model_class, **{name: orders[name] for name in model_class.ORDERS})
 
 
 def run(benchmark: Benchmark, families: Optional[Sequence[type]] = None) -> dict:
@@ -89,7 +96,10 @@ def run(benchmark: Benchmark, families: Optional[Sequence[type]] = None) -> dict
 def _run(benchmark, families):
     rows = []
     for family in families or bonl.MODELS:
-        candidates = _grid(family, benchmark.orders)
+        orders = benchmark.grid_of(family)
+        if orders is None:
+            continue
+        candidates = bonl.grid(family, **orders)
         start = time.perf_counter()
         selections = [(bonl.select(candidates, benchmark.estimation, window=benchmark.window, **options), options)
                       for options in benchmark.identify]
@@ -116,6 +126,9 @@ def _run(benchmark, families):
         "data_set": benchmark.name,
         "unit": benchmark.unit,
         "orders": {k: list(v) for k, v in benchmark.orders.items()},
+        **({"family_orders": {family: {k: list(v) for k, v in grid.items()}
+                              for family, grid in benchmark.family_orders.items()}}
+           if benchmark.family_orders else {}),
         "identify": benchmark.identify,
         "tests": [{"name": t.name, "samples": int(t.u.size), "window": t.window, "skip": t.skip}
                   for t in benchmark.tests],
@@ -127,8 +140,14 @@ def _run(benchmark, families):
 def main(make: Callable[[], Benchmark]) -> None:
     parser = argparse.ArgumentParser(description=(make.__doc__ or "").strip())
     parser.add_argument("--json", type=pathlib.Path, help="write the results here")
+    parser.add_argument("--model", nargs=2, metavar=("FAMILY", "FILE"),
+                        help="also write that family's chosen model as a bonl model file")
     args = parser.parse_args()
     results = run(make())
     if args.json:
         args.json.parent.mkdir(parents=True, exist_ok=True)
         args.json.write_text(json.dumps(results, indent=1) + "\n")
+    if args.model:
+        family, path = args.model
+        row = next(row for row in results["rows"] if row["model"] == family)
+        pathlib.Path(path).write_text(json.dumps(row["json"], indent=1) + "\n")

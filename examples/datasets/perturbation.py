@@ -56,6 +56,8 @@ def selections(tanks, chosen):
     rows = {}
     unperturbed = {row["model"]: row for row in chosen["rows"]}
     for family in bonl.MODELS:
+        if family.__name__ not in unperturbed:  # not run on this data set (Benchmark.grid_of)
+            continue
         runs = [unperturbed[family.__name__]]
         for seed in SEEDS:
             again = benchmark.Benchmark(**{**tanks.__dict__, "estimation": perturbed(tanks.estimation, seed)})

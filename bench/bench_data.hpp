@@ -110,12 +110,16 @@ Model make_known_model() {
   Model model = make_structure<Model>();
   for (std::size_t i = 0; i < Model::kDescription.parameters.size(); ++i) {
     const std::string name = Model::kDescription.parameters[i].name;
-    const Eigen::VectorXd value = name == "b"   ? true_b()
-                                  : name == "a" ? true_a()
-                                  : name == "f" ? true_f()
-                                  : name == "p" ? true_p()
-                                  : name == "q" ? true_q()
-                                                : Eigen::VectorXd::Constant(1, kTrueC);
+    // The Wiener-Hammerstein model: both blocks the known linear block's (b1 at a tenth, so that the
+    // polynomial sees moderate x1), its normalised f the output polynomial's q.
+    const bool normalised_f = name == "f" && Model::kDescription.parameters[i].normalised != nullptr;
+    const Eigen::VectorXd value = name == "b" || name == "b2" ? true_b()
+                                  : name == "b1"             ? Eigen::VectorXd(0.1 * true_b())
+                                  : name == "a" || name == "a1" || name == "a2" ? true_a()
+                                  : normalised_f || name == "q"                 ? true_q()
+                                  : name == "f"                                 ? true_f()
+                                  : name == "p"                                 ? true_p()
+                                                                                : Eigen::VectorXd::Constant(1, kTrueC);
     model.set_parameter(i, value.cast<S>());
   }
   return model;

@@ -148,3 +148,12 @@ def test_the_wiener_hammerstein_model_file_simulates_the_record_from_rest_to_its
     row = next(row for row in _results("wiener_hammerstein")["rows"] if row["model"] == "WienerHammerstein")
     assert rms == pytest.approx(row["test_rms"]["samples 101 001-188 000"], rel=1e-9)
     assert rms <= 1e-3
+
+
+def test_the_prose_quotes_the_wiener_hammerstein_figure_the_results_give():
+    """README.md, docs/measured_data.md and docs/algorithm.md quote the W-H model's test RMS in mV in
+    their text (not in a generated table): it must be the committed results file's, to three decimals."""
+    row = next(row for row in _results("wiener_hammerstein")["rows"] if row["model"] == "WienerHammerstein")
+    quoted = "%.3f mV" % (row["test_rms"]["samples 101 001-188 000"] * 1e3)
+    for page in (ROOT / "README.md", ROOT / "docs" / "measured_data.md", ROOT / "docs" / "algorithm.md"):
+        assert quoted in page.read_text(), f"{page.name} should quote {quoted}"

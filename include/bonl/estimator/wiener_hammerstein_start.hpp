@@ -182,6 +182,7 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
   const VectorX y = detail::stacked_outputs(records);
   const Eigen::Index samples = y.size();
   MatrixX regressors(samples, r);
+  VectorX x1(samples);
   for (const auto& poles : pole_subsets) {
     for (const auto& zeros : zero_subsets) {
       typename Model::First first(na1, nb1, structure.nk());
@@ -194,25 +195,27 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
       b2[0] = Scalar(1);
       b2.tail(nb2) = detail::coefficients_of(zero_groups, zeros, false).template cast<Scalar>();
       first.set_b(b1);
-      // Column m - 1: G2 applied to (x1 / scale)^m, x1 = G1 u, each record from rest; x1 divided by
-      // its RMS keeps the powers' columns of comparable size for the least squares.
-      Scalar squares = Scalar(0);
-      for (const auto& record : records) {
-        first.reset();
-        for (Eigen::Index k = 0; k < record.u.size(); ++k) squares += std::pow(first.step(record.u[k]), 2);
-      }
-      const Scalar scale = std::sqrt(squares / Scalar(samples));
-      if (!(scale > Scalar(0)) || !std::isfinite(scale)) continue;
+      // x1 = G1 u, each record from rest; divided by its RMS, so that the powers' columns are of
+      // comparable size for the least squares.
       Eigen::Index row = 0;
       for (const auto& record : records) {
         first.reset();
+        for (Eigen::Index k = 0; k < record.u.size(); ++k) x1[row++] = first.step(record.u[k]);
+      }
+      Scalar squares = Scalar(0);
+      for (Eigen::Index k = 0; k < samples; ++k) squares += std::pow(x1[k], 2);
+      const Scalar scale = std::sqrt(squares / Scalar(samples));
+      if (!(scale > Scalar(0)) || !std::isfinite(scale)) continue;
+      // Column m - 1: G2 applied to (x1 / scale)^m, each record from rest.
+      second.set_b(b2);
+      row = 0;
+      for (const auto& record : records) {
         std::vector<typename Model::Second> powers(static_cast<std::size_t>(r), second);
-        for (auto& block : powers) block.set_b(b2);
         for (Eigen::Index k = 0; k < record.u.size(); ++k, ++row) {
-          const Scalar x1 = first.step(record.u[k]) / scale;
+          const Scalar scaled = x1[row] / scale;
           Scalar power = Scalar(1);
           for (Eigen::Index m = 0; m < r; ++m) {
-            power *= x1;
+            power *= scaled;
             regressors(row, m) = powers[static_cast<std::size_t>(m)].step(power);
           }
         }

@@ -24,6 +24,7 @@
 #include "../detail/validate.hpp"
 #include "detail/linear_terms.hpp"
 #include "detail/model_runs.hpp"
+#include "detail/output_polynomial_terms.hpp"
 #include "detail/simulated_lags.hpp"
 #include "model_description.hpp"
 #include "model_steps.hpp"
@@ -201,9 +202,10 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   class KeyTerms {
    public:
     KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
-        : m_first(model.na1(), model.nb1(), model.nk()), m_w(model.nb2()), m_y(model.na2()), m_method(method),
-          m_first_size(model.nb1() + 1 + model.na1()), m_r(model.r()), m_nb2(model.nb2()), m_na2(model.na2()),
-          m_phi(Params::Zero(model.num_params())) {}
+        : m_first(model.na1(), model.nb1(), model.nk()),
+          m_middle(detail::OutputPolynomialTerms<Scalar>::starting_at(model.r(), model.first_f())),
+          m_w(model.nb2()), m_y(model.na2()), m_method(method), m_first_size(model.nb1() + 1 + model.na1()),
+          m_second(model.first_b2()), m_nb2(model.nb2()), m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_first.reset();
       m_w.clear();
@@ -214,16 +216,10 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       if (m_pending) store(theta, first_part(theta));
       m_first.begin(u, m_phi);
       const Scalar x1 = first_part(theta);
-      Scalar w = x1;
-      Scalar power = x1;
-      for (Eigen::Index m = 2; m <= m_r; ++m) {
-        power *= x1;
-        m_phi[m_first_size + m - 2] = power;
-        w += theta[m_first_size + m - 2] * power;
-      }
-      const Eigen::Index second = m_first_size + m_r - 1;
-      for (Eigen::Index i = 0; i < m_nb2; ++i) m_phi[second + i] = m_w[i];
-      for (Eigen::Index j = 0; j < m_na2; ++j) m_phi[second + m_nb2 + j] = -m_y[j];
+      const Scalar w = m_middle.output(theta, x1);
+      m_middle.regress(x1, m_phi);
+      for (Eigen::Index i = 0; i < m_nb2; ++i) m_phi[m_second + i] = m_w[i];
+      for (Eigen::Index j = 0; j < m_na2; ++j) m_phi[m_second + m_nb2 + j] = -m_y[j];
       const Eigen::Index n2 = m_nb2 + m_na2;
       const Scalar prediction = w + m_phi.tail(n2).dot(theta.tail(n2));
       if (m_method == KeyTermMethod::EquationError) {
@@ -247,32 +243,21 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     /// there, the model's x1). One step of B2's inverse only: the past w stay the model's, so B2's
     /// zeros, which may lie on the unit circle, are never inverted.
     Scalar measured_x1(const Params& theta, Scalar y, Scalar x1_model, Scalar past) const noexcept {
-      Scalar f_buffer[32];
-      f_buffer[0] = Scalar(1);
-      for (Eigen::Index m = 2; m <= m_r; ++m) f_buffer[m - 1] = theta[m_first_size + m - 2];
-      const Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>> f(f_buffer, m_r);
-      Scalar x1 = x1_model;
-      Middle::invert(f, y - past, x1_model, x1);
-      return x1;
+      return m_middle.invert(theta, y - past, x1_model);
     }
     /// Stores x1 and its w as the newest lags.
     void store(const Params& theta, Scalar x1) noexcept {
-      Scalar w = x1;
-      Scalar power = x1;
-      for (Eigen::Index m = 2; m <= m_r; ++m) {
-        power *= x1;
-        w += theta[m_first_size + m - 2] * power;
-      }
       m_first.end(x1);
-      m_w.push(w);
+      m_w.push(m_middle.output(theta, x1));
       m_pending = false;
     }
 
     detail::LinearKeyTerms<Scalar, Na1_> m_first;
+    detail::OutputPolynomialTerms<Scalar> m_middle;
     detail::History<Scalar> m_w;  // w(k-1..k-nb2)
     detail::History<Scalar> m_y;  // y(k-1..k-na2)
     KeyTermMethod m_method;
-    Eigen::Index m_first_size, m_r, m_nb2, m_na2;
+    Eigen::Index m_first_size, m_second, m_nb2, m_na2;  // m_second: the index of b2_1
     Params m_phi;
     bool m_pending = false;  // the paper's method: the previous sample's x1 and w wait to be stored
   };
@@ -289,7 +274,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
 
     explicit OutputErrorTerms(const WienerHammerstein& model, Eigen::Index /*hold*/ = 0)
         : m_first(model.na1(), model.nb1(), model.nk(), model.nb1() + 1 + model.na1()),
-          m_y(model.na2(), model.num_params()), m_r(model.r()), m_nb2(model.nb2()), m_na2(model.na2()),
+          m_middle(detail::OutputPolynomialTerms<Scalar>::starting_at(model.r(), model.first_f())),
+          m_y(model.na2(), model.num_params()), m_nb2(model.nb2()), m_na2(model.na2()),
           m_first_size(model.nb1() + 1 + model.na1()), m_front_size(m_first_size + model.r() - 1),
           m_dx(FirstSensitivity::Zero(m_first_size)), m_dw(FrontSensitivity::Zero(m_front_size)),
           m_w_lags(Eigen::Matrix<Scalar, Nb2_, 1>::Zero(model.nb2())),
@@ -304,16 +290,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     }
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x1 = m_first.step(theta, u, m_dx);
-      Scalar w = x1;
-      Scalar slope = Scalar(1);
-      Scalar power = x1;  // x1^(m-1), then x1^m
-      for (Eigen::Index m = 2; m <= m_r; ++m) {
-        const Scalar fm = theta[m_first_size + m - 2];
-        slope += Scalar(m) * fm * power;
-        power *= x1;
-        w += fm * power;
-        m_dw[m_first_size + m - 2] = power;
-      }
+      Scalar slope;
+      const Scalar w = m_middle.output_and_sensitivity(theta, x1, m_dw, slope);  // dw/df_m = x1^m
       m_dw.head(m_first_size) = slope * m_dx;
       const Eigen::Index second = m_front_size;
       auto front = m_psi.head(m_front_size);
@@ -355,8 +333,9 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
 
    private:
     detail::LinearOutputError<Scalar, Na1_, kFirstParams> m_first;
+    detail::OutputPolynomialTerms<Scalar> m_middle;
     detail::SimulatedLags<Scalar, Na2_, kNumParams> m_y;
-    Eigen::Index m_r, m_nb2, m_na2, m_first_size, m_front_size;
+    Eigen::Index m_nb2, m_na2, m_first_size, m_front_size;
     FirstSensitivity m_dx;   // d x1(k) / d [b1, a1]
     FrontSensitivity m_dw;   // d w(k) / d [b1, a1, f]
     Eigen::Matrix<Scalar, Nb2_, 1> m_w_lags;                 // w(k-1..k-nb2)

@@ -1,7 +1,8 @@
 #pragma once
 // The output polynomial of the H-W and Wiener models, y = x + sum_{m=2..r1} q_m x^m, with q_1 = 1
 // outside theta and q_2..q_r1 the last r1 - 1 entries of theta (of n): its parameters (a CRTP base)
-// and its part of the key-term form and of the output-error step.
+// and its part of the key-term form and of the output-error step. The Wiener-Hammerstein model's
+// middle polynomial uses the same terms with its coefficients inside theta.
 
 #include <Eigen/Core>
 
@@ -54,10 +55,16 @@ class OutputPolynomialParameters {
   }
 };
 
+/// A polynomial x + sum_{m=2..r1} q_m x^m whose q_2..q_r1 sit in theta: its last r1 - 1 entries (of n;
+/// the H-W and Wiener models' output polynomial), or from index `first` on (starting_at; the
+/// Wiener-Hammerstein model's middle polynomial, whose f_2..f_r lie between its two blocks).
 template <typename Scalar>
 class OutputPolynomialTerms {
  public:
-  OutputPolynomialTerms(Eigen::Index r1, Eigen::Index n) : m_r1(r1), m_n(n) {}
+  OutputPolynomialTerms(Eigen::Index r1, Eigen::Index n) : m_r1(r1), m_first(n - r1 + 1) {}
+  static OutputPolynomialTerms starting_at(Eigen::Index r1, Eigen::Index first) {
+    return OutputPolynomialTerms(r1, first + r1 - 1);
+  }
 
   /// y for the internal variable x.
   template <typename Theta>
@@ -112,9 +119,9 @@ class OutputPolynomialTerms {
   }
 
  private:
-  Eigen::Index index(Eigen::Index m) const noexcept { return m_n - m_r1 + m - 1; }
+  Eigen::Index index(Eigen::Index m) const noexcept { return m_first + m - 2; }
 
-  Eigen::Index m_r1, m_n;
+  Eigen::Index m_r1, m_first;  // the degree; the index of q_2 in theta
 };
 
 }  // namespace bonl::detail

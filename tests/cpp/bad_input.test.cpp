@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "bad_input_cases.hpp"
-#include "known_systems.hpp"
+#include "compiled_once.hpp"
 
 namespace {
 

@@ -1,6 +1,7 @@
 #pragma once
 // Shared by the C++ tests: one tolerance helper, the known systems the identification tests
-// recover (known_systems.hpp), and the inputs they are excited with. Seeds are fixed.
+// recover (known_systems.hpp; with identify and friends compiled once, compiled_once.hpp), and the
+// inputs they are excited with. Seeds are fixed.
 
 #include <bonl/bonl.hpp>
 
@@ -8,7 +9,7 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "known_systems.hpp"
+#include "compiled_once.hpp"
 
 namespace bonl_test {
 

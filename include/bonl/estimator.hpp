@@ -2,8 +2,10 @@
 // Estimation: the recursive least-squares core, the forgetting schedule, the generic recursive
 // estimator (MRLSA) over any model, output-error refinement and whole-record identification.
 
+#include "estimator/estimate_recursively.hpp"
 #include "estimator/forgetting_schedule.hpp"
 #include "estimator/identify.hpp"
+#include "estimator/identify_options.hpp"
 #include "estimator/method.hpp"
 #include "estimator/output_error.hpp"
 #include "estimator/record_view.hpp"

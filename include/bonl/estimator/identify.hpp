@@ -17,35 +17,11 @@
 #include "output_error.hpp"
 #include "record_view.hpp"
 #include "recursive_estimator.hpp"
+#include "estimate_recursively.hpp"
+#include "identify_options.hpp"
 #include "wiener_hammerstein_start.hpp"
 
 namespace bonl {
-
-/// Where identify() takes the model's operating point (u0, y0) from: the structure's (the default),
-/// the mean input and output over all records, or the first sample of the first record (the record
-/// starts at rest there, as the cascaded tanks' records do).
-enum class OperatingPointSource { Structure, Mean, Initial };
-
-inline const char* to_string(OperatingPointSource source) {
-  switch (source) {
-    case OperatingPointSource::Mean: return "mean";
-    case OperatingPointSource::Initial: return "initial";
-    case OperatingPointSource::Structure: break;
-  }
-  return "structure";
-}
-
-struct IdentifyOptions : EstimatorOptions {
-  int passes = 1;              ///< passes of the recursive estimator over the record (paper's step 5)
-  int refine_iterations = 100; ///< Levenberg-Marquardt iterations of the refinement (0: none)
-  /// Where identify refines (below), run on the data divided by the power of two nearest each
-  /// signal's RMS (u and y, over all records) and return the model in the data's units (rescaled()),
-  /// so that the estimators' settings (p0, c0, the forgetting) mean the same on volts, newtons or
-  /// micrometres. Powers of two make the scaling exact in floating point. Where identify returns the
-  /// recursive estimate as it is, that estimate is the online estimator's, in the data's units.
-  bool normalise = true;
-  OperatingPointSource operating_point = OperatingPointSource::Structure;
-};
 
 namespace detail {
 
@@ -88,46 +64,6 @@ struct ScaledRecords {
   Records<Scalar> views;
 };
 
-}  // namespace detail
-
-/// The recursive estimator alone: `options.passes` passes over the records, each continuing from the
-/// previous pass's theta and P; every record starts from rest, as a pass does (Estimator::start_pass).
-/// Throws NumericalError if an update breaks down.
-template <class Model>
-Model estimate_recursively(const Model& structure, const Records<typename Model::Scalar>& records,
-                           const IdentifyOptions& options) {
-  detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
-  detail::require_records(records, structure.num_params());
-  Estimator<Model> estimator(structure, options);
-  for (int pass = 0; pass < options.passes; ++pass) {
-    for (std::size_t r = 0; r < records.size(); ++r) {
-      if (pass > 0 || r > 0) estimator.start_pass();
-      const auto& u = records[r].u;
-      const auto& y = records[r].y;
-      for (Eigen::Index k = 0; k < u.size(); ++k) {
-        if (estimator.update(u[k], y[k]) == UpdateStatus::NumericalFailure) {
-          const std::string record = records.size() > 1 ? " of record " + std::to_string(r) : "";
-          throw NumericalError("bonl: the covariance lost positiveness at sample " + std::to_string(k) + record +
-                               " of pass " + std::to_string(pass + 1) + " (method " + to_string(options.method) +
-                               "); try a smaller p0 or better-scaled data");
-        }
-      }
-    }
-  }
-  return estimator.model();
-}
-
-/// The same on one record (u, y).
-template <class Model, typename U, typename Y>
-Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
-                           const IdentifyOptions& options) {
-  detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
-  detail::require_record(u, y, structure.num_params());
-  const typename Model::VectorX input = u, output = y;
-  return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options);
-}
-
-namespace detail {
 /// identify() without the input range.
 template <class Model>
 Model identify_records(const Model& structure, const Records<typename Model::Scalar>& records,

@@ -21,12 +21,15 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
+#include "../error.hpp"
 #include "../models/arx.hpp"
 #include "../models/poles.hpp"
 #include "../models/wiener_hammerstein.hpp"
+#include "estimate_recursively.hpp"
 #include "output_error.hpp"
 #include "record_view.hpp"
 #include "recursive_estimator.hpp"
@@ -135,19 +138,16 @@ inline Eigen::VectorXd coefficients_of(const std::vector<std::vector<Complex>>& 
   return monic_from_roots(roots).tail(roots.size());
 }
 
-/// The BLA: a linear output-error model (ARX structure, refined on the simulation error) of the records.
+/// The BLA: a linear output-error model (ARX structure: least squares by the recursive estimator,
+/// then refined on the simulation error) of the records. Throws NumericalError where the least
+/// squares broke down.
 template <typename Scalar>
 ARX<Scalar> best_linear_approximation(const Records<Scalar>& records, Eigen::Index na, Eigen::Index nb,
                                       Eigen::Index nk, int iterations) {
-  const ARX<Scalar> structure(na, nb, nk);
-  EstimatorOptions least_squares;
+  IdentifyOptions least_squares;
   least_squares.method = Method::EquationError;
-  Estimator<ARX<Scalar>> estimator(structure, least_squares);
-  for (std::size_t r = 0; r < records.size(); ++r) {
-    if (r > 0) estimator.start_pass();
-    for (Eigen::Index k = 0; k < records[r].u.size(); ++k) estimator.update(records[r].u[k], records[r].y[k]);
-  }
-  return refine_output_error(estimator.model(), records, iterations);
+  const ARX<Scalar> arx = estimate_recursively(ARX<Scalar>(na, nb, nk), records, least_squares);
+  return refine_output_error(arx, records, iterations);
 }
 
 }  // namespace detail
@@ -155,8 +155,8 @@ ARX<Scalar> best_linear_approximation(const Records<Scalar>& records, Eigen::Ind
 /// The splits of the records' best linear approximation between the blocks of `structure` (a
 /// WienerHammerstein model; its parameter values are not used), each with its static polynomial
 /// fitted by least squares, best first. The records are deviations from the operating point (identify()
-/// hands them so). Empty where the BLA's b_0 = 0 or not finite, or every fit is degenerate (no
-/// linear term).
+/// hands them so). Empty where the BLA's least squares broke down, its b_0 = 0 or not finite, or
+/// every fit is degenerate (no linear term).
 template <class Model>
 std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model& structure,
                                                                      const Records<typename Model::Scalar>& records,
@@ -166,10 +166,14 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
   const Eigen::Index na1 = structure.na1(), nb1 = structure.nb1(), na2 = structure.na2(), nb2 = structure.nb2();
   const Eigen::Index r = structure.r();
-  const ARX<Scalar> bla =
-      detail::best_linear_approximation(records, na1 + na2, nb1 + nb2, structure.nk(), linear_iterations);
   std::vector<WienerHammersteinSplit<Model>> splits;
-  const VectorX a = bla.a(), b = bla.b();
+  std::optional<ARX<Scalar>> bla;
+  try {
+    bla = detail::best_linear_approximation(records, na1 + na2, nb1 + nb2, structure.nk(), linear_iterations);
+  } catch (const NumericalError&) {
+    return splits;  // no BLA to split: identify() keeps its recursive starts
+  }
+  const VectorX a = bla->a(), b = bla->b();
   if (!a.allFinite() || !b.allFinite() || b[0] == Scalar(0)) return splits;
 
   const Eigen::VectorXd a_double = a.template cast<double>();

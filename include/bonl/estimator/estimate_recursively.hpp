@@ -1,0 +1,54 @@
+#pragma once
+// The recursive estimator run over whole records: identify()'s first step, and the best linear
+// approximation's least squares (wiener_hammerstein_start.hpp).
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <string>
+
+#include "../detail/validate.hpp"
+#include "../error.hpp"
+#include "identify_options.hpp"
+#include "record_view.hpp"
+#include "recursive_estimator.hpp"
+
+namespace bonl {
+
+/// The recursive estimator alone: `options.passes` passes over the records, each continuing from the
+/// previous pass's theta and P; every record starts from rest, as a pass does (Estimator::start_pass).
+/// Throws NumericalError if an update breaks down.
+template <class Model>
+Model estimate_recursively(const Model& structure, const Records<typename Model::Scalar>& records,
+                           const IdentifyOptions& options) {
+  detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
+  detail::require_records(records, structure.num_params());
+  Estimator<Model> estimator(structure, options);
+  for (int pass = 0; pass < options.passes; ++pass) {
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      if (pass > 0 || r > 0) estimator.start_pass();
+      const auto& u = records[r].u;
+      const auto& y = records[r].y;
+      for (Eigen::Index k = 0; k < u.size(); ++k) {
+        if (estimator.update(u[k], y[k]) == UpdateStatus::NumericalFailure) {
+          const std::string record = records.size() > 1 ? " of record " + std::to_string(r) : "";
+          throw NumericalError("bonl: the covariance lost positiveness at sample " + std::to_string(k) + record +
+                               " of pass " + std::to_string(pass + 1) + " (method " + to_string(options.method) +
+                               "); try a smaller p0 or better-scaled data");
+        }
+      }
+    }
+  }
+  return estimator.model();
+}
+
+/// The same on one record (u, y).
+template <class Model, typename U, typename Y>
+Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
+                           const IdentifyOptions& options) {
+  detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
+  detail::require_record(u, y, structure.num_params());
+  const typename Model::VectorX input = u, output = y;
+  return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options);
+}
+
+}  // namespace bonl

@@ -1,0 +1,35 @@
+#pragma once
+// What identify() is told: the recursive estimator's options, its passes, the refinement, the data's
+// units and where the operating point comes from.
+
+#include "recursive_estimator.hpp"
+
+namespace bonl {
+
+/// Where identify() takes the model's operating point (u0, y0) from: the structure's (the default),
+/// the mean input and output over all records, or the first sample of the first record (the record
+/// starts at rest there, as the cascaded tanks' records do).
+enum class OperatingPointSource { Structure, Mean, Initial };
+
+inline const char* to_string(OperatingPointSource source) {
+  switch (source) {
+    case OperatingPointSource::Mean: return "mean";
+    case OperatingPointSource::Initial: return "initial";
+    case OperatingPointSource::Structure: break;
+  }
+  return "structure";
+}
+
+struct IdentifyOptions : EstimatorOptions {
+  int passes = 1;              ///< passes of the recursive estimator over the record (paper's step 5)
+  int refine_iterations = 100; ///< Levenberg-Marquardt iterations of the refinement (0: none)
+  /// Where identify refines (below), run on the data divided by the power of two nearest each
+  /// signal's RMS (u and y, over all records) and return the model in the data's units (rescaled()),
+  /// so that the estimators' settings (p0, c0, the forgetting) mean the same on volts, newtons or
+  /// micrometres. Powers of two make the scaling exact in floating point. Where identify returns the
+  /// recursive estimate as it is, that estimate is the online estimator's, in the data's units.
+  bool normalise = true;
+  OperatingPointSource operating_point = OperatingPointSource::Structure;
+};
+
+}  // namespace bonl

@@ -20,10 +20,10 @@
   X(bonl::Wienerd)                        \
   X(bonl::WienerHammersteind)
 
-#define BONL_TEST_PAPER_MODELS(X)    \
-  X(bonl::PaperARX)                  \
-  X(bonl::PaperHammerstein)          \
-  X(bonl::PaperHammersteinWiener)    \
+#define BONL_TEST_PAPER_MODELS(X)     \
+  X(bonl::PaperARX)                     \
+  X(bonl::PaperHammerstein)             \
+  X(bonl::PaperHammersteinWiener)       \
   X(bonl::PaperPseudoHammersteinWiener) \
   X(bonl::PaperWiener)
 
@@ -33,17 +33,17 @@
 #define BONL_TEST_EXTERN extern
 #endif
 
-#define BONL_TEST_IDENTIFICATION(M)                                                                            \
-  BONL_TEST_EXTERN template M bonl::identify(const M&, const bonl::Records<double>&, const bonl::IdentifyOptions&); \
-  BONL_TEST_EXTERN template bonl::Selection<M> bonl::select(const std::vector<M>&, const bonl::Records<double>&, \
-                                                          const bonl::SelectOptions&);                          \
-  BONL_TEST_EXTERN template M bonl::refine_output_error(const std::vector<M>&, const bonl::Records<double>&, int, \
-                                                      bonl::RefinementReport*);                                  \
-  BONL_TEST_EXTERN template M bonl::estimate_recursively(const M&, const bonl::Records<double>&,                  \
-                                                       const bonl::IdentifyOptions&);                            \
-  BONL_TEST_EXTERN template M bonl_test::known_system<M>(const char*);
-
 #define BONL_TEST_KNOWN_SYSTEM(M) BONL_TEST_EXTERN template M bonl_test::known_system<M>(const char*);
+
+#define BONL_TEST_IDENTIFICATION(M)                                                                              \
+  BONL_TEST_EXTERN template M bonl::identify(const M&, const bonl::Records<double>&, const bonl::IdentifyOptions&); \
+  BONL_TEST_EXTERN template bonl::Selection<M> bonl::select(const std::vector<M>&, const bonl::Records<double>&,   \
+                                                            const bonl::SelectOptions&);                          \
+  BONL_TEST_EXTERN template M bonl::refine_output_error(const std::vector<M>&, const bonl::Records<double>&, int,   \
+                                                        bonl::RefinementReport*);                                  \
+  BONL_TEST_EXTERN template M bonl::estimate_recursively(const M&, const bonl::Records<double>&,                    \
+                                                         const bonl::IdentifyOptions&);                            \
+  BONL_TEST_KNOWN_SYSTEM(M)
 
 BONL_TEST_COMPILED_ONCE_MODELS(BONL_TEST_IDENTIFICATION)
 BONL_TEST_PAPER_MODELS(BONL_TEST_KNOWN_SYSTEM)

@@ -30,9 +30,10 @@
 #include "../models/poles.hpp"
 #include "../models/wiener_hammerstein.hpp"
 #include "estimate_recursively.hpp"
+#include "identify_options.hpp"
+#include "method.hpp"
 #include "output_error.hpp"
 #include "record_view.hpp"
-#include "recursive_estimator.hpp"
 
 namespace bonl {
 

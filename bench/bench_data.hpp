@@ -66,14 +66,15 @@ struct PaperOrderModels {
   static constexpr int Na = Fixed ? 3 : Eigen::Dynamic;
   static constexpr int Nb = Fixed ? 2 : Eigen::Dynamic;
   static constexpr int R = Fixed ? 3 : Eigen::Dynamic;
+  static constexpr int Nh = Fixed ? 0 : Eigen::Dynamic;  // the Wiener-Hammerstein model's hinges: none
   using type = bonl::ModelList<bonl::ARX<S, Na, Nb>, bonl::Hammerstein<S, Na, Nb, R>,
                                bonl::HammersteinWiener<S, Na, Nb, R, R>, bonl::PseudoHammersteinWiener<S, Na, Nb, R>,
-                               bonl::Wiener<S, Na, Nb, R>, bonl::WienerHammerstein<S, Na, Nb, R, Na, Nb>>;
+                               bonl::Wiener<S, Na, Nb, R>, bonl::WienerHammerstein<S, Na, Nb, R, Nh, Na, Nb>>;
 };
 static_assert(bonl::Models::size == PaperOrderModels<double, true>::type::size,
               "bench/bench_data.hpp: every model of bonl::Models has an entry in PaperOrderModels");
 
-/// The structure of a model at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3), by the names
+/// The structure of a model at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3; no hinges), by the names
 /// its description gives its orders.
 template <class Model>
 Model make_structure() {
@@ -81,7 +82,7 @@ Model make_structure() {
   for (std::size_t i = 0; i < orders.size(); ++i) {
     const std::string name = Model::kDescription.orders[i].name;
     const std::string kind = name.substr(0, 2);  // na1 and na2 as na, nb1 and nb2 as nb
-    orders[i] = kind == "na" ? kNa : kind == "nb" ? kNb : name == "nk" ? kNk : name == "r" ? kR : kR1;
+    orders[i] = kind == "na" ? kNa : kind == "nb" ? kNb : name == "nk" ? kNk : name == "r" ? kR : name == "nh" ? 0 : kR1;
   }
   return bonl::make_model<Model>(orders);
 }

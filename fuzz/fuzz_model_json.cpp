@@ -5,8 +5,8 @@
 //   "bonl: model JSON: "; any other exception is a finding.
 // - What it accepts is a model file by the format's rules, checked on a separate plain parse:
 //   exactly the keys of the kind, format "bonl-model", version 1, integer orders in range,
-//   arrays of finite numbers of the right lengths, b_0 = 1, q_1 = 1, c >= 0; and the loaded
-//   model's numbers are those of the file, bit for bit.
+//   arrays of finite numbers of the right lengths, b_0 = 1, q_1 = 1, c >= 0, knots strictly
+//   increasing and not 0; and the loaded model's numbers are those of the file, bit for bit.
 // - The typed readers agree with load_model: model_from_json<K> (run-time orders) succeeds exactly
 //   when load_model returned kind K, with bit-identical parameters; for the paper's four models the
 //   fixed-order (paper) type succeeds exactly when the orders match too, the float type exactly when
@@ -210,6 +210,9 @@ void check_format(const std::string& text, const M& model) {
     } else {
       FUZZ_CHECK(numbers_ok(value, expected));
       if (parameter.normalised != nullptr) FUZZ_CHECK(value[0] == 1.0);  // b_0 = 1, q_1 = 1
+      for (Eigen::Index j = 0; parameter.increasing && j < expected.size(); ++j) {  // the knots
+        FUZZ_CHECK(expected[j] != 0.0 && (j == 0 || expected[j - 1] < expected[j]));
+      }
     }
   }
 }

@@ -29,8 +29,10 @@ def make():
         tests=[Test("samples 101 001-188 000", u[100000:], y[100000:], skip=1000)],
         orders=dict(na=[2, 4, 6], nb=[1, 3, 5], nk=[0, 1], r=[3], r1=[3]),
         # The circuit's two filters are third order (SOURCE.md): G1 and G2 with three poles each; the
-        # diode network saturates, which a polynomial follows only at a high degree.
-        family_orders={"WienerHammerstein": dict(na1=[3], nb1=[2], nk=[0, 1], r=[10, 15, 20], na2=[3], nb2=[2])},
+        # diode network saturates, which a polynomial follows only at a high degree, hinges (a
+        # piecewise-linear nonlinearity, r = 1) with a knot every few percent of the samples.
+        family_orders={"WienerHammerstein": dict(na1=[3], nb1=[2], nk=[0, 1], r=[1, 10, 15, 20], nh=[0, 10, 20],
+                                                 na2=[3], nb2=[2])},
         published=[("polynomial NARX (SysIdentPy), nonlinear_benchmarks split", "1.52e-2"),
                    ("dynoNet (Forgione and Piga 2021)", "1.2e-3"),
                    ("block-oriented, best published (M. Schoukens et al. 2014)", "2.8e-4")])

@@ -7,11 +7,16 @@
 //      is G1 G2 times a constant (Bussgang), so its poles and zeros are the two blocks' together.
 //   2. Every split of its poles and zeros between the blocks (na1 poles and nb1 zeros to the first,
 //      a complex pair together; where no split can keep every pair, as for an odd na1 with only
-//      pairs, the pair nearest the real axis is made two real roots at its real part) is scored: with G1 and G2 fixed, y = sum_m c_m G2(x1^m) with
-//      x1 = G1 u is linear in the polynomial's coefficients c_m, so least squares gives them and the
-//      residual is the split's score.
+//      pairs, the pair nearest the real axis is made two real roots at its real part) is scored: with
+//      G1 and G2 fixed, y = sum_m c_m G2(x1^m) + sum_j d_j G2(h(x1 - knot_j)) with x1 = G1 u is linear
+//      in the nonlinearity's coefficients, so least squares gives them and the residual is the
+//      split's score. A model with hinges (nh > 0) has its knots placed at the quantiles
+//      j / (nh + 1) of the split's nonzero x1, so that every slope change is fitted on as many
+//      samples (as regression splines place theirs: Hastie, Tibshirani and Friedman, The Elements of
+//      Statistical Learning, 2nd ed., 2009, sec. 5.2 and 9.1); the structure's own knots are not used.
 //   3. The best splits, normalised (f_1 = 1, b2_0 = 1, the gain in b1), are starts of identify()'s
-//      refinement on the simulation error, beside the recursive estimates.
+//      refinement on the simulation error, beside the recursive estimates (which keep the structure's
+//      knots). The refinement keeps each start's knots.
 // Nothing here is random: the result is a function of the data.
 
 #include <Eigen/Core>
@@ -27,6 +32,7 @@
 
 #include "../error.hpp"
 #include "../models/arx.hpp"
+#include "../models/detail/hinge_terms.hpp"
 #include "../models/poles.hpp"
 #include "../models/wiener_hammerstein.hpp"
 #include "estimate_recursively.hpp"
@@ -40,15 +46,15 @@ namespace bonl {
 /// One scored split of the BLA (wiener_hammerstein_splits).
 template <class Model>
 struct WienerHammersteinSplit {
-  Model model;        ///< the start: the split's blocks and the polynomial fitted by least squares
+  Model model;        ///< the start: the split's blocks and the nonlinearity fitted by least squares
   double cost = 0.0;  ///< its mean squared residual on the records (free run, each from rest)
 };
 
 /// Is Model a WienerHammerstein model (of any scalar and sizes)?
 template <class Model>
 struct is_wiener_hammerstein : std::false_type {};
-template <typename Scalar, int Na1, int Nb1, int R, int Na2, int Nb2>
-struct is_wiener_hammerstein<WienerHammerstein<Scalar, Na1, Nb1, R, Na2, Nb2>> : std::true_type {};
+template <typename Scalar, int Na1, int Nb1, int R, int Nh, int Na2, int Nb2>
+struct is_wiener_hammerstein<WienerHammerstein<Scalar, Na1, Nb1, R, Nh, Na2, Nb2>> : std::true_type {};
 
 /// How many of the best splits identify() refines, beside the recursive estimates.
 inline constexpr std::size_t kWienerHammersteinStarts = 3;
@@ -139,6 +145,25 @@ inline Eigen::VectorXd coefficients_of(const std::vector<std::vector<Complex>>& 
   return monic_from_roots(roots).tail(roots.size());
 }
 
+/// The knots of nh hinges at the quantiles j / (nh + 1), j = 1..nh, of the nonzero entries of x;
+/// empty where they are not strictly increasing (too few distinct values).
+template <typename Vector>
+std::optional<Vector> quantile_knots(const Vector& x, Eigen::Index nh) {
+  std::vector<typename Vector::Scalar> values;
+  for (Eigen::Index k = 0; k < x.size(); ++k) {
+    if (x[k] != 0) values.push_back(x[k]);
+  }
+  if (static_cast<Eigen::Index>(values.size()) <= nh) return std::nullopt;
+  std::sort(values.begin(), values.end());
+  Vector knots(nh);
+  const double last = static_cast<double>(values.size() - 1);
+  for (Eigen::Index j = 0; j < nh; ++j) {
+    knots[j] = values[static_cast<std::size_t>(std::floor(last * double(j + 1) / double(nh + 1)))];
+    if (j > 0 && !(knots[j - 1] < knots[j])) return std::nullopt;
+  }
+  return knots;
+}
+
 /// The BLA: a linear output-error model (ARX structure: least squares by the recursive estimator,
 /// then refined on the simulation error) of the records. Throws NumericalError where the least
 /// squares broke down.
@@ -154,8 +179,8 @@ ARX<Scalar> best_linear_approximation(const Records<Scalar>& records, Eigen::Ind
 }  // namespace detail
 
 /// The splits of the records' best linear approximation between the blocks of `structure` (a
-/// WienerHammerstein model; its parameter values are not used), each with its static polynomial
-/// fitted by least squares, best first. The records are deviations from the operating point (identify()
+/// WienerHammerstein model; its parameter values and knots are not used), each with its static
+/// nonlinearity fitted by least squares (the knots at the quantiles of the split's x1), best first. The records are deviations from the operating point (identify()
 /// hands them so). Empty where the BLA's least squares broke down, its b_0 = 0 or not finite, or
 /// every fit is degenerate (no linear term).
 template <class Model>
@@ -166,7 +191,7 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
   const Eigen::Index na1 = structure.na1(), nb1 = structure.nb1(), na2 = structure.na2(), nb2 = structure.nb2();
-  const Eigen::Index r = structure.r();
+  const Eigen::Index r = structure.r(), nh = structure.nh();
   std::vector<WienerHammersteinSplit<Model>> splits;
   std::optional<ARX<Scalar>> bla;
   try {
@@ -186,7 +211,7 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
 
   const VectorX y = detail::stacked_outputs(records);
   const Eigen::Index samples = y.size();
-  MatrixX regressors(samples, r);
+  MatrixX regressors(samples, r + nh);
   VectorX x1(samples);
   for (const auto& poles : pole_subsets) {
     for (const auto& zeros : zero_subsets) {
@@ -211,17 +236,23 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
       for (Eigen::Index k = 0; k < samples; ++k) squares += std::pow(x1[k], 2);
       const Scalar scale = std::sqrt(squares / Scalar(samples));
       if (!(scale > Scalar(0)) || !std::isfinite(scale)) continue;
-      // Column m - 1: G2 applied to (x1 / scale)^m, each record from rest.
+      const std::optional<VectorX> knots = detail::quantile_knots<VectorX>(x1 / scale, nh);  // of x1 / scale
+      if (!knots) continue;
+      // Column m - 1: G2 applied to (x1 / scale)^m; column r + j: to its hinge j; each record from rest.
       second.set_b(b2);
       row = 0;
       for (const auto& record : records) {
-        std::vector<typename Model::Second> powers(static_cast<std::size_t>(r), second);
+        std::vector<typename Model::Second> columns(static_cast<std::size_t>(r + nh), second);
         for (Eigen::Index k = 0; k < record.u.size(); ++k, ++row) {
           const Scalar scaled = x1[row] / scale;
           Scalar power = Scalar(1);
           for (Eigen::Index m = 0; m < r; ++m) {
             power *= scaled;
-            regressors(row, m) = powers[static_cast<std::size_t>(m)].step(power);
+            regressors(row, m) = columns[static_cast<std::size_t>(m)].step(power);
+          }
+          for (Eigen::Index j = 0; j < nh; ++j) {
+            const Scalar hinge = detail::HingeTerms<Scalar>::hinge(scaled, (*knots)[j]);
+            regressors(row, r + j) = columns[static_cast<std::size_t>(r + j)].step(hinge);
           }
         }
       }
@@ -230,8 +261,23 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
       if (!c.allFinite() || std::abs(c[0]) < Scalar(1e-12) * (c.cwiseAbs().maxCoeff() + Scalar(1e-300))) continue;
       const double cost = static_cast<double>((y - regressors * c).squaredNorm()) / static_cast<double>(samples);
       for (Eigen::Index m = 0; m < r; ++m) c[m] /= std::pow(scale, Scalar(m + 1));  // for x1 itself
-      // Normalised: x1' = c_1 x1 (the gain into b1), f_m = c_m / c_1^m.
+      // Normalised: x1' = c_1 x1 (the gain into b1), f_m = c_m / c_1^m; the hinges, homogeneous,
+      // d_j h(x1 / scale - k_j) = g_j h(x1' - knot_j) with knot_j = c_1 scale k_j and
+      // g_j = d_j / (c_1 scale) (in reverse order where c_1 < 0).
       Model model = structure;
+      if (nh > 0) {
+        VectorX knot(nh), g(nh);
+        for (Eigen::Index j = 0; j < nh; ++j) {
+          const Eigen::Index from = c[0] > Scalar(0) ? j : nh - 1 - j;
+          knot[j] = c[0] * scale * (*knots)[from];
+          g[j] = c[r + from] / (c[0] * scale);
+        }
+        bool valid = knot.allFinite() && g.allFinite();
+        for (Eigen::Index j = 0; j < nh; ++j) valid = valid && knot[j] != Scalar(0) && (j == 0 || knot[j - 1] < knot[j]);
+        if (!valid) continue;
+        model.set_knots(knot);
+        model.set_g(g);
+      }
       model.set_b1(c[0] * b1);
       model.set_a1(first.a());
       VectorX f(r);

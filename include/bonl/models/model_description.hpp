@@ -60,6 +60,7 @@ struct ParameterDescription {
   const char* normalised;  ///< not null: the first entry is fixed to 1, for this reason
   bool non_negative;       ///< the value must be >= 0 (the backlash half-width)
   ParameterUnits units;    ///< how its entries change with the units of u and y
+  bool increasing = false; ///< the entries must be strictly increasing and not 0 (the W-H model's knots)
 };
 
 template <std::size_t NumOrders, std::size_t NumParameters>

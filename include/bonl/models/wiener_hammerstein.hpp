@@ -1,13 +1,18 @@
 #pragma once
-// Wiener-Hammerstein model: a linear block, a static polynomial, a second linear block
+// Wiener-Hammerstein model: a linear block, a static nonlinearity, a second linear block
 //   x1(k) = -sum_{j=1..na1} a1_j x1(k-j) + sum_{i=0..nb1} b1_i u(k-nk-i),
-//   w(k)  = x1(k) + sum_{m=2..r} f_m x1(k)^m,
+//   w(k)  = x1(k) + sum_{m=2..r} f_m x1(k)^m + sum_{j=1..nh} g_j h(x1(k) - kappa_j),
 //   y(k)  = -sum_{j=1..na2} a2_j y(k-j) + sum_{i=0..nb2} b2_i w(k-i),
 // normalised to f_1 = 1 and b2_0 = 1 (the gain lives in b1; the whole delay in the first block, where
-// a delay commutes with the static polynomial, so that b2_0 is not zero).
-// Parameters: b1_0..b1_nb1, a1_1..a1_na1, f_2..f_r, b2_1..b2_nb2, a2_1..a2_na2.
+// a delay commutes with the static nonlinearity, so that b2_0 is not zero). The nonlinearity is a
+// polynomial (nh = 0), piecewise linear (r = 1: slope 1 at 0, changing by g_j at the knots kappa_j,
+// for saturating circuits) or both; the hinges h are those of models/detail/hinge_terms.hpp. The knots
+// are structure, not estimated: the model's own (the defaults, set_knots(), a model file), or placed
+// from the data by the start from the best linear approximation.
+// Parameters: b1_0..b1_nb1, a1_1..a1_na1, f_2..f_r, g_1..g_nh, b2_1..b2_nb2, a2_1..a2_na2.
 // Key-term form, separating twice (w's key term x1, then y's key term w(k) with b2_0 = 1):
-//   y(k) = [u lags] . b1 - [x1 lags] . a1 + sum_{m>=2} f_m x1(k)^m + [w lags] . b2 - [y lags] . a2,
+//   y(k) = [u lags] . b1 - [x1 lags] . a1 + sum_{m>=2} f_m x1(k)^m + sum_j g_j h(x1(k) - kappa_j)
+//          + [w lags] . b2 - [y lags] . a2,
 // linear in theta once x1 and w are estimated. estimator/wiener_hammerstein_start.hpp starts
 // identify() from the best linear approximation.
 
@@ -16,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <string>
 
 #include "../blocks/linear_block.hpp"
 #include "../blocks/output_polynomial.hpp"
@@ -23,6 +29,7 @@
 #include "../detail/stability.hpp"
 #include "../detail/validate.hpp"
 #include "detail/linear_terms.hpp"
+#include "detail/hinge_terms.hpp"
 #include "detail/model_runs.hpp"
 #include "detail/output_polynomial_terms.hpp"
 #include "detail/simulated_lags.hpp"
@@ -32,25 +39,27 @@
 namespace bonl {
 
 template <typename Scalar_ = double, int Na1_ = Eigen::Dynamic, int Nb1_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
-          int Na2_ = Eigen::Dynamic, int Nb2_ = Eigen::Dynamic>
-class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na1_, Nb1_, R_, Na2_, Nb2_>> {
+          int Nh_ = Eigen::Dynamic, int Na2_ = Eigen::Dynamic, int Nb2_ = Eigen::Dynamic>
+class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na1_, Nb1_, R_, Nh_, Na2_, Nb2_>> {
   static constexpr int kFirstParams = detail::add_sizes(detail::poly_size(Nb1_), Na1_);  // b1, a1
-  static constexpr int kFrontParams =
-      detail::add_sizes(kFirstParams, R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1);  // and f
+  static constexpr int kFrontParams = detail::add_sizes(
+      detail::add_sizes(kFirstParams, R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1), Nh_);  // and f, g
 
  public:
   using Scalar = Scalar_;
   static constexpr int kNumParams = detail::add_sizes(kFrontParams, detail::add_sizes(Nb2_, Na2_));
   static constexpr bool kHasInternalVariables = true;
   static constexpr const char* kName = "WienerHammerstein";
-  static constexpr ModelDescription<6, 5> kDescription{
+  static constexpr ModelDescription<7, 7> kDescription{
       kName,
-      "Wiener-Hammerstein model: the linear block x1 = z^-nk B1/A1 u, then w = sum_{m=1..r} f_m x1^m (f_1 = 1), "
-      "then the linear block y = B2/A2 w (b2_0 = 1).",
+      "Wiener-Hammerstein model: the linear block x1 = z^-nk B1/A1 u, then the static nonlinearity "
+      "w = sum_{m=1..r} f_m x1^m + sum_{j=1..nh} g_j h(x1 - knots_j) (f_1 = 1; h the hinge, zero between 0 "
+      "and its knot), then the linear block y = B2/A2 w (b2_0 = 1).",
       {{{"na1", 1, detail::kMaxOrder, Na1_, "poles of the first linear block (na1 >= 1)"},
         {"nb1", 0, detail::kMaxOrder, Nb1_, "B1 has nb1 + 1 coefficients b1_0..b1_nb1"},
         {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples (in the first block)"},
-        {"r", 2, 32, R_, "degree of the static polynomial (2..32)"},
+        {"r", 1, 32, R_, "degree of the static polynomial (1..32; 1: no polynomial terms)"},
+        {"nh", 0, 32, Nh_, "hinges of the static nonlinearity, knots where its slope changes (0..32; 0: none)"},
         {"na2", 1, detail::kMaxOrder, Na2_, "poles of the second linear block (na2 >= 1)"},
         {"nb2", 0, detail::kMaxOrder, Nb2_, "B2 has nb2 + 1 coefficients b2_0..b2_nb2, b2_0 = 1"}}},
       {{{"b1", ParameterShape::Vector, 0, "b1_0..b1_nb1 (free: f_1 = b2_0 = 1 fix the other gains)", nullptr,
@@ -58,6 +67,10 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
         {"a1", ParameterShape::Vector, 1, "a1_1..a1_na1", nullptr, false, {}},
         {"f", ParameterShape::Vector, 1, "f_1..f_r with f_1 = 1",
          "the Wiener-Hammerstein model is normalised so that f_1 = 1", false, {1, -1, 0, 0}},
+        {"knots", ParameterShape::Vector, 1,
+         "knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated)",
+         nullptr, false, {1, 0, 0, 0}, true},
+        {"g", ParameterShape::Vector, 1, "g_1..g_nh, the change of slope outward of each knot", nullptr, false, {}},
         {"b2", ParameterShape::Vector, 0, "b2_0..b2_nb2 with b2_0 = 1",
          "the Wiener-Hammerstein model is normalised so that b2_0 = 1", false, {}},
         {"a2", ParameterShape::Vector, 1, "a2_1..a2_na2", nullptr, false, {}}}}};
@@ -69,32 +82,45 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// Both linear blocks' denominators: what pole_radius() and the refinement's stabilisation look at.
   static constexpr std::size_t kLinearBlocks = 2;
 
-  WienerHammerstein(Eigen::Index na1, Eigen::Index nb1, Eigen::Index nk, Eigen::Index r, Eigen::Index na2,
-                    Eigen::Index nb2)
-      : m_na1(na1), m_nb1(nb1), m_nk(nk), m_r(r), m_na2(na2), m_nb2(nb2) {
+  using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;
+
+  /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of x1, which are y's): set
+  /// them where the slope changes, or let identify() place them from the data.
+  WienerHammerstein(Eigen::Index na1, Eigen::Index nb1, Eigen::Index nk, Eigen::Index r, Eigen::Index nh,
+                    Eigen::Index na2, Eigen::Index nb2)
+      : m_na1(na1), m_nb1(nb1), m_nk(nk), m_r(r), m_nh(nh), m_na2(na2), m_nb2(nb2) {
     detail::require_order(na1, 1, "na1");
     detail::require_order(nb1, 0, "nb1");
     detail::require_order(nk, 0, "nk");
-    detail::require_order(r, 2, "r (static polynomial degree)");
+    detail::require_order(r, 1, "r (static polynomial degree)");
     detail::require(r <= 32, "r (static polynomial degree) must be <= 32");
+    detail::require_order(nh, 0, "nh (hinges)");
+    detail::require(nh <= 32, "nh (hinges) must be <= 32");
     detail::require_order(na2, 1, "na2");
     detail::require_order(nb2, 0, "nb2");
     detail::require_matches_template(na1, Na1_, "na1");
     detail::require_matches_template(nb1, Nb1_, "nb1");
     detail::require_matches_template(r, R_, "r");
+    detail::require_matches_template(nh, Nh_, "nh");
     detail::require_matches_template(na2, Na2_, "na2");
     detail::require_matches_template(nb2, Nb2_, "nb2");
-    m_theta = Params::Zero(nb1 + 1 + na1 + r - 1 + nb2 + na2);
+    m_theta = Params::Zero(nb1 + 1 + na1 + r - 1 + nh + nb2 + na2);
+    m_knots = Knots(nh);
+    for (Eigen::Index j = 0; j < nh; ++j) {
+      const Eigen::Index position = j - nh / 2;  // -floor(nh/2)..ceil(nh/2) - 1, then 0 moved to the end
+      m_knots[j] = static_cast<Scalar>(position < 0 ? position : position + 1);
+    }
   }
 
   Eigen::Index na1() const noexcept { return m_na1; }
   Eigen::Index nb1() const noexcept { return m_nb1; }
   Eigen::Index nk() const noexcept { return m_nk; }
   Eigen::Index r() const noexcept { return m_r; }
+  Eigen::Index nh() const noexcept { return m_nh; }
   Eigen::Index na2() const noexcept { return m_na2; }
   Eigen::Index nb2() const noexcept { return m_nb2; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
-  std::array<Eigen::Index, 6> orders() const noexcept { return {m_na1, m_nb1, m_nk, m_r, m_na2, m_nb2}; }
+  std::array<Eigen::Index, 7> orders() const noexcept { return {m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2}; }
 
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>
@@ -106,6 +132,9 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   VectorX a1() const { return m_theta.segment(first_a(), m_na1); }
   /// f_1..f_r with f_1 = 1.
   VectorX f() const { return with_leading_one(m_theta.segment(first_f(), m_r - 1)); }
+  /// knots_1..knots_nh, strictly increasing, none at 0.
+  const Knots& knots() const noexcept { return m_knots; }
+  VectorX g() const { return m_theta.segment(first_g(), m_nh); }
   /// b2_0..b2_nb2 with b2_0 = 1.
   VectorX b2() const { return with_leading_one(m_theta.segment(first_b2(), m_nb2)); }
   VectorX a2() const { return m_theta.segment(first_a2(), m_na2); }
@@ -121,23 +150,45 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   void set_f(const Eigen::MatrixBase<T>& f) {
     set_normalised(f, m_r, first_f(), "f", "f[0] (f_1)", 2);
   }
+  /// Where the slope changes: strictly increasing, none at 0 (the slope at 0 is f_1 = 1).
+  template <typename T>
+  void set_knots(const Eigen::MatrixBase<T>& knots) {
+    detail::require_size(knots, m_nh, "knots");
+    detail::require_finite(knots, "knots");
+    for (Eigen::Index j = 0; j < m_nh; ++j) {
+      if (knots[j] == 0) {
+        detail::fail("knots must not hold 0 (the slope at 0 is f_1 = 1), got 0 at index " + std::to_string(j));
+      }
+      if (j > 0 && !(knots[j - 1] < knots[j])) {
+        detail::fail("knots must be strictly increasing, got " + detail::format_number(double(knots[j - 1])) +
+                     " before " + detail::format_number(double(knots[j])) + " at index " + std::to_string(j));
+      }
+    }
+    m_knots = knots;
+  }
+  template <typename T>
+  void set_g(const Eigen::MatrixBase<T>& g) {
+    detail::assign_checked(m_theta.segment(first_g(), m_nh), g, "g");
+  }
   template <typename T>
   void set_b2(const Eigen::MatrixBase<T>& b2) {
-    set_normalised(b2, m_nb2 + 1, first_b2(), "b2", "b2[0] (b2_0)", 3);
+    set_normalised(b2, m_nb2 + 1, first_b2(), "b2", "b2[0] (b2_0)", 5);
   }
   template <typename T>
   void set_a2(const Eigen::MatrixBase<T>& a2) {
     detail::assign_checked(m_theta.segment(first_a2(), m_na2), a2, "a2");
   }
 
-  /// The parameter block kDescription.parameters[i]: b1, a1, f, b2, a2.
+  /// The parameter block kDescription.parameters[i]: b1, a1, f, knots, g, b2, a2.
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b1();
       case 1: return a1();
       case 2: return f();
-      case 3: return b2();
-      case 4: return a2();
+      case 3: return m_knots;
+      case 4: return g();
+      case 5: return b2();
+      case 6: return a2();
       default: detail::no_such_parameter(kName, i);
     }
   }
@@ -146,8 +197,10 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       case 0: return set_b1(value);
       case 1: return set_a1(value);
       case 2: return set_f(value);
-      case 3: return set_b2(value);
-      case 4: return set_a2(value);
+      case 3: return set_knots(value);
+      case 4: return set_g(value);
+      case 5: return set_b2(value);
+      case 6: return set_a2(value);
       default: detail::no_such_parameter(kName, i);
     }
   }
@@ -179,9 +232,11 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     First first = first_block();
     Second second = second_block();
     const VectorX fv = f();
+    const detail::HingeTerms<Scalar, Nh_> hinges(m_knots, first_g());
     y.resize(u.size());
     for (Eigen::Index k = 0; k < u.size(); ++k) {
-      y[k] = second.step(Middle::evaluate(fv, first.step(u[k])));
+      const Scalar x1 = first.step(u[k]);
+      y[k] = second.step(hinges.add_output(m_theta, x1, Middle::evaluate(fv, x1)));
       if (!std::isfinite(y[k])) return false;
     }
     return true;
@@ -192,9 +247,55 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
 
-  /// Key-term form: regressor [u(k-nk..k-nk-nb1), -x1(k-1..k-na1), x1(k)^2..x1(k)^r, w(k-1..k-nb2),
-  /// -y(k-1..k-na2)], target y(k), with x1(k) the a-priori estimate [u lags, -x1 lags] . [b1, a1] and
-  /// w(k) = x1(k) + sum f_m x1(k)^m. The past x1 and w are the model's own in both methods: mapping
+ private:
+  /// The static nonlinearity on theta: the polynomial's terms and the hinges' together.
+  class MiddleTerms {
+   public:
+    explicit MiddleTerms(const WienerHammerstein& model)
+        : m_polynomial(detail::OutputPolynomialTerms<Scalar>::starting_at(model.r(), model.first_f())),
+          m_hinges(model.knots(), model.first_g()) {}
+    Scalar output(const Params& theta, Scalar x) const noexcept {
+      return m_hinges.add_output(theta, x, m_polynomial.output(theta, x));
+    }
+    template <typename Phi>
+    void regress(Scalar x, Phi& phi) const noexcept {
+      m_polynomial.regress(x, phi);
+      m_hinges.regress(x, phi);
+    }
+    template <typename Psi>
+    Scalar output_and_sensitivity(const Params& theta, Scalar x, Psi& psi, Scalar& slope) const noexcept {
+      const Scalar w = m_polynomial.output_and_sensitivity(theta, x, psi, slope);
+      m_hinges.regress(x, psi);
+      slope += m_hinges.slope(theta, x);
+      return m_hinges.add_output(theta, x, w);
+    }
+    /// The x that gives w (Newton from x_model, as the polynomial alone is inverted; a piecewise-linear
+    /// part is solved exactly once Newton is on the root's piece); x_model where the slope vanishes or
+    /// Newton does not settle in 30 steps.
+    Scalar invert(const Params& theta, Scalar w, Scalar x_model) const noexcept {
+      if (m_hinges.size() == 0) return m_polynomial.invert(theta, w, x_model);
+      const Scalar scale = Scalar(1) + std::abs(w);
+      Scalar x = x_model;
+      for (int iteration = 0; iteration < 30; ++iteration) {
+        const Scalar slope = m_polynomial.slope(theta, x) + m_hinges.slope(theta, x);
+        if (!(slope > Scalar(1e-6))) return x_model;
+        const Scalar step = (output(theta, x) - w) / slope;
+        x -= step;
+        if (!std::isfinite(x)) return x_model;
+        if (std::abs(step) <= Scalar(64) * Eigen::NumTraits<Scalar>::epsilon() * scale) return x;
+      }
+      return x_model;
+    }
+
+   private:
+    detail::OutputPolynomialTerms<Scalar> m_polynomial;
+    detail::HingeTerms<Scalar, Nh_> m_hinges;
+  };
+
+ public:
+  /// Key-term form: regressor [u(k-nk..k-nk-nb1), -x1(k-1..k-na1), x1(k)^2..x1(k)^r,
+  /// h(x1(k) - knots_1..nh), w(k-1..k-nb2), -y(k-1..k-na2)], target y(k), with x1(k) the a-priori
+  /// estimate [u lags, -x1 lags] . [b1, a1] and w(k) the static nonlinearity of it. The past x1 and w are the model's own in both methods: mapping
   /// the measured y back to w would run the inverse of B2, whose zeros may lie on the unit circle (a
   /// notch filter's do). The equation-error method stores them with the step's theta, the paper's
   /// a posteriori at the next step (eq. 24); the y lags are measured (the model's prediction where y
@@ -203,8 +304,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
    public:
     KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
         : m_first(model.na1(), model.nb1(), model.nk()),
-          m_middle(detail::OutputPolynomialTerms<Scalar>::starting_at(model.r(), model.first_f())),
-          m_w(model.nb2()), m_y(model.na2()), m_method(method), m_first_size(model.nb1() + 1 + model.na1()),
+          m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_method(method), m_first_size(model.nb1() + 1 + model.na1()),
           m_second(model.first_b2()), m_nb2(model.nb2()), m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_first.reset();
@@ -239,8 +339,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     }
     /// The x1(k) the measured y(k) says: w(k) = y(k) - (the second block's part from the past,
     /// `past` = [w lags] . b2 - [y lags] . a2, the model's own w lags), mapped back through the
-    /// polynomial (Newton from the model's x1, the branch nearest it; where f cannot be inverted
-    /// there, the model's x1). One step of B2's inverse only: the past w stay the model's, so B2's
+    /// static nonlinearity (Newton from the model's x1, the branch nearest it; where it cannot be
+    /// inverted there, the model's x1). One step of B2's inverse only: the past w stay the model's, so B2's
     /// zeros, which may lie on the unit circle, are never inverted.
     Scalar measured_x1(const Params& theta, Scalar y, Scalar x1_model, Scalar past) const noexcept {
       return m_middle.invert(theta, y - past, x1_model);
@@ -253,7 +353,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     }
 
     detail::LinearKeyTerms<Scalar, Na1_> m_first;
-    detail::OutputPolynomialTerms<Scalar> m_middle;
+    MiddleTerms m_middle;
     detail::History<Scalar> m_w;  // w(k-1..k-nb2)
     detail::History<Scalar> m_y;  // y(k-1..k-na2)
     KeyTermMethod m_method;
@@ -263,8 +363,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   };
 
   /// The output-error method's view: one step of the free run with its sensitivities. The first
-  /// block's as the Wiener model's (detail::LinearOutputError); dw/d[b1, a1] = f'(x1) dx1/d[b1, a1],
-  /// dw/df_m = x1^m; and through the second block
+  /// block's as the Wiener model's (detail::LinearOutputError); dw/d[b1, a1] = w'(x1) dx1/d[b1, a1],
+  /// dw/df_m = x1^m, dw/dg_j = h(x1 - knots_j); and through the second block
   ///   dy(k) = dw(k) + sum_i b2_i dw(k-i) + [w(k-i) at b2_i] + [-y(k-j) at a2_j] - sum_j a2_j dy(k-j),
   /// so the past w and their sensitivities are kept (nb2 of them) as the past y and theirs (SimulatedLags).
   class OutputErrorTerms {
@@ -274,9 +374,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
 
     explicit OutputErrorTerms(const WienerHammerstein& model, Eigen::Index /*hold*/ = 0)
         : m_first(model.na1(), model.nb1(), model.nk(), model.nb1() + 1 + model.na1()),
-          m_middle(detail::OutputPolynomialTerms<Scalar>::starting_at(model.r(), model.first_f())),
-          m_y(model.na2(), model.num_params()), m_nb2(model.nb2()), m_na2(model.na2()),
-          m_first_size(model.nb1() + 1 + model.na1()), m_front_size(m_first_size + model.r() - 1),
+          m_middle(model), m_y(model.na2(), model.num_params()), m_nb2(model.nb2()), m_na2(model.na2()),
+          m_first_size(model.nb1() + 1 + model.na1()), m_front_size(m_first_size + model.r() - 1 + model.nh()),
           m_dx(FirstSensitivity::Zero(m_first_size)), m_dw(FrontSensitivity::Zero(m_front_size)),
           m_w_lags(Eigen::Matrix<Scalar, Nb2_, 1>::Zero(model.nb2())),
           m_dw_lags(Eigen::Matrix<Scalar, kFrontParams, Nb2_>::Zero(m_front_size, model.nb2())),
@@ -291,7 +390,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x1 = m_first.step(theta, u, m_dx);
       Scalar slope;
-      const Scalar w = m_middle.output_and_sensitivity(theta, x1, m_dw, slope);  // dw/df_m = x1^m
+      const Scalar w = m_middle.output_and_sensitivity(theta, x1, m_dw, slope);  // dw/df_m = x1^m, dw/dg_j = h_j
       m_dw.head(m_first_size) = slope * m_dx;
       const Eigen::Index second = m_front_size;
       auto front = m_psi.head(m_front_size);
@@ -333,7 +432,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
 
    private:
     detail::LinearOutputError<Scalar, Na1_, kFirstParams> m_first;
-    detail::OutputPolynomialTerms<Scalar> m_middle;
+    MiddleTerms m_middle;
     detail::SimulatedLags<Scalar, Na2_, kNumParams> m_y;
     Eigen::Index m_nb2, m_na2, m_first_size, m_front_size;
     FirstSensitivity m_dx;   // d x1(k) / d [b1, a1]
@@ -348,7 +447,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
  private:
   Eigen::Index first_a() const noexcept { return m_nb1 + 1; }
   Eigen::Index first_f() const noexcept { return m_nb1 + 1 + m_na1; }
-  Eigen::Index first_b2() const noexcept { return first_f() + m_r - 1; }
+  Eigen::Index first_g() const noexcept { return first_f() + m_r - 1; }
+  Eigen::Index first_b2() const noexcept { return first_g() + m_nh; }
   Eigen::Index first_a2() const noexcept { return first_b2() + m_nb2; }
 
   template <typename T>
@@ -370,7 +470,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   }
 
   Params m_theta;
-  Eigen::Index m_na1, m_nb1, m_nk, m_r, m_na2, m_nb2;
+  Knots m_knots;
+  Eigen::Index m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2;
 };
 
 }  // namespace bonl

@@ -956,7 +956,7 @@ class Wiener:
         ...
 class WienerHammerstein:
     """
-    Wiener-Hammerstein model: the linear block x1 = z^-nk B1/A1 u, then w = sum_{m=1..r} f_m x1^m (f_1 = 1), then the linear block y = B2/A2 w (b2_0 = 1).
+    Wiener-Hammerstein model: the linear block x1 = z^-nk B1/A1 u, then the static nonlinearity w = sum_{m=1..r} f_m x1^m + sum_{j=1..nh} g_j h(x1 - knots_j) (f_1 = 1; h the hinge, zero between 0 and its knot), then the linear block y = B2/A2 w (b2_0 = 1).
     
     Parameters
     ----------
@@ -967,7 +967,9 @@ class WienerHammerstein:
     nk : int
         pure delay in samples (in the first block).
     r : int
-        degree of the static polynomial (2..32).
+        degree of the static polynomial (1..32; 1: no polynomial terms).
+    nh : int
+        hinges of the static nonlinearity, knots where its slope changes (0..32; 0: none).
     na2 : int
         poles of the second linear block (na2 >= 1).
     nb2 : int
@@ -978,19 +980,23 @@ class WienerHammerstein:
         a1_1..a1_na1.
     f : array_like, optional
         f_1..f_r with f_1 = 1.
+    knots : array_like, optional
+        knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated).
+    g : array_like, optional
+        g_1..g_nh, the change of slope outward of each knot.
     b2 : array_like, optional
         b2_0..b2_nb2 with b2_0 = 1.
     a2 : array_like, optional
         a2_1..a2_na2.
     """
-    ORDERS: typing.ClassVar[tuple] = ('na1', 'nb1', 'nk', 'r', 'na2', 'nb2')
+    ORDERS: typing.ClassVar[tuple] = ('na1', 'nb1', 'nk', 'r', 'nh', 'na2', 'nb2')
     def __copy__(self) -> WienerHammerstein:
         ...
     def __deepcopy__(self, memo: dict) -> WienerHammerstein:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na1: typing.SupportsInt | typing.SupportsIndex, nb1: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, na2: typing.SupportsInt | typing.SupportsIndex, nb2: typing.SupportsInt | typing.SupportsIndex, *, b1: typing.Any = None, a1: typing.Any = None, f: typing.Any = None, b2: typing.Any = None, a2: typing.Any = None) -> None:
+    def __init__(self, na1: typing.SupportsInt | typing.SupportsIndex, nb1: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, na2: typing.SupportsInt | typing.SupportsIndex, nb2: typing.SupportsInt | typing.SupportsIndex, *, b1: typing.Any = None, a1: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, b2: typing.Any = None, a2: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -1095,12 +1101,28 @@ class WienerHammerstein:
     def f(self, arg1: typing.Any) -> None:
         ...
     @property
+    def g(self) -> typing.Any:
+        """
+        numpy.ndarray: g_1..g_nh, the change of slope outward of each knot.
+        """
+    @g.setter
+    def g(self, arg1: typing.Any) -> None:
+        ...
+    @property
     def input_range(self) -> tuple[float, float]:
         """
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
     def input_range(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def knots(self) -> typing.Any:
+        """
+        numpy.ndarray: knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated).
+        """
+    @knots.setter
+    def knots(self, arg1: typing.Any) -> None:
         ...
     @property
     def na1(self) -> int:
@@ -1121,6 +1143,11 @@ class WienerHammerstein:
     def nb2(self) -> int:
         """
         int: B2 has nb2 + 1 coefficients b2_0..b2_nb2, b2_0 = 1.
+        """
+    @property
+    def nh(self) -> int:
+        """
+        int: hinges of the static nonlinearity, knots where its slope changes (0..32; 0: none).
         """
     @property
     def nk(self) -> int:
@@ -1158,7 +1185,7 @@ class WienerHammerstein:
     @property
     def r(self) -> int:
         """
-        int: degree of the static polynomial (2..32).
+        int: degree of the static polynomial (1..32; 1: no polynomial terms).
         """
     @property
     def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:

@@ -78,6 +78,18 @@ class OutputPolynomialTerms {
     return y;
   }
 
+  /// dy/dx at x.
+  template <typename Theta>
+  Scalar slope(const Theta& theta, Scalar x) const noexcept {
+    Scalar slope = Scalar(1);
+    Scalar power = Scalar(1);  // x^(m-1)
+    for (Eigen::Index m = 2; m <= m_r1; ++m) {
+      power *= x;
+      slope += Scalar(m) * theta[index(m)] * power;
+    }
+    return slope;
+  }
+
   /// The regressor's q entries: x^2..x^r1.
   template <typename Phi>
   void regress(Scalar x, Phi& phi) const noexcept {

@@ -1,0 +1,59 @@
+#pragma once
+// The hinges of the Wiener-Hammerstein model's static nonlinearity, its piecewise-linear part:
+//   sum_{j=1..nh} g_j h(x - kappa_j),  h = max(0, x - kappa) for kappa > 0 (right of the knot),
+//                                           min(0, x - kappa) for kappa < 0 (left of it),
+// each zero on the side of its knot where 0 lies, so that the nonlinearity keeps w(0) = 0 and slope
+// f_1 = 1 at 0 (hence no knot at 0: the slope there is the normalisation's). The slope changes by g_j
+// outward of knot j. The hinges are homogeneous of degree one, h_{s kappa}(s x) = s h_kappa(x) for
+// s > 0, so the model in other units is the same model with its knots scaled as x (rescaled()). The
+// g_j are entries of theta (from index `first` on); the knots are structure, copied in at construction.
+
+#include <Eigen/Core>
+
+#include <algorithm>
+
+namespace bonl::detail {
+
+template <typename Scalar, int Nh = Eigen::Dynamic>
+class HingeTerms {
+ public:
+  using Knots = Eigen::Matrix<Scalar, Nh, 1>;
+
+  HingeTerms(const Knots& knots, Eigen::Index first) : m_knots(knots), m_first(first) {}
+
+  /// h(x - kappa): zero between 0 and the knot, x - kappa beyond it.
+  static Scalar hinge(Scalar x, Scalar knot) noexcept {
+    return knot > Scalar(0) ? std::max(Scalar(0), x - knot) : std::min(Scalar(0), x - knot);
+  }
+  /// Is x beyond the knot (where the hinge's slope is 1)?
+  static bool beyond(Scalar x, Scalar knot) noexcept { return knot > Scalar(0) ? x > knot : x < knot; }
+
+  Eigen::Index size() const noexcept { return m_knots.size(); }
+
+  /// w plus the hinges' part at x.
+  template <typename Theta>
+  Scalar add_output(const Theta& theta, Scalar x, Scalar w) const noexcept {
+    for (Eigen::Index j = 0; j < m_knots.size(); ++j) w += theta[m_first + j] * hinge(x, m_knots[j]);
+    return w;
+  }
+  /// The slope of the hinges' part at x (its one-sided value beyond a knot).
+  template <typename Theta>
+  Scalar slope(const Theta& theta, Scalar x) const noexcept {
+    Scalar slope = Scalar(0);
+    for (Eigen::Index j = 0; j < m_knots.size(); ++j) {
+      if (beyond(x, m_knots[j])) slope += theta[m_first + j];
+    }
+    return slope;
+  }
+  /// The regressor's (and the output-error sensitivity's) g entries: h_j(x).
+  template <typename Phi>
+  void regress(Scalar x, Phi& phi) const noexcept {
+    for (Eigen::Index j = 0; j < m_knots.size(); ++j) phi[m_first + j] = hinge(x, m_knots[j]);
+  }
+
+ private:
+  Knots m_knots;
+  Eigen::Index m_first;  // the index of g_1 in theta
+};
+
+}  // namespace bonl::detail

@@ -82,6 +82,10 @@ TEMPLATE_LIST_TEST_CASE("run-time-size updates allocate nothing after constructi
   check_updates_allocate_nothing(known_system<TestType>(), bonl::ForgettingSchedule::constant(0.98));
 }
 
+TEST_CASE("the Wiener-Hammerstein model's hinges update allocation-free too", "[allocation]") {
+  check_updates_allocate_nothing(saturating_wiener_hammerstein(2), bonl::ForgettingSchedule::constant(0.98));
+}
+
 TEST_CASE("updates with recording on, the trace ceiling acting and automatic recovery allocate nothing",
           "[allocation]") {
   const auto structure = known_phw();

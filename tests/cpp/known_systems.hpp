@@ -58,6 +58,27 @@ constexpr bool has_backlash() {
   return false;
 }
 
+/// The Wiener-Hammerstein known system's blocks (x1 within about +-0.8 on random levels of amplitude 1)
+/// with a saturating piecewise-linear nonlinearity, two hinges: slope 1 between the knots -0.3 and
+/// 0.4, 0.3 left of -0.3 and 0.4 right of 0.4; `r` > 1 adds the square term 0.2 x1^2.
+inline bonl::WienerHammersteind saturating_wiener_hammerstein(Eigen::Index r = 1) {
+  const auto known = known_system<bonl::WienerHammersteind>();
+  bonl::WienerHammersteind model(3, 2, kNk, r, 2, 3, 2);
+  model.set_b1(known.b1());
+  model.set_a1(known.a1());
+  if (r > 1) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(r);
+    f[0] = 1.0;
+    f[1] = 0.2;
+    model.set_f(f);
+  }
+  model.set_knots(vec({-0.3, 0.4}));
+  model.set_g(vec({-0.7, -0.6}));
+  model.set_b2(known.b2());
+  model.set_a2(known.a2());
+  return model;
+}
+
 inline bonl::PaperARX known_arx() { return known_system<bonl::PaperARX>(); }
 inline bonl::PaperHammerstein known_hammerstein() { return known_system<bonl::PaperHammerstein>(); }
 inline bonl::PaperHammersteinWiener known_hammerstein_wiener() { return known_system<bonl::PaperHammersteinWiener>(); }

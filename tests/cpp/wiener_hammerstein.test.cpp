@@ -8,11 +8,12 @@
 // - Every scored split is a model whose own free run gives the split's cost: the normalisation
 //   (f_1 = 1, b2_0 = 1, the gain into b1) changes nothing the data see.
 // - The split scan keeps complex pairs together: the number of splits is what counting the groups gives.
-// - The piecewise-linear option (hinges at knots): its free run equals the blocks run by hand with the
-//   hinges written out; the same model in other units is rescaled() exactly (the knots move with y's
-//   unit); at the truth, the key terms give its noise-free output and its x1 (the inversion of the
-//   nonlinearity); the output-error refinement recovers it from a perturbed start with its knots; the
-//   splits place valid knots and each split's free run gives its cost; bad knots are refused.
+// - The piecewise-linear option (hinges at knots; saturating_wiener_hammerstein of known_systems.hpp):
+//   its free run equals the blocks run by hand with the hinges written out; the same model in other
+//   units is rescaled() exactly (the knots move with y's unit); at the truth, the key terms give its
+//   noise-free output and its x1 (the inversion of the nonlinearity); the output-error refinement
+//   recovers it from a perturbed start with its knots; the splits place valid knots and each split's
+//   free run gives its cost; bad knots are refused.
 
 #include "test_support.hpp"
 
@@ -40,27 +41,6 @@ bonl::LinearBlock<double> linear_block(const Eigen::VectorXd& a, const Eigen::Ve
 double fresh_nrmse(const bonl::WienerHammersteind& truth, const bonl::WienerHammersteind& model) {
   const Eigen::VectorXd fresh = fresh_input();
   return bonl::metrics::nrmse(truth.simulate(fresh), model.simulate(fresh));
-}
-
-/// The known system's blocks (x1 within about +-0.8 on these inputs) with a saturating piecewise-linear
-/// nonlinearity: slope 1 between the knots -0.3 and 0.4, 0.3 left of -0.3 and 0.4 right of 0.4; `r` > 1
-/// adds a square term.
-bonl::WienerHammersteind saturating_system(Eigen::Index r = 1) {
-  const auto known = known_system<bonl::WienerHammersteind>();
-  bonl::WienerHammersteind model(3, 2, kNk, r, 2, 3, 2);
-  model.set_b1(known.b1());
-  model.set_a1(known.a1());
-  if (r > 1) {
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(r);
-    f[0] = 1.0;
-    f[1] = 0.2;
-    model.set_f(f);
-  }
-  model.set_knots(vec({-0.3, 0.4}));
-  model.set_g(vec({-0.7, -0.6}));
-  model.set_b2(known.b2());
-  model.set_a2(known.a2());
-  return model;
 }
 
 /// The split scan's input, random levels, and the variance of a truth's output to it.
@@ -144,7 +124,7 @@ TEST_CASE("the piecewise-linear free run is the first block, the hinges and the 
           "[wiener_hammerstein][hinges]") {
   for (Eigen::Index r : {1, 2}) {
     INFO("r = " << r);
-    const auto model = saturating_system(r);
+    const auto model = saturating_wiener_hammerstein(r);
     const Eigen::VectorXd u = fresh_input();
     auto first = linear_block(model.a1(), model.b1(), kNk);
     auto second = linear_block(model.a2(), model.b2(), 0);
@@ -165,7 +145,7 @@ TEST_CASE("the piecewise-linear free run is the first block, the hinges and the 
 
 TEST_CASE("a piecewise-linear model in other units is rescaled exactly: its knots move with the output's unit",
           "[wiener_hammerstein][hinges]") {
-  const auto model = saturating_system(2);
+  const auto model = saturating_wiener_hammerstein(2);
   const double su = 3.0, sy = 0.01;
   const auto scaled = bonl::rescaled(model, su, sy);
   CHECK(scaled.knots().isApprox(sy * model.knots(), 1e-15));
@@ -177,7 +157,7 @@ TEST_CASE("a piecewise-linear model in other units is rescaled exactly: its knot
 
 TEST_CASE("the key terms of a piecewise-linear system reproduce its noise-free output and internal variable",
           "[wiener_hammerstein][hinges]") {
-  const auto truth = saturating_system(2);
+  const auto truth = saturating_wiener_hammerstein(2);
   const Eigen::VectorXd u = fresh_input();
   const Eigen::VectorXd y = truth.simulate(u);
   auto first = linear_block(truth.a1(), truth.b1(), kNk);
@@ -207,7 +187,7 @@ TEST_CASE("the key terms of a piecewise-linear system reproduce its noise-free o
 
 TEST_CASE("the output-error refinement recovers a piecewise-linear system from a perturbed start with its knots",
           "[wiener_hammerstein][hinges][refinement]") {
-  const auto truth = saturating_system();
+  const auto truth = saturating_wiener_hammerstein();
   const Eigen::VectorXd u = bonl::signals::random_levels(5000, 5, 1.0, 1);
   auto start = truth;
   start.set_g(truth.g() * 0.5);
@@ -222,19 +202,20 @@ TEST_CASE("the output-error refinement recovers a piecewise-linear system from a
 
 TEST_CASE("the splits of a piecewise-linear model place valid knots, and each split's free run gives its cost",
           "[wiener_hammerstein][hinges][start]") {
-  const auto splits = checked_splits(saturating_system(), bonl::WienerHammersteind(3, 2, kNk, 1, 4, 3, 2), 0.001);
+  const bonl::WienerHammersteind structure(3, 2, kNk, 1, 4, 3, 2);
+  const auto splits = checked_splits(saturating_wiener_hammerstein(), structure, 0.001);
   for (const auto& split : splits) {
     const Eigen::VectorXd knots = split.model.knots();
     REQUIRE(knots.size() == 4);
     CHECK((knots.array() != 0.0).all());
     CHECK((knots.tail(3) - knots.head(3)).minCoeff() > 0.0);
   }
-  CHECK(splits.front().cost <= 0.05 * output_variance(saturating_system()));
+  CHECK(splits.front().cost <= 0.05 * output_variance(saturating_wiener_hammerstein()));
 }
 
 TEST_CASE("identify fits a piecewise-linear system from its own knots and from knots it places",
           "[wiener_hammerstein][hinges][identify]") {
-  const auto truth = saturating_system();
+  const auto truth = saturating_wiener_hammerstein();
   const Eigen::VectorXd u = bonl::signals::random_levels(5000, 5, 1.0, 1);
   const Eigen::VectorXd y = truth.simulate(u);
   // With the system's knots, the recursive starts can reach the system itself.
@@ -247,12 +228,14 @@ TEST_CASE("identify fits a piecewise-linear system from its own knots and from k
   CHECK(approximate <= 0.05);
 }
 
-TEST_CASE("bad knots are refused with a message, and the model is left as it was", "[wiener_hammerstein][hinges][bad_input]") {
-  auto model = saturating_system();
+TEST_CASE("bad knots are refused with a message, and the model is left as it was",
+          "[wiener_hammerstein][hinges][bad_input]") {
+  auto model = saturating_wiener_hammerstein();
   const auto before = model.knots();
   CHECK_THROWS_WITH(model.set_knots(vec({0.4, -0.3})),
                     "bonl: knots must be strictly increasing, got 0.4 before -0.3 at index 1");
-  CHECK_THROWS_WITH(model.set_knots(vec({-0.3, 0.0})), "bonl: knots must not hold 0 (the slope at 0 is f_1 = 1), got 0 at index 1");
+  CHECK_THROWS_WITH(model.set_knots(vec({-0.3, 0.0})),
+                    "bonl: knots must not hold 0 (the slope at 0 is f_1 = 1), got 0 at index 1");
   CHECK_THROWS_WITH(model.set_knots(vec({-0.3, 0.4, 1.0})), Catch::Matchers::Contains("knots"));
   CHECK_THROWS_WITH(model.set_knots(vec({-0.3, std::nan("")})), Catch::Matchers::Contains("knots"));
   CHECK(model.knots() == before);

@@ -180,8 +180,8 @@ ARX<Scalar> best_linear_approximation(const Records<Scalar>& records, Eigen::Ind
 
 /// The splits of the records' best linear approximation between the blocks of `structure` (a
 /// WienerHammerstein model; its parameter values and knots are not used), each with its static
-/// nonlinearity fitted by least squares (the knots at the quantiles of the split's x1), best first. The records are deviations from the operating point (identify()
-/// hands them so). Empty where the BLA's least squares broke down, its b_0 = 0 or not finite, or
+/// nonlinearity fitted by least squares (the knots at the quantiles of the split's x1), best first.
+/// The records are deviations from the operating point (identify() hands them so). Empty where the BLA's least squares broke down, its b_0 = 0 or not finite, or
 /// every fit is degenerate (no linear term).
 template <class Model>
 std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model& structure,
@@ -273,7 +273,9 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
           g[j] = c[r + from] / (c[0] * scale);
         }
         bool valid = knot.allFinite() && g.allFinite();
-        for (Eigen::Index j = 0; j < nh; ++j) valid = valid && knot[j] != Scalar(0) && (j == 0 || knot[j - 1] < knot[j]);
+        for (Eigen::Index j = 0; j < nh; ++j) {
+          valid = valid && knot[j] != Scalar(0) && (j == 0 || knot[j - 1] < knot[j]);
+        }
         if (!valid) continue;
         model.set_knots(knot);
         model.set_g(g);

@@ -295,17 +295,17 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
  public:
   /// Key-term form: regressor [u(k-nk..k-nk-nb1), -x1(k-1..k-na1), x1(k)^2..x1(k)^r,
   /// h(x1(k) - knots_1..nh), w(k-1..k-nb2), -y(k-1..k-na2)], target y(k), with x1(k) the a-priori
-  /// estimate [u lags, -x1 lags] . [b1, a1] and w(k) the static nonlinearity of it. The past x1 and w are the model's own in both methods: mapping
-  /// the measured y back to w would run the inverse of B2, whose zeros may lie on the unit circle (a
-  /// notch filter's do). The equation-error method stores them with the step's theta, the paper's
-  /// a posteriori at the next step (eq. 24); the y lags are measured (the model's prediction where y
-  /// is NaN). predict() runs the equation-error form.
+  /// estimate [u lags, -x1 lags] . [b1, a1] and w(k) the static nonlinearity of it. The past x1 and
+  /// w are the model's own in both methods: mapping the measured y back to w would run the inverse of
+  /// B2, whose zeros may lie on the unit circle (a notch filter's do). The equation-error method
+  /// stores them with the step's theta, the paper's a posteriori at the next step (eq. 24); the y
+  /// lags are measured (the model's prediction where y is NaN). predict() runs the equation-error form.
   class KeyTerms {
    public:
     KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
         : m_first(model.na1(), model.nb1(), model.nk()),
-          m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_method(method), m_first_size(model.nb1() + 1 + model.na1()),
-          m_second(model.first_b2()), m_nb2(model.nb2()), m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
+          m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_method(method),
+          m_first_size(model.nb1() + 1 + model.na1()), m_second(model.first_b2()), m_nb2(model.nb2()), m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_first.reset();
       m_w.clear();

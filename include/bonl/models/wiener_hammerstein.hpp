@@ -1,17 +1,17 @@
 #pragma once
 // Wiener-Hammerstein model: a linear block, a static nonlinearity, a second linear block
 //   x1(k) = -sum_{j=1..na1} a1_j x1(k-j) + sum_{i=0..nb1} b1_i u(k-nk-i),
-//   w(k)  = x1(k) + sum_{m=2..r} f_m x1(k)^m + sum_{j=1..nh} g_j h(x1(k) - kappa_j),
+//   w(k)  = x1(k) + sum_{m=2..r} f_m x1(k)^m + sum_{j=1..nh} g_j h(x1(k) - knots_j),
 //   y(k)  = -sum_{j=1..na2} a2_j y(k-j) + sum_{i=0..nb2} b2_i w(k-i),
 // normalised to f_1 = 1 and b2_0 = 1 (the gain lives in b1; the whole delay in the first block, where
 // a delay commutes with the static nonlinearity, so that b2_0 is not zero). The nonlinearity is a
-// polynomial (nh = 0), piecewise linear (r = 1: slope 1 at 0, changing by g_j at the knots kappa_j,
+// polynomial (nh = 0), piecewise linear (r = 1: slope 1 at 0, changing by g_j at the knots_j,
 // for saturating circuits) or both; the hinges h are those of models/detail/hinge_terms.hpp. The knots
 // are structure, not estimated: the model's own (the defaults, set_knots(), a model file), or placed
 // from the data by the start from the best linear approximation.
 // Parameters: b1_0..b1_nb1, a1_1..a1_na1, f_2..f_r, g_1..g_nh, b2_1..b2_nb2, a2_1..a2_na2.
 // Key-term form, separating twice (w's key term x1, then y's key term w(k) with b2_0 = 1):
-//   y(k) = [u lags] . b1 - [x1 lags] . a1 + sum_{m>=2} f_m x1(k)^m + sum_j g_j h(x1(k) - kappa_j)
+//   y(k) = [u lags] . b1 - [x1 lags] . a1 + sum_{m>=2} f_m x1(k)^m + sum_j g_j h(x1(k) - knots_j)
 //          + [w lags] . b2 - [y lags] . a2,
 // linear in theta once x1 and w are estimated. estimator/wiener_hammerstein_start.hpp starts
 // identify() from the best linear approximation.
@@ -107,7 +107,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     m_theta = Params::Zero(nb1 + 1 + na1 + r - 1 + nh + nb2 + na2);
     m_knots = Knots(nh);
     for (Eigen::Index j = 0; j < nh; ++j) {
-      const Eigen::Index position = j - nh / 2;  // -floor(nh/2)..ceil(nh/2) - 1, then 0 moved to the end
+      const Eigen::Index position = j - nh / 2;  // -floor(nh/2)..ceil(nh/2) - 1; 0 and up move up one
       m_knots[j] = static_cast<Scalar>(position < 0 ? position : position + 1);
     }
   }

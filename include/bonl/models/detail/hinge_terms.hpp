@@ -1,10 +1,10 @@
 #pragma once
 // The hinges of the Wiener-Hammerstein model's static nonlinearity, its piecewise-linear part:
-//   sum_{j=1..nh} g_j h(x - kappa_j),  h = max(0, x - kappa) for kappa > 0 (right of the knot),
-//                                           min(0, x - kappa) for kappa < 0 (left of it),
+//   sum_{j=1..nh} g_j h(x - knot_j),  h = max(0, x - knot) for knot > 0 (right of the knot),
+//                                        min(0, x - knot) for knot < 0 (left of it),
 // each zero on the side of its knot where 0 lies, so that the nonlinearity keeps w(0) = 0 and slope
 // f_1 = 1 at 0 (hence no knot at 0: the slope there is the normalisation's). The slope changes by g_j
-// outward of knot j. The hinges are homogeneous of degree one, h_{s kappa}(s x) = s h_kappa(x) for
+// outward of knot j. The hinges are homogeneous of degree one, h_{s knot}(s x) = s h_knot(x) for
 // s > 0, so the model in other units is the same model with its knots scaled as x (rescaled()). The
 // g_j are entries of theta (from index `first` on); the knots are structure, copied in at construction.
 
@@ -21,7 +21,7 @@ class HingeTerms {
 
   HingeTerms(const Knots& knots, Eigen::Index first) : m_knots(knots), m_first(first) {}
 
-  /// h(x - kappa): zero between 0 and the knot, x - kappa beyond it.
+  /// h(x - knot): zero between 0 and the knot, x - knot beyond it.
   static Scalar hinge(Scalar x, Scalar knot) noexcept {
     return knot > Scalar(0) ? std::max(Scalar(0), x - knot) : std::min(Scalar(0), x - knot);
   }

@@ -65,6 +65,17 @@ void require_size(const Eigen::DenseBase<Derived>& values, Eigen::Index size, co
                                      " entries, got " + std::to_string(values.size()));
 }
 
+/// The first index where `values` is 0 or not above the entry before it (strictly increasing, no 0:
+/// a ParameterDescription's `increasing`, the Wiener-Hammerstein model's knots); -1 where there is none.
+template <typename Derived>
+Eigen::Index first_not_increasing_or_zero(const Eigen::DenseBase<Derived>& values) {
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    const auto value = values.derived().coeff(i);
+    if (value == 0 || (i > 0 && !(values.derived().coeff(i - 1) < value))) return i;
+  }
+  return -1;
+}
+
 /// target = value, after checking that value has target's size and only finite entries. target may
 /// be a block of a larger vector (a segment of theta).
 template <typename Target, typename Value>

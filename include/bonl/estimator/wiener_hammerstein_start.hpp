@@ -30,6 +30,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "../detail/validate.hpp"
 #include "../error.hpp"
 #include "../models/arx.hpp"
 #include "../models/detail/hinge_terms.hpp"
@@ -146,9 +147,10 @@ inline Eigen::VectorXd coefficients_of(const std::vector<std::vector<Complex>>& 
 }
 
 /// The knots of nh hinges at the quantiles j / (nh + 1), j = 1..nh, of the nonzero entries of x;
-/// empty where they are not strictly increasing (too few distinct values).
+/// none where they are not strictly increasing (too few distinct values); empty for nh = 0.
 template <typename Vector>
 std::optional<Vector> quantile_knots(const Vector& x, Eigen::Index nh) {
+  if (nh == 0) return Vector(0);  // a polynomial alone: nothing to sort
   std::vector<typename Vector::Scalar> values;
   for (Eigen::Index k = 0; k < x.size(); ++k) {
     if (x[k] != 0) values.push_back(x[k]);
@@ -159,8 +161,8 @@ std::optional<Vector> quantile_knots(const Vector& x, Eigen::Index nh) {
   const double last = static_cast<double>(values.size() - 1);
   for (Eigen::Index j = 0; j < nh; ++j) {
     knots[j] = values[static_cast<std::size_t>(std::floor(last * double(j + 1) / double(nh + 1)))];
-    if (j > 0 && !(knots[j - 1] < knots[j])) return std::nullopt;
   }
+  if (first_not_increasing_or_zero(knots) >= 0) return std::nullopt;  // too few distinct values
   return knots;
 }
 
@@ -181,8 +183,9 @@ ARX<Scalar> best_linear_approximation(const Records<Scalar>& records, Eigen::Ind
 /// The splits of the records' best linear approximation between the blocks of `structure` (a
 /// WienerHammerstein model; its parameter values and knots are not used), each with its static
 /// nonlinearity fitted by least squares (the knots at the quantiles of the split's x1), best first.
-/// The records are deviations from the operating point (identify() hands them so). Empty where the BLA's least squares broke down, its b_0 = 0 or not finite, or
-/// every fit is degenerate (no linear term).
+/// The records are deviations from the operating point (identify() hands them so). Empty where the
+/// BLA's least squares broke down, its b_0 = 0 or not finite, or every fit is degenerate (no linear
+/// term).
 template <class Model>
 std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model& structure,
                                                                      const Records<typename Model::Scalar>& records,
@@ -272,11 +275,7 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
           knot[j] = c[0] * scale * (*knots)[from];
           g[j] = c[r + from] / (c[0] * scale);
         }
-        bool valid = knot.allFinite() && g.allFinite();
-        for (Eigen::Index j = 0; j < nh; ++j) {
-          valid = valid && knot[j] != Scalar(0) && (j == 0 || knot[j - 1] < knot[j]);
-        }
-        if (!valid) continue;
+        if (!knot.allFinite() || !g.allFinite() || detail::first_not_increasing_or_zero(knot) >= 0) continue;
         model.set_knots(knot);
         model.set_g(g);
       }

@@ -326,13 +326,10 @@ Model model_from_document(const Json& document) {
         fail(key + " (" + parameter.meaning + ") must be >= 0, got " +
              show_number(static_cast<double>(value.minCoeff())));
       }
-      if (parameter.increasing) {
-        for (Eigen::Index j = 0; j < value.size(); ++j) {
-          if (value[j] == 0 || (j > 0 && !(value[j - 1] < value[j]))) {
-            fail(key + " (" + parameter.meaning + ") must be strictly increasing and hold no 0, got " +
-                 show_number(static_cast<double>(value[j])) + " at index " + std::to_string(j));
-          }
-        }
+      const Eigen::Index bad = parameter.increasing ? bonl::detail::first_not_increasing_or_zero(value) : -1;
+      if (bad >= 0) {
+        fail(key + " (" + parameter.meaning + ") must be strictly increasing and hold no 0, got " +
+             show_number(static_cast<double>(value[bad])) + " at index " + std::to_string(bad));
       }
       model.set_parameter(i, value);
     }

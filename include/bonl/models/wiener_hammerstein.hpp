@@ -155,14 +155,13 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   void set_knots(const Eigen::MatrixBase<T>& knots) {
     detail::require_size(knots, m_nh, "knots");
     detail::require_finite(knots, "knots");
-    for (Eigen::Index j = 0; j < m_nh; ++j) {
-      if (knots[j] == 0) {
-        detail::fail("knots must not hold 0 (the slope at 0 is f_1 = 1), got 0 at index " + std::to_string(j));
-      }
-      if (j > 0 && !(knots[j - 1] < knots[j])) {
-        detail::fail("knots must be strictly increasing, got " + detail::format_number(double(knots[j - 1])) +
-                     " before " + detail::format_number(double(knots[j])) + " at index " + std::to_string(j));
-      }
+    const Eigen::Index j = detail::first_not_increasing_or_zero(knots);
+    if (j >= 0 && knots[j] == 0) {
+      detail::fail("knots must not hold 0 (the slope at 0 is f_1 = 1), got 0 at index " + std::to_string(j));
+    }
+    if (j >= 0) {
+      detail::fail("knots must be strictly increasing, got " + detail::format_number(double(knots[j - 1])) +
+                   " before " + detail::format_number(double(knots[j])) + " at index " + std::to_string(j));
     }
     m_knots = knots;
   }
@@ -305,7 +304,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
         : m_first(model.na1(), model.nb1(), model.nk()),
           m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_method(method),
-          m_first_size(model.nb1() + 1 + model.na1()), m_second(model.first_b2()), m_nb2(model.nb2()), m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
+          m_first_size(model.nb1() + 1 + model.na1()), m_second(model.first_b2()), m_nb2(model.nb2()),
+          m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_first.reset();
       m_w.clear();
@@ -340,8 +340,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     /// The x1(k) the measured y(k) says: w(k) = y(k) - (the second block's part from the past,
     /// `past` = [w lags] . b2 - [y lags] . a2, the model's own w lags), mapped back through the
     /// static nonlinearity (Newton from the model's x1, the branch nearest it; where it cannot be
-    /// inverted there, the model's x1). One step of B2's inverse only: the past w stay the model's, so B2's
-    /// zeros, which may lie on the unit circle, are never inverted.
+    /// inverted there, the model's x1). One step of B2's inverse only: the past w stay the model's,
+    /// so B2's zeros, which may lie on the unit circle, are never inverted.
     Scalar measured_x1(const Params& theta, Scalar y, Scalar x1_model, Scalar past) const noexcept {
       return m_middle.invert(theta, y - past, x1_model);
     }

@@ -114,13 +114,16 @@ Model make_known_model() {
     // The Wiener-Hammerstein model: both blocks the known linear block's (b1 at a tenth, so that the
     // polynomial sees moderate x1), its normalised f the output polynomial's q.
     const bool normalised_f = name == "f" && Model::kDescription.parameters[i].normalised != nullptr;
+    // Any other block (the W-H model's knots and g: none at nh = 0) keeps the structure's value,
+    // which is valid by construction: a block this function does not know cannot make it throw.
     const Eigen::VectorXd value = name == "b" || name == "b2" ? true_b()
                                   : name == "b1"             ? Eigen::VectorXd(0.1 * true_b())
                                   : name == "a" || name == "a1" || name == "a2" ? true_a()
                                   : normalised_f || name == "q"                 ? true_q()
                                   : name == "f"                                 ? true_f()
                                   : name == "p"                                 ? true_p()
-                                                                                : Eigen::VectorXd::Constant(1, kTrueC);
+                                  : name == "c"                                 ? Eigen::VectorXd::Constant(1, kTrueC)
+                                                                                : model.parameter(i).template cast<double>();
     model.set_parameter(i, value.cast<S>());
   }
   return model;

@@ -114,7 +114,7 @@ def phw_record(samples: int = 5000) -> tuple[np.ndarray, np.ndarray]:
     return u, y
 
 
-def bonl_bindings(quick: bool) -> dict:
+def bonl_bindings(quick: bool, smoke: bool = False) -> dict:
     import bonl
 
     u, y = phw_record(5000)
@@ -128,7 +128,7 @@ def bonl_bindings(quick: bool) -> dict:
     }
     for name, kwargs in cases.items():
         bonl.identify(structure, u, y, **kwargs)  # warm-up
-        repeats = (2 if quick else 5) if name == "output_error" else (5 if quick else 30)
+        repeats = 1 if smoke else (2 if quick else 5) if name == "output_error" else (5 if quick else 30)
         seconds = best_of(repeats, lambda: bonl.identify(structure, u, y, **kwargs))
         out[f"identify_{name}_5000_ms"] = seconds * 1e3
 
@@ -145,7 +145,7 @@ def bonl_bindings(quick: bool) -> dict:
         for k in range(len(u)):
             estimator.update(u[k], y[k])
 
-    repeats = 3 if quick else 10
+    repeats = 1 if smoke else 3 if quick else 10
     out["estimator_update_call_ns"] = best_of(repeats, loop_floats) / len(u) * 1e9
     out["estimator_update_call_numpy_scalars_ns"] = best_of(repeats, loop_numpy) / len(u) * 1e9
 
@@ -167,6 +167,8 @@ def bonl_bindings(quick: bool) -> dict:
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer repeats")
+    parser.add_argument("--smoke", action="store_true",
+                        help="every measurement once, to check that it runs (the CI's smoke test); figures not judged")
     parser.add_argument("--out", help="write the JSON here instead of stdout")
     args = parser.parse_args()
 
@@ -174,8 +176,8 @@ def main() -> int:
         "python": sys.version.split()[0],
         "numpy_version": np.__version__,
         "platform": platform.platform(),
-        "rls": rls_baselines(5 if args.quick else 20),
-        "bonl": bonl_bindings(args.quick),
+        "rls": rls_baselines(1 if args.smoke else 5 if args.quick else 20),
+        "bonl": bonl_bindings(args.quick, args.smoke),
     }
     text = json.dumps(result, indent=2)
     if args.out:

@@ -7,11 +7,12 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh
 bonl_ensure_deps
 
-# The benchmarks are not built here (bench/run builds and runs them): they cost the CI a minute and
-# a quarter of its 25 (docs/performance.md, "The CI's time").
+# The benchmarks are built here too, and run once in a smoke mode (ctest's bench/smoke/*, pytest's
+# test_bench.py: every benchmark for a millisecond, figures not judged), so that one that throws or
+# no longer builds fails the CI; bench/run measures them.
 step "configure (build/ci)"
 cmake -S . -B build/ci -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DBONL_BUILD_TESTS=ON -DBONL_BUILD_BENCH=OFF -DBONL_WARNINGS_AS_ERRORS=ON
+  -DBONL_BUILD_TESTS=ON -DBONL_BUILD_BENCH=ON -DBONL_WARNINGS_AS_ERRORS=ON
 
 step "build"
 cmake --build build/ci -j2
@@ -28,12 +29,12 @@ bash examples/consumer/check.sh build/ci
 
 step "Python: build and install the package in a virtual environment (build/venv)"
 [[ -x build/venv/bin/python ]] || python3 -m venv build/venv
-build/venv/bin/python -m pip install -q --disable-pip-version-check numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm
+build/venv/bin/python -m pip install -q --disable-pip-version-check numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm padasip
 build/venv/bin/python -m pip install -q --disable-pip-version-check .
 
 step "pytest"
 pytest_status=0
-BONL_MODEL_TOOL="$PWD/build/ci/tests/bonl_model_tool" build/venv/bin/python -m pytest tests/python -q -p no:cacheprovider || pytest_status=$?
+BONL_MODEL_TOOL="$PWD/build/ci/tests/bonl_model_tool" BONL_BENCH_DIR="$PWD/build/ci/bench" build/venv/bin/python -m pytest tests/python -q -p no:cacheprovider || pytest_status=$?
 # pytest exits 5 when it collected nothing: that is a failure here too.
 ((pytest_status == 0)) || status=1
 

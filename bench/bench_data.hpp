@@ -59,6 +59,39 @@ const Record<Scalar>& record() {
   }
 }
 
+/// Records the P-H-W structure at the paper's orders (nk = 8) does not fit, on which the output-error
+/// update's safeguards work on most samples (the estimator benchmarks' `/<data>` rows): the
+/// benchmark record's input, and
+/// - DelayedFir: a tenth of it through a pure delay of 12 samples, with the record's noise: the
+///   small input excites the estimate weakly, the trace ceiling limits the forgetting on most samples;
+/// - Integrator: its sum from sample 8 on (a pole at 1, which the stability radius 0.999 forbids),
+///   with the record's noise: most updates are shortened by the stability projection.
+enum class Mismatch { DelayedFir, Integrator };
+constexpr Mismatch kMismatches[] = {Mismatch::DelayedFir, Mismatch::Integrator};
+inline const char* name(Mismatch data) { return data == Mismatch::DelayedFir ? "delayed_fir" : "integrator"; }
+
+template <typename Scalar>
+const Record<Scalar>& mismatched_record(Mismatch data) {
+  static const auto make = [](Mismatch which) {
+    const Record<double>& known = record_double();
+    const Eigen::Index n = known.u.size();
+    const Eigen::VectorXd noise = bonl::signals::white_noise(n, 0.01, 2);
+    Record<Scalar> r;
+    Eigen::VectorXd u = known.u, y = Eigen::VectorXd::Zero(n);
+    if (which == Mismatch::DelayedFir) {
+      u *= 0.1;
+      for (Eigen::Index k = 12; k < n; ++k) y[k] = u[k - 12];
+    } else {
+      for (Eigen::Index k = 8; k < n; ++k) y[k] = y[k - 1] + u[k - 8];
+    }
+    r.u = u.cast<Scalar>();
+    r.y = (y + noise).cast<Scalar>();
+    return r;
+  };
+  static const Record<Scalar> fir = make(Mismatch::DelayedFir), integrator = make(Mismatch::Integrator);
+  return data == Mismatch::DelayedFir ? fir : integrator;
+}
+
 /// The benchmarked models at the paper's orders, in scalar type S, with fixed (paper-order template)
 /// or run-time sizes. Every model of bonl::Models, each named by its kName; a new model is one entry.
 template <typename S, bool Fixed>
@@ -67,6 +100,7 @@ struct PaperOrderModels {
   static constexpr int Nb = Fixed ? 2 : Eigen::Dynamic;
   static constexpr int R = Fixed ? 3 : Eigen::Dynamic;
   static constexpr int Nh = Fixed ? 0 : Eigen::Dynamic;  // the Wiener-Hammerstein model's hinges: none
+  using PseudoHammersteinWiener = bonl::PseudoHammersteinWiener<S, Na, Nb, R>;
   using type = bonl::ModelList<bonl::ARX<S, Na, Nb>, bonl::Hammerstein<S, Na, Nb, R>,
                                bonl::HammersteinWiener<S, Na, Nb, R, R>, bonl::PseudoHammersteinWiener<S, Na, Nb, R>,
                                bonl::Wiener<S, Na, Nb, R>, bonl::WienerHammerstein<S, Na, Nb, R, Nh, Na, Nb>>;
@@ -87,21 +121,29 @@ Model make_structure() {
   return bonl::make_model<Model>(orders);
 }
 
-/// Updates an estimator of `structure` over the record `passes` times, each pass from the initial
-/// estimate (reset()), and returns how many updates ran the RLS step (UpdateStatus::Updated).
+/// What the safeguards did over passes of an estimator over a record: how many updates ran the RLS
+/// step (UpdateStatus::Updated), had their forgetting limited by the trace ceiling, or were shortened
+/// by the stability projection.
+struct PassCounts {
+  long updated = 0, forgetting_limited = 0, projections = 0;
+};
+
+/// Updates an estimator of `structure` over `data` `passes` times, each pass from the initial
+/// estimate (reset()), and counts what the updates did.
 template <class Model>
-long count_updates(const Model& structure, const bonl::EstimatorOptions& options, long passes = 1) {
-  using Scalar = typename Model::Scalar;
-  const auto& data = record<Scalar>();
+PassCounts count_updates(const Model& structure, const bonl::EstimatorOptions& options,
+                         const Record<typename Model::Scalar>& data, long passes = 1) {
   bonl::Estimator<Model> estimator(structure, options);
-  long updated = 0;
+  PassCounts counts;
   for (long pass = 0; pass < passes; ++pass) {
     estimator.reset();
     for (Eigen::Index k = 0; k < data.u.size(); ++k) {
-      updated += estimator.update(data.u[k], data.y[k]) == bonl::UpdateStatus::Updated ? 1 : 0;
+      counts.updated += estimator.update(data.u[k], data.y[k]) == bonl::UpdateStatus::Updated ? 1 : 0;
     }
+    counts.forgetting_limited += static_cast<long>(estimator.health().forgetting_limited);
+    counts.projections += static_cast<long>(estimator.health().projections);
   }
-  return updated;
+  return counts;
 }
 
 /// A stable model with the known parameters, each block by its name (b, a, f, p, q, c).

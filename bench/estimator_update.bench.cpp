@@ -9,6 +9,12 @@
 // inside the backlash gap (about a quarter here), so its average is below the cost of a full update;
 // the output-error method updates on every sample. Float runs of the equation-error and paper
 // methods use P(0) = 1e4 I (see update()); a numerical failure would show here as a small `updated`.
+//
+// The cost depends on the data: where the structure does not fit them, the output-error update's
+// safeguards work on most samples. update/PseudoHammersteinWiener/<fixed|dynamic>/double/<data>
+// (data: delayed_fir, integrator; bench_data.hpp) time the default estimator there; the counters
+// `limited` and `projected` are the fractions of samples whose forgetting the trace ceiling limited
+// and whose step the stability projection shortened.
 
 #include <benchmark/benchmark.h>
 
@@ -19,9 +25,8 @@ namespace {
 using bonl_bench::record;
 
 template <class Model>
-void update(benchmark::State& state, bonl::Method method) {
+void update(benchmark::State& state, bonl::Method method, const bonl_bench::Record<typename Model::Scalar>& data) {
   using Scalar = typename Model::Scalar;
-  const auto& data = record<Scalar>();
   const Model structure = bonl_bench::make_structure<Model>();
   bonl::EstimatorOptions options;
   options.method = method;
@@ -31,8 +36,8 @@ void update(benchmark::State& state, bonl::Method method) {
   if constexpr (std::is_same_v<Scalar, float>) {
     if (method != bonl::Method::OutputError) options.p0 = 1e4;  // the output-error default, 10, is fine
   }
-  const double updated = static_cast<double>(bonl_bench::count_updates(structure, options)) /
-                         static_cast<double>(data.u.size());
+  const bonl_bench::PassCounts counts = bonl_bench::count_updates(structure, options, data);
+  const auto fraction = [&](long count) { return static_cast<double>(count) / static_cast<double>(data.u.size()); };
   bonl::Estimator<Model> estimator(structure, options);
   Eigen::Index k = 0;
   for (auto _ : state) {
@@ -49,7 +54,9 @@ void update(benchmark::State& state, bonl::Method method) {
   benchmark::DoNotOptimize(estimator.theta().data());
   benchmark::ClobberMemory();
   state.SetItemsProcessed(state.iterations());
-  state.counters["updated"] = updated;
+  state.counters["updated"] = fraction(counts.updated);
+  state.counters["limited"] = fraction(counts.forgetting_limited);
+  state.counters["projected"] = fraction(counts.projections);
   state.counters["params"] = static_cast<double>(structure.num_params());
 }
 
@@ -60,9 +67,22 @@ void register_sizes(const std::string& suffix) {
     for (const bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
       const std::string extra = method == bonl::Method::OutputError ? "" : std::string("/") + bonl::to_string(method);
       benchmark::RegisterBenchmark((std::string("update/") + Model::kName + "/" + suffix + extra).c_str(),
-                                   [method](benchmark::State& s) { update<Model>(s, method); });
+                                   [method](benchmark::State& s) { update<Model>(s, method, bonl_bench::record<S>()); });
     }
   });
+}
+
+/// The default (output-error) P-H-W update on the records it does not fit.
+template <bool Fixed>
+void register_mismatches(const std::string& suffix) {
+  using Model = typename bonl_bench::PaperOrderModels<double, Fixed>::PseudoHammersteinWiener;
+  for (const bonl_bench::Mismatch data : bonl_bench::kMismatches) {
+    benchmark::RegisterBenchmark(
+        (std::string("update/") + Model::kName + "/" + suffix + "/" + bonl_bench::name(data)).c_str(),
+        [data](benchmark::State& s) {
+          update<Model>(s, bonl::Method::OutputError, bonl_bench::mismatched_record<double>(data));
+        });
+  }
 }
 
 const int registered = [] {
@@ -70,6 +90,8 @@ const int registered = [] {
   register_sizes<float, true>("fixed/float");
   register_sizes<double, false>("dynamic/double");
   register_sizes<float, false>("dynamic/float");
+  register_mismatches<true>("fixed/double");
+  register_mismatches<false>("dynamic/double");
   return 0;
 }();
 

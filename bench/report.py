@@ -26,6 +26,8 @@ PHW_PARAMS = 14
 # output-error method (the default since issue 16) adds <model>_update_output_error_ns.
 PHW = "PseudoHammersteinWiener"
 METHODS = (("", "output_error"), ("/equation_error", "equation_error"), ("/paper", "paper"))
+# Records the P-H-W structure does not fit (bench_data.hpp, update/<P-H-W>/<sizes>/double/<data>).
+MISMATCHES = ("delayed_fir", "integrator")
 
 
 def load_gbench(path: str) -> tuple[dict, dict]:
@@ -101,6 +103,53 @@ def machine(compiler: str, context: dict) -> dict:
     }
 
 
+def summary(flat: dict) -> str:
+    """The headline figures of a full run, for the pages that quote it (README.md, docs/performance.md,
+    between <!-- bench_summary --> markers): made from the flat results alone, so that a test can
+    render it again from the committed bench/RESULTS.json."""
+    models = list(dict.fromkeys(key.split("_update_fixed_double_")[0] for key in flat
+                                if "_update_fixed_double_" in key))
+
+    def ratios(pairs) -> str:
+        values = [a / b for a, b in pairs if a and b]
+        return f"{min(values):.2f} to {max(values):.2f} times" if values else "-"
+
+    methods = [m for _, m in METHODS]
+    runtime = ratios((flat.get(f"{m}_update_dynamic_double_{method}_ns"), flat.get(f"{m}_update_fixed_double_{method}_ns"))
+                     for m in models for method in methods)
+    rls = ratios((v["bonl_dynamic"], v["bonl_fixed"]) for v in flat["rls_sweep_ns"].values())
+    python = ratios((flat.get(f"{m}_update_record_python_{method}_ns"), flat.get(f"{m}_update_dynamic_portable_{method}_ns"))
+                    for m in models for method in methods)
+    machine = flat["machine"]
+
+    def update(model: str, method: str, sizes: str = "fixed") -> str:
+        return fmt_ns(flat.get(f"{model}_update_{sizes}_double_{method}_ns")) + " ns"
+
+    phw_fixed = flat.get(f"{PHW}_update_fixed_double_output_error_ns")
+    mismatch = "; ".join(
+        f"{data.replace('_', ' ')}: {update(PHW, 'output_error_' + data)} fixed, "
+        f"{update(PHW, 'output_error_' + data, 'dynamic')} run-time"
+        for data in MISMATCHES if flat.get(f"{PHW}_update_fixed_double_output_error_{data}_ns"))
+    rows = [
+        ["one update, fixed sizes, double, output_error (the default)",
+         ", ".join(f"{m} {update(m, 'output_error')}" for m in models)],
+        ["one update, fixed sizes, double, equation_error", ", ".join(f"{m} {update(m, 'equation_error')}" for m in models)],
+        ["P-H-W output_error update against the textbook Eigen RLS and padasip at 14 parameters",
+         f"{fmt_ratio(flat['naive_rls_ns'], phw_fixed)} and {fmt_ratio(flat['padasip_rls_ns'], phw_fixed)} faster"],
+        ["P-H-W output_error update on data it does not fit (bench_data.hpp)", mismatch or "-"],
+        ["run-time sizes over fixed sizes: estimator update, RLS core (4 to 32 parameters)", f"{runtime}; {rls}"],
+        ["Python `Estimator.update` over a record, over the C++ run-time-size update built alike", python],
+        ["`bonl.identify`, P-H-W, 5000 samples: recursive paper method; output_error with its refinement",
+         f"{flat['python_identify_5000_ms']:.2f} ms; {flat['python_identify_output_error_5000_ms']:.1f} ms"],
+        ["plant: 50 s of the paper's experiment", f"{flat['plant_simulate_50s_ms']:.1f} ms, "
+         f"{flat['plant_realtime_factor']:,.0f} times real time"],
+    ]
+    head = (f"Latest full `bench/run` (`bench/RESULTS.md`, commit {machine['git']}, {machine['cpu']}, "
+            f"{machine['cores']} cores, {machine['compiler'].split(' (')[0]}; C++ figures are CPU time, the fastest of "
+            f"5 repetitions):")
+    return head + "\n\n" + table(["what", "measured"], rows, "ll") + "\n"
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cpp", required=True, help="Google Benchmark JSON of bonl_bench")
@@ -111,12 +160,12 @@ def main() -> int:
                         help="Google Benchmark JSON of bonl_bench built as the Python extension is (no -march=native)")
     parser.add_argument("--json", help="write the flat results here")
     parser.add_argument("--results-md", help="write the tables and the machine here (bench/RESULTS.md)")
+    parser.add_argument("--summary", help="write the headline figures here (docs/results/bench_summary.md)")
     parser.add_argument("--command", default="bench/run", help="the command that produced the results")
     parser.add_argument("--compiler", default="", help="compiler and version")
     parser.add_argument("--flags", default="", help="build flags")
     parser.add_argument("--elapsed", type=float, help="seconds bench/run took up to the report")
     args = parser.parse_args()
-
     cpp, context = load_gbench(args.cpp)
     portable = load_gbench(args.cpp_portable)[0] if args.cpp_portable else {}
     plant, _ = load_gbench(args.plant)
@@ -164,6 +213,24 @@ def main() -> int:
                                      "mostly that of a refused update.")
     update_table = table(["per-sample estimator update (C++)", "params", "ns/sample", "vs textbook RLS",
                           "vs padasip", "updated"], rows)
+
+    # --- Where the structure does not fit the data --------------------------------------------------
+    # The default (output_error) P-H-W update on records it does not fit (bench_data.hpp), where the
+    # trace ceiling limits the forgetting or the stability projection shortens the step on most
+    # samples, against the same update on the known system's record.
+    rows = []
+    for sizes in ("fixed", "dynamic"):
+        known = cpp_ns(f"update/{PHW}/{sizes}/double")
+        for data in MISMATCHES:
+            name = f"update/{PHW}/{sizes}/double/{data}"
+            if name not in cpp:
+                continue
+            entry, value = cpp[name], cpp_ns(name)
+            flat[f"{PHW}_update_{sizes}_double_output_error_{data}_ns"] = value
+            rows.append([f"{data}, {sizes}", fmt_ns(value), f"{value / known:.2f}x" if (value and known) else "-",
+                         f"{entry.get('limited', 0.0):.2f}", f"{entry.get('projected', 0.0):.2f}"])
+    mismatch_table = table(["P-H-W update, output_error, double, on data it does not fit", "ns/sample",
+                            "vs the known system", "ceiling limited", "step shortened"], rows)
 
     # --- Run-time sizes and the Python streaming call (issue 19) ------------------------------------
     # Per model and method (double): the fixed-size update, the run-time-size one and their ratio; the
@@ -343,6 +410,7 @@ def main() -> int:
     sections = [
         ("Targets", target_table),
         ("Per-sample estimator update", update_table),
+        ("Where the structure does not fit the data", mismatch_table),
         ("Run-time sizes and the Python call over a record", sizes_table),
         ("Baselines at the P-H-W parameter count", baseline_table),
         ("Whole record", whole_table),
@@ -352,7 +420,9 @@ def main() -> int:
     legend = (
         "`vs textbook RLS` and `vs padasip`: the baseline's time divided by this row's time, at the same "
         "parameter count (how many times faster this row is). `updated`: fraction of the samples that ran the "
-        "RLS step (the P-H-W equation_error method skips samples inside the backlash gap; output_error updates on every sample). C++: CPU time per sample "
+        "RLS step (the P-H-W equation_error method skips samples inside the backlash gap; output_error updates on every sample). "
+        "`ceiling limited` and `step shortened`: fractions of the samples whose forgetting the trace ceiling limited and "
+        "whose step the stability projection shortened (bench/bench_data.hpp describes the records). C++: CPU time per sample "
         "(fastest of 5 repetitions); Python: best wall time of several repeats. Same random regressors, "
         f"forgetting factor 0.99 and P(0) = 1e3 I for every RLS baseline; float equation_error and paper estimators use P(0) = 1e4 I."
     )
@@ -365,6 +435,9 @@ def main() -> int:
         with open(args.json, "w", encoding="utf-8") as f:
             json.dump(flat, f, indent=2)
             f.write("\n")
+    if args.summary:
+        with open(args.summary, "w", encoding="utf-8") as f:
+            f.write(summary(flat))
     if args.results_md:
         header = [
             "# Benchmark results",

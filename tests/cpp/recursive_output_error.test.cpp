@@ -217,32 +217,6 @@ TEMPLATE_LIST_TEST_CASE("started at the truth, the output-error update predicts 
   CHECK(estimator.health().projections == 0);
 }
 
-TEST_CASE("a projected step is the longest stable halving, or none, which leaves theta exactly", "[output_error]") {
-  // Data that want a pole at 1 (an integrator, beyond the stability radius): the estimate presses
-  // against the boundary and most updates are shortened. A step not taken leaves theta bit for bit
-  // where it was (subtracting the halved steps again would leave rounding behind).
-  const Eigen::VectorXd u = bonl::signals::random_levels(2000, 5, 1.0, 71);
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(u.size());
-  for (Eigen::Index k = 1; k < u.size(); ++k) y[k] = y[k - 1] + u[k - 1];
-  bonl::Estimator<bonl::Hammersteind> estimator(bonl::Hammersteind(2, 1, 1, 2));
-  Eigen::VectorXd work(2);
-  Eigen::Index unchanged = 0, shortened = 0;
-  for (Eigen::Index k = 0; k < u.size(); ++k) {
-    const Eigen::VectorXd before = estimator.theta();
-    const Eigen::Index projections = estimator.health().projections;
-    REQUIRE(estimator.update(u[k], y[k]) == bonl::UpdateStatus::Updated);
-    REQUIRE(bonl::detail::roots_inside(estimator.model().a(), 0.999, work));
-    if (estimator.health().projections == projections) continue;
-    if (estimator.theta() == before) {
-      ++unchanged;
-    } else {
-      ++shortened;
-    }
-  }
-  CHECK(unchanged > 100);
-  CHECK(shortened > 0);
-}
-
 TEST_CASE("the stability projection keeps the estimated denominator stable", "[output_error]") {
   // A large initial covariance makes the first steps wild; every accepted estimate must still have
   // its poles inside the stability radius, and some steps must have been shortened for it.

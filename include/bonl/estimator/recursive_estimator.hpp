@@ -146,7 +146,7 @@ class Estimator {
   explicit Estimator(const Model& structure, const EstimatorOptions& options = {})
       : m_model(validated(structure, options)), m_terms(structure, key_term_method(options.method)),
         m_outputs(structure, options.backlash_hold), m_rls(structure.num_params(), Scalar(options.resolved_p0())),
-        m_theta_internal(Params::Zero(structure.num_params())), m_previous(m_theta_internal), m_step(m_theta_internal), m_options(options),
+        m_theta_internal(Params::Zero(structure.num_params())), m_step(m_theta_internal), m_options(options),
         m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
     m_u0 = static_cast<Scalar>(structure.u0());
     m_y0 = static_cast<Scalar>(structure.y0());
@@ -379,12 +379,12 @@ class Estimator {
     m_last_outlier = outlier;
     m_error_scale = m_error_scale > Scalar(0) ? m_error_scale + (std::abs(error) - m_error_scale) * Scalar(kErrorRate)
                                                : std::abs(error);
-    m_previous = m_rls.theta();
+    m_step = m_rls.theta();
     UpdateStatus status = UpdateStatus::Updated;
     if (m_rls.update_with_error(simulated.sensitivity, used, lambda, m_max_trace)) {
       Params& theta = m_rls.mutable_theta();
       m_model.constrain(theta);
-      m_step = theta - m_previous;  // the step taken; theta = m_previous + m_step from here on
+      m_step = theta - m_step;  // the step taken; theta = previous + m_step from here on
       if (!m_outputs.stable(theta, Scalar(m_options.stability_radius))) shorten_step(theta);
       m_health.consecutive_failures = 0;
       if (m_rls.forgetting_limited()) ++m_health.forgetting_limited;
@@ -400,30 +400,19 @@ class Estimator {
     return finish(status, simulated.internal);
   }
 
-  /// theta = m_previous + m_step left the stability region: take the longest of the steps
-  /// m_step / 2^j, j = 1..10, that keeps it inside, else no step. The region is not convex in theta,
-  /// but its interior is open, so short enough steps from a stable estimate stay in it. The shortest
-  /// is tried first: where even it leaves, the estimate presses against the boundary (data that want
-  /// a pole beyond the radius, such as an integrator's, do that on most samples) and no step is taken
-  /// after one test instead of ten. Each candidate is m_previous + m_step / 2^j, one rounding per entry,
-  /// and a step not taken leaves theta exactly at m_previous.
+  /// theta = previous + m_step left the stability region: halve the step until it is back inside
+  /// (the region is not convex in theta, but its interior is open, so short enough steps from a
+  /// stable estimate stay in it), at most 10 times, else take no step.
   void shorten_step(Params& theta) noexcept {
     ++m_health.projections;
     const Scalar radius = Scalar(m_options.stability_radius);
-    const auto stable_at = [&](int halvings) {
-      theta = m_previous + std::ldexp(Scalar(1), -halvings) * m_step;
-      return m_outputs.stable(theta, radius);
-    };
-    constexpr int kMaxHalvings = 10;
-    if (!stable_at(kMaxHalvings)) {
-      theta = m_previous;
-      m_step.setZero();
-      return;
+    for (int halving = 0; halving < 10; ++halving) {
+      m_step *= Scalar(0.5);
+      theta -= m_step;
+      if (m_outputs.stable(theta, radius)) return;
     }
-    int halvings = 1;
-    while (halvings < kMaxHalvings && !stable_at(halvings)) ++halvings;
-    if (halvings == kMaxHalvings) theta = m_previous + std::ldexp(Scalar(1), -kMaxHalvings) * m_step;
-    m_step *= std::ldexp(Scalar(1), -halvings);  // exact: a power of two
+    theta -= m_step;
+    m_step.setZero();
   }
 
   UpdateStatus failure() noexcept {
@@ -481,7 +470,6 @@ class Estimator {
   typename Model::OutputErrorTerms m_outputs; // output_error
   Rls<Scalar, Model::kNumParams> m_rls;
   Params m_theta_internal;  // equation_error: the copy of theta the internal variables use
-  Params m_previous;        // output_error: theta before the current update
   Params m_step;            // output_error: the change of theta in the current update
   EstimatorOptions m_options;
   ForgettingSchedule m_forgetting;  // resolved from the options

@@ -21,6 +21,8 @@ QUOTES = [
     ("tracking_summary", ROOT / "docs" / "results" / "tracking_summary.md",
      [ROOT / "README.md", ROOT / "docs" / "control.md"]),
     ("benchmarks_summary", ROOT / "docs" / "results" / "benchmarks_summary.md", [ROOT / "docs" / "benchmarks.md"]),
+    ("bench_summary", ROOT / "docs" / "results" / "bench_summary.md",
+     [ROOT / "README.md", ROOT / "docs" / "performance.md"]),
 ]
 
 
@@ -76,3 +78,18 @@ def test_the_measured_data_give_their_committed_figures():
             assert simulated is not None, (case, name)
             rms = md.rms(simulated[score_from:] - y_sim[score_from:])
             assert rms == pytest.approx(chosen["validation_rms"], rel=1e-9), (case, name)
+
+
+def test_the_benchmark_summary_is_the_committed_full_run():
+    """docs/results/bench_summary.md is what bench/report.py makes of the committed full run's figures
+    (bench/RESULTS.json, written by the same bench/run as bench/RESULTS.md): a quoted speed cannot
+    drift from the run it names. (The speeds themselves are measured by bench/run, never in a test.)"""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("bench_report", ROOT / "bench" / "report.py")
+    report = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(report)
+    flat = json.loads((ROOT / "bench" / "RESULTS.json").read_text())
+    assert report.summary(flat) == (ROOT / "docs" / "results" / "bench_summary.md").read_text()
+    results_md = (ROOT / "bench" / "RESULTS.md").read_text()
+    assert "(commit %s)" % flat["machine"]["git"] in results_md, "bench/RESULTS.md and RESULTS.json are of different runs"

@@ -145,7 +145,7 @@ def summary(flat: dict) -> str:
          f"{flat['plant_realtime_factor']:,.0f} times real time"],
     ]
     head = (f"Latest full `bench/run` (`bench/RESULTS.md`, commit {machine['git']}, {machine['cpu']}, "
-            f"{machine['cores']} cores, {machine['compiler'].split(' (')[0]}; C++ figures are CPU time, the fastest of "
+            f"{machine['cores']} cores, {machine['compiler']}; C++ figures are CPU time, the fastest of "
             f"5 repetitions):")
     return head + "\n\n" + table(["what", "measured"], rows, "ll") + "\n"
 

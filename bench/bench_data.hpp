@@ -99,24 +99,33 @@ struct PaperOrderModels {
   static constexpr int Na = Fixed ? 3 : Eigen::Dynamic;
   static constexpr int Nb = Fixed ? 2 : Eigen::Dynamic;
   static constexpr int R = Fixed ? 3 : Eigen::Dynamic;
-  static constexpr int Nh = Fixed ? 0 : Eigen::Dynamic;  // the Wiener-Hammerstein model's hinges: none
+  static constexpr int Nh = Fixed ? 0 : Eigen::Dynamic;  // hinges (Wiener-Hammerstein, feedback): none
+  static constexpr int Nd = Fixed ? 1 : Eigen::Dynamic;  // the nonlinear-feedback model's taps: one
   using PseudoHammersteinWiener = bonl::PseudoHammersteinWiener<S, Na, Nb, R>;
   using type = bonl::ModelList<bonl::ARX<S, Na, Nb>, bonl::Hammerstein<S, Na, Nb, R>,
                                bonl::HammersteinWiener<S, Na, Nb, R, R>, bonl::PseudoHammersteinWiener<S, Na, Nb, R>,
-                               bonl::Wiener<S, Na, Nb, R>, bonl::WienerHammerstein<S, Na, Nb, R, Nh, Na, Nb>>;
+                               bonl::Wiener<S, Na, Nb, R>, bonl::WienerHammerstein<S, Na, Nb, R, Nh, Na, Nb>,
+                               bonl::NonlinearFeedback<S, Na, Nb, R, Nh, Nd>>;
 };
 static_assert(bonl::Models::size == PaperOrderModels<double, true>::type::size,
               "bench/bench_data.hpp: every model of bonl::Models has an entry in PaperOrderModels");
 
-/// The structure of a model at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3; no hinges), by the names
-/// its description gives its orders.
+/// The structure of a model at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3), by the names
+/// its description gives its orders; any other order (the hinges nh, the feedback's taps nd and signal
+/// nv) at the smallest value the model accepts.
 template <class Model>
 Model make_structure() {
   std::array<Eigen::Index, Model::kDescription.orders.size()> orders{};
   for (std::size_t i = 0; i < orders.size(); ++i) {
-    const std::string name = Model::kDescription.orders[i].name;
+    const auto& order = Model::kDescription.orders[i];
+    const std::string name = order.name;
     const std::string kind = name.substr(0, 2);  // na1 and na2 as na, nb1 and nb2 as nb
-    orders[i] = kind == "na" ? kNa : kind == "nb" ? kNb : name == "nk" ? kNk : name == "r" ? kR : name == "nh" ? 0 : kR1;
+    orders[i] = kind == "na"    ? kNa
+                : kind == "nb"  ? kNb
+                : name == "nk"  ? kNk
+                : name == "r"   ? kR
+                : name == "r1"  ? kR1
+                                : order.minimum;
   }
   return bonl::make_model<Model>(orders);
 }
@@ -156,8 +165,9 @@ Model make_known_model() {
     // The Wiener-Hammerstein model: both blocks the known linear block's (b1 at a tenth, so that the
     // polynomial sees moderate x1), its normalised f the output polynomial's q.
     const bool normalised_f = name == "f" && Model::kDescription.parameters[i].normalised != nullptr;
-    // Any other block (the W-H model's knots and g: none at nh = 0) keeps the structure's value,
-    // which is valid by construction: a block this function does not know cannot make it throw.
+    // Any other block (the W-H model's knots and g: none at nh = 0), and a known block whose size
+    // differs here (the nonlinear-feedback model's f, f_2..f_r), keeps the structure's value, which
+    // is valid by construction: a block this function does not know cannot make it throw.
     const Eigen::VectorXd value = name == "b" || name == "b2" ? true_b()
                                   : name == "b1"             ? Eigen::VectorXd(0.1 * true_b())
                                   : name == "a" || name == "a1" || name == "a2" ? true_a()
@@ -166,7 +176,7 @@ Model make_known_model() {
                                   : name == "p"                                 ? true_p()
                                   : name == "c"                                 ? Eigen::VectorXd::Constant(1, kTrueC)
                                                                                 : model.parameter(i).template cast<double>();
-    model.set_parameter(i, value.cast<S>());
+    if (value.size() == model.parameter(i).size()) model.set_parameter(i, value.cast<S>());
   }
   return model;
 }

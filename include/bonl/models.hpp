@@ -1,5 +1,6 @@
 #pragma once
-// The models: the four of the paper, the Wiener model and the Wiener-Hammerstein model. Each one simulates free-run from rest (simulate), predicts one
+// The models: the four of the paper, the Wiener model, the Wiener-Hammerstein model and the
+// nonlinear-feedback (Lur'e) model. Each one simulates free-run from rest (simulate), predicts one
 // step ahead from measured data (predict), exposes its parameters as the eq. (19) vector (theta)
 // and by name, and carries its key-term-separated regressor (KeyTerms) for bonl::Estimator.
 //
@@ -20,6 +21,7 @@
 #include "models/hammerstein_wiener.hpp"
 #include "models/model_description.hpp"
 #include "models/model_steps.hpp"
+#include "models/nonlinear_feedback.hpp"
 #include "models/poles.hpp"
 #include "models/pseudo_hammerstein_wiener.hpp"
 #include "models/rescale.hpp"
@@ -43,10 +45,12 @@ using HammersteinWienerd = HammersteinWiener<double>;
 using PseudoHammersteinWienerd = PseudoHammersteinWiener<double>;
 using Wienerd = Wiener<double>;
 using WienerHammersteind = WienerHammerstein<double>;
+using NonlinearFeedbackd = NonlinearFeedback<double>;
 
 /// Every model, at run-time orders in double: what a model file can hold, what Python binds, what
 /// the property suites run over. A new model is one entry here.
 using Models =
-    ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd, WienerHammersteind>;
+    ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd, WienerHammersteind,
+              NonlinearFeedbackd>;
 
 }  // namespace bonl

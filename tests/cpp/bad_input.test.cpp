@@ -44,6 +44,7 @@ bonl::ForgettingSchedule steps(double initial, Eigen::Index initial_samples, dou
 using bonl_test::vec;
 using bonl_test::Case;
 using bonl_test::check_cases;
+using bonl_test::quoted_model_names;
 
 const Eigen::VectorXd kF = vec({0.01, 0.8, 0.1});  // an input polynomial for the block tests
 
@@ -259,8 +260,9 @@ TEST_CASE("M13 simulating an unstable model is a NumericalError, not infinities"
     bonl::detail::set_denominator(model, 0, vec({-2.0, 0.0}));  // a pole at 2
     CHECK_THROWS_AS(model.simulate(u), bonl::NumericalError);
     CHECK_THROWS_WITH(model.simulate(u), Contains("simulation left the finite numbers (an unstable model?)"));
-    // The same model on a short record is fine: the error is the overflow, not the model.
-    CHECK(model.simulate(u.head(50)).allFinite());
+    // The same model on a short record is fine: the error is the overflow, not the model. (Short: a
+    // feedback of the output's square grows the output faster than the pole alone.)
+    CHECK(model.simulate(u.head(10)).allFinite());
   });
 }
 
@@ -654,13 +656,11 @@ TEST_CASE("J1-J5 the reader rejects what is not a bonl model file of this versio
        [] { bonl::io::load_model(phw_with([](Json& d) { d["operating_point"]["u0"] = "nan"; })); },
        "operating_point.u0 must be a number"},
       {"J5 unknown model", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = "Volterra"; })); },
-       "model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", \"PseudoHammersteinWiener\", \"Wiener\", \"WienerHammerstein\", "
-       "got \"Volterra\""},
+       "model must be one of " + quoted_model_names() + ", got \"Volterra\""},
       {"J5 model with a hyphen", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = "Pseudo-Hammerstein-Wiener"; })); },
        "model must be one of"},
       {"J5 model null", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = nullptr; })); },
-       "model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", \"PseudoHammersteinWiener\", \"Wiener\", \"WienerHammerstein\", "
-       "got null"},
+       "model must be one of " + quoted_model_names() + ", got null"},
   };
   check_cases<std::invalid_argument>(cases);
   // Every message is printable ASCII, whatever bytes the file held.

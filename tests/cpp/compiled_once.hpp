@@ -18,7 +18,8 @@
   X(bonl::HammersteinWienerd)             \
   X(bonl::PseudoHammersteinWienerd)       \
   X(bonl::Wienerd)                        \
-  X(bonl::WienerHammersteind)
+  X(bonl::WienerHammersteind)             \
+  X(bonl::NonlinearFeedbackd)
 
 #define BONL_TEST_PAPER_MODELS(X)     \
   X(bonl::PaperARX)                     \

@@ -49,6 +49,16 @@ Model known_system(const char* set = "paper_orders") {
   return bonl::io::model_from_json<Model>(known_systems_file().at(set).at(Model::kName).dump());
 }
 
+/// Every model's name, quoted and in bonl::Models' order: "ARX", "Hammerstein", ... (the list the
+/// model file reader's messages give).
+inline std::string quoted_model_names() {
+  std::string names;
+  bonl::for_each_model(bonl::Models{}, [&names](auto tag) {
+    names += (names.empty() ? "\"" : ", \"") + std::string(decltype(tag)::type::kName) + "\"";
+  });
+  return names;
+}
+
 /// Models with a backlash: a parameter block called c.
 template <class Model>
 constexpr bool has_backlash() {
@@ -76,6 +86,21 @@ inline bonl::WienerHammersteind saturating_wiener_hammerstein(Eigen::Index r = 1
   model.set_g(vec({-0.7, -0.6}));
   model.set_b2(known.b2());
   model.set_a2(known.a2());
+  return model;
+}
+
+/// A nonlinear-feedback system with friction on the velocity: a second-order linear block (poles
+/// 0.7 and 0.8), and fed back through D = q^-1 + 0.3 q^-2 the output's first difference s through
+/// f(s) = -0.5 s^3 plus a Coulomb-like damping, hinges at s = -+0.05 of slope -0.4 each (outputs
+/// within about +-4.5 and |s| < 0.6 on random levels of amplitude 1 held 10 samples).
+inline bonl::NonlinearFeedbackd friction_feedback() {
+  bonl::NonlinearFeedbackd model(2, 1, 1, 3, 2, 2, 1);
+  model.set_b(vec({0.2, 0.1}));
+  model.set_a(vec({-1.5, 0.56}));
+  model.set_f(vec({0.0, -0.5}));
+  model.set_knots(vec({-0.05, 0.05}));
+  model.set_g(vec({-0.4, -0.4}));
+  model.set_d(vec({1.0, 0.3}));
   return model;
 }
 

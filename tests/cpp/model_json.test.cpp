@@ -317,8 +317,7 @@ TEST_CASE("bad files are rejected with a message naming the problem", "[io]") {
     check_rejected(edited(good, [](Json& d) { d.erase("params"); }), "missing key params");
     check_rejected(edited(good, [](Json& d) { d.erase("model"); }), "missing key model");
     check_rejected(edited(good, [](Json& d) { d["model"] = "Pseudo-Hammerstein-Wiener"; }),
-                   "model must be one of \"ARX\", \"Hammerstein\", \"HammersteinWiener\", "
-                   "\"PseudoHammersteinWiener\", \"Wiener\", \"WienerHammerstein\", got \"Pseudo-Hammerstein-Wiener\"");
+                   "model must be one of " + quoted_model_names() + ", got \"Pseudo-Hammerstein-Wiener\"");
     check_rejected(edited(good, [](Json& d) { d["model"] = 3; }), "model must be one of");
     check_rejected<bonl::Hammersteind>(good,
                                        "model is \"PseudoHammersteinWiener\", but the model type asked for is "

@@ -35,7 +35,9 @@ TEMPLATE_LIST_TEST_CASE("identify is exact under data scaled by powers of two", 
   const TestType original = bonl::identify(truth, u, y);
   bonl::IdentifyOptions options;  // c0, the initial backlash width, is in the output's units
   options.c0 = bonl::IdentifyOptions{}.c0 * sy;
-  const TestType scaled = bonl::identify(truth, Eigen::VectorXd(su * u), Eigen::VectorXd(sy * y), options);
+  // The structure in the data's units: its knots (hinges) are in the output's units too.
+  const TestType scaled =
+      bonl::identify(bonl::rescaled(truth, su, sy), Eigen::VectorXd(su * u), Eigen::VectorXd(sy * y), options);
   const TestType expected = bonl::rescaled(original, su, sy);
   CHECK(scaled.theta() == expected.theta());
 }
@@ -48,7 +50,8 @@ TEMPLATE_LIST_TEST_CASE("data in awkward units identify with the default setting
   const Eigen::VectorXd u_val = bonl::signals::random_levels(2000, 5, 1.0, 14);
   const double su = 200.0, sy = 1e-3;  // not powers of two
   const TestType plain = bonl::identify(truth, u, y);
-  const TestType awkward = bonl::identify(truth, Eigen::VectorXd(su * u), Eigen::VectorXd(sy * y));
+  const TestType awkward =  // the structure (its knots) in the data's units
+      bonl::identify(bonl::rescaled(truth, su, sy), Eigen::VectorXd(su * u), Eigen::VectorXd(sy * y));
   const Eigen::VectorXd reference = truth.simulate(u_val);
   const double plain_error = bonl::metrics::nrmse(reference, plain.simulate(u_val));
   const double awkward_error = bonl::metrics::nrmse(reference, Eigen::VectorXd(awkward.simulate(su * u_val) / sy));

@@ -30,8 +30,8 @@ def test_identify_is_exact_under_power_of_two_units(name):
     y = truth.simulate(u) + 0.01 * np.random.default_rng(23).standard_normal(u.size)
     su, sy = 256.0, 1.0 / 1024.0
     original = bonl.identify(truth, u, y)
-    # c0, the initial backlash width, is in the output's units.
-    scaled = bonl.identify(truth, su * u, sy * y, c0=0.01 * sy)
+    # c0, the initial backlash width, is in the output's units; so is the structure's (its knots).
+    scaled = bonl.identify(truth.rescaled(su, sy), su * u, sy * y, c0=0.01 * sy)
     np.testing.assert_array_equal(scaled.theta, original.rescaled(su, sy).theta)
 
 
@@ -42,7 +42,7 @@ def test_data_in_newtons_and_metres_identify_with_the_defaults(name):
     u = random_levels(3000, 5, 1.0, 24)
     y = truth.simulate(u) + 0.005 * np.random.default_rng(25).standard_normal(u.size)
     u_val = random_levels(2000, 5, 1.0, 26)
-    model = bonl.identify(truth, 200.0 * u, 1e-3 * y)
+    model = bonl.identify(truth.rescaled(200.0, 1e-3), 200.0 * u, 1e-3 * y)  # the structure's knots in those units
     reference = truth.simulate(u_val)
     assert bonl.metrics.fit_percent(reference, model.simulate(200.0 * u_val) / 1e-3) >= 98.0
     assert model.pole_radius < 1.0

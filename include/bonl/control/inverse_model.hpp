@@ -72,10 +72,20 @@ template <class M>
 struct has_backlash<M, std::void_t<decltype(std::declval<const M&>().backlash())>> : std::true_type {};
 }  // namespace detail
 
-/// The models InverseModel inverts: those with one linear block. The Wiener-Hammerstein model's inverse
-/// (B2/A2's, the polynomial's and B1/A1's in turn, with the two delays' preview) is not written yet.
+namespace detail {
+/// A model says it has no inverse (yet) with static constexpr bool kInvertible = false.
+template <class M, class = void>
+struct declared_invertible : std::true_type {};
+template <class M>
+struct declared_invertible<M, std::void_t<decltype(M::kInvertible)>> : std::bool_constant<M::kInvertible> {};
+}  // namespace detail
+
+/// The models InverseModel inverts: those with one linear block that do not declare otherwise. The
+/// Wiener-Hammerstein model's inverse (B2/A2's, the polynomial's and B1/A1's in turn, with the two
+/// delays' preview) and the nonlinear-feedback model's are not written yet.
 template <class Model>
-struct has_inverse : std::bool_constant<bonl::detail::linear_block_count<Model>::value == 1> {};
+struct has_inverse : std::bool_constant<bonl::detail::linear_block_count<Model>::value == 1 &&
+                                        detail::declared_invertible<Model>::value> {};
 
 /// The models of bonl::Models that have an inverse (what the Python bindings and the fuzz harness loop over).
 using InvertibleModels = FilterModels<Models, has_inverse>::type;

@@ -11,7 +11,7 @@ from . import metrics
 from . import plant
 from . import experiment
 from . import control
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NumericalError', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     pass
 class ARX:
@@ -1195,6 +1195,237 @@ class WienerHammerstein:
     @theta.setter
     def theta(self, arg1: typing.Any) -> None:
         ...
+class NonlinearFeedback:
+    """
+    Nonlinear-feedback (Lur'e) model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)), f(s) = sum_{m=2..r} f_m s^m + sum_{l=1..nh} g_l h(s - knots_l) (h the hinge, zero between 0 and its knot), d_1 = 1, s = y (nv = 0) or y(k) - y(k-1) (nv = 1).
+    
+    Parameters
+    ----------
+    na : int
+        poles of the linear block (na >= 1).
+    nb : int
+        B has nb + 1 coefficients b_0..b_nb.
+    nk : int
+        pure delay of the input in samples.
+    r : int
+        degree of the feedback polynomial (1..32; 1: no polynomial terms).
+    nh : int
+        hinges of the feedback nonlinearity, knots where its slope changes (0..32; 0: none).
+    nd : int
+        taps of the feedback block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32).
+    nv : int
+        what the nonlinearity sees: 0 the output y, 1 its first difference (a velocity).
+    b : array_like, optional
+        b_0..b_nb.
+    a : array_like, optional
+        a_1..a_na.
+    f : array_like, optional
+        f_2..f_r, the feedback polynomial's coefficients (none for r = 1).
+    knots : array_like, optional
+        knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated).
+    g : array_like, optional
+        g_1..g_nh, the change of slope outward of each knot.
+    d : array_like, optional
+        d_1..d_nd with d_1 = 1.
+    """
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'nh', 'nd', 'nv')
+    def __copy__(self) -> NonlinearFeedback:
+        ...
+    def __deepcopy__(self, memo: dict) -> NonlinearFeedback:
+        ...
+    def __getstate__(self) -> str:
+        ...
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, nd: typing.SupportsInt | typing.SupportsIndex, nv: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, d: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: str) -> None:
+        ...
+    def extrapolated_samples(self, u: typing.Any) -> int:
+        """
+        int: how many samples of u lie outside input_range (0: no extrapolation).
+        """
+    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        One-step-ahead prediction from measured data.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        y : array_like, shape (n,)
+            Measured output; y[k] is used to predict y[k + 1].
+        initial : (u_past, y_past), optional
+            The measured samples just before u and y (None: from rest at the operating point).
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
+            measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
+            backlash memory is the measured y[k - 1]).
+        """
+    def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> NonlinearFeedback:
+        """
+        The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        """
+    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Free-run simulation, from rest or after a measured past.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        initial : (u_past, y_past), optional
+            The measured samples just before u. They set the model's state (its internal variables are what
+            the measured past says, as predict() takes them); then the model runs on u alone. The
+            benchmarks' state-initialisation window of m samples is
+            ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The model's output, driven by u alone after the initial state.
+        
+        Raises
+        ------
+        ValueError
+            If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
+        bonl.NumericalError
+            If the simulation leaves the finite numbers (an unstable model).
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
+        """
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        """
+    @property
+    def a(self) -> typing.Any:
+        """
+        numpy.ndarray: a_1..a_na.
+        """
+    @a.setter
+    def a(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def b(self) -> typing.Any:
+        """
+        numpy.ndarray: b_0..b_nb.
+        """
+    @b.setter
+    def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def d(self) -> typing.Any:
+        """
+        numpy.ndarray: d_1..d_nd with d_1 = 1.
+        """
+    @d.setter
+    def d(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def f(self) -> typing.Any:
+        """
+        numpy.ndarray: f_2..f_r, the feedback polynomial's coefficients (none for r = 1).
+        """
+    @f.setter
+    def f(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def g(self) -> typing.Any:
+        """
+        numpy.ndarray: g_1..g_nh, the change of slope outward of each knot.
+        """
+    @g.setter
+    def g(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def input_range(self) -> tuple[float, float]:
+        """
+        tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
+        """
+    @input_range.setter
+    def input_range(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def knots(self) -> typing.Any:
+        """
+        numpy.ndarray: knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated).
+        """
+    @knots.setter
+    def knots(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def na(self) -> int:
+        """
+        int: poles of the linear block (na >= 1).
+        """
+    @property
+    def nb(self) -> int:
+        """
+        int: B has nb + 1 coefficients b_0..b_nb.
+        """
+    @property
+    def nd(self) -> int:
+        """
+        int: taps of the feedback block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32).
+        """
+    @property
+    def nh(self) -> int:
+        """
+        int: hinges of the feedback nonlinearity, knots where its slope changes (0..32; 0: none).
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: pure delay of the input in samples.
+        """
+    @property
+    def num_params(self) -> int:
+        """
+        int: number of identified parameters.
+        """
+    @property
+    def nv(self) -> int:
+        """
+        int: what the nonlinearity sees: 0 the output y, 1 its first difference (a velocity).
+        """
+    @property
+    def operating_point(self) -> tuple[float, float]:
+        """
+        tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
+        """
+    @operating_point.setter
+    def operating_point(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def orders(self) -> tuple:
+        """
+        tuple of int: the orders, as ORDERS names them.
+        """
+    @property
+    def params(self) -> dict:
+        """
+        dict: every parameter block by name, as the keyword arguments of the constructor take them.
+        """
+    @property
+    def pole_radius(self) -> float:
+        """
+        float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
+        """
+    @property
+    def r(self) -> int:
+        """
+        int: degree of the feedback polynomial (1..32; 1: no polynomial terms).
+        """
+    @property
+    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: the parameter vector in the order of eq. (19).
+        """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
 class UpdateStatus:
     """
     What one online update did.
@@ -1335,6 +1566,9 @@ class Estimator:
         ...
     @typing.overload
     def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     def recover(self) -> None:
         """
@@ -1818,6 +2052,66 @@ def identify(model: WienerHammerstein, u: typing.Any, y: typing.Any = None, *, p
     bonl.NumericalError
         The estimator broke down numerically.
     """
+@typing.overload
+def identify(model: NonlinearFeedback, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> NonlinearFeedback:
+    """
+    Identify a model's parameters from an input/output record, or from several.
+    
+    Parameters
+    ----------
+    model : one of bonl.MODELS
+        Gives the structure (orders); its parameter values are not used.
+    u, y : array_like, shape (n,)
+        Input and measured output. For several records (experiments of the same system), give them as
+        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
+        Each record is simulated from rest; no history is carried across records.
+    passes : int, default 1
+        Passes of the recursive estimator over the record(s) (the paper's step 5).
+    method : {'output_error', 'equation_error', 'paper'}
+        The recursive stage. 'output_error' (default): recursive prediction-error method on the
+        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
+        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
+        recursive estimate is then refined by minimising the free-run simulation error.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
+    c0 : float, default 0.01
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
+    refine_iterations : int, default 100
+        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+    normalise : bool, default True
+        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+        the model in the data's units, so that the settings mean the same whatever the units. The recursive
+        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+        estimator's, in the data's units.
+    operating_point : {None, 'mean', 'initial'}
+        The identified model's operating point (u0, y0): None (default) keeps the structure's
+        (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+        first sample of the first record (the record starts at rest there).
+    
+    Returns
+    -------
+    model
+        A new model of the same type with the identified parameters, that operating point and the
+        records' input range (Model.input_range).
+    
+    Warns
+    -----
+    bonl.StabilityWarning
+        The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+        where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    
+    Raises
+    ------
+    ValueError
+        Bad orders, settings, lengths or non-finite samples.
+    bonl.NumericalError
+        The estimator broke down numerically.
+    """
 def load_model(text: str) -> typing.Any:
     """
     Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
@@ -1836,5 +2130,5 @@ def load_model(text: str) -> typing.Any:
     ValueError
         The text is not valid JSON or not a valid bonl model (the message names the problem).
     """
-MODELS: tuple = (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, Wiener, WienerHammerstein)
+MODELS: tuple = (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, Wiener, WienerHammerstein, NonlinearFeedback)
 __version__: str = '0.1.0'

@@ -164,6 +164,9 @@ class InverseModel:
     @typing.overload
     def __init__(self, model: bonl._bonl.WienerHammerstein, **kwargs) -> None:
         ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.NonlinearFeedback, **kwargs) -> None:
+        ...
     def commands(self, reference: typing.Any) -> InverseRun:
         """
         The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
@@ -272,6 +275,9 @@ class AdaptiveInverse:
         ...
     @typing.overload
     def __init__(self, model: bonl._bonl.WienerHammerstein, **kwargs) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.NonlinearFeedback, **kwargs) -> None:
         ...
     def rederive(self) -> bool:
         """

@@ -50,6 +50,11 @@ class HingeTerms {
   void regress(Scalar x, Phi& phi) const noexcept {
     for (Eigen::Index j = 0; j < m_knots.size(); ++j) phi[m_first + j] = hinge(x, m_knots[j]);
   }
+  /// weight * h_j(x) added into out's g entries (a sum of hinge regressors over several x).
+  template <typename Out>
+  void add_regressor(Scalar x, Scalar weight, Out& out) const noexcept {
+    for (Eigen::Index j = 0; j < m_knots.size(); ++j) out[m_first + j] += weight * hinge(x, m_knots[j]);
+  }
 
  private:
   Knots m_knots;

@@ -1,0 +1,411 @@
+#pragma once
+// Nonlinear-feedback (Lur'e) model: a linear block driven by the input and by a static nonlinearity of
+// the output fed back through a second, delayed linear block over the same denominator:
+//   y(k) = -sum_{j=1..na} a_j y(k-j) + sum_{i=0..nb} b_i u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)),
+//   f(s) = sum_{m=2..r} f_m s^m + sum_{l=1..nh} g_l h(s - knots_l),    d_1 = 1,
+// where s is the output (nv = 0: a stiffening spring, as in a Duffing oscillator) or its first
+// difference s(k) = y(k) - y(k-1) (nv = 1: a velocity, where friction lives). The feedback starts one
+// sample back, so there is no algebraic loop. f has no constant or linear term (the linear feedback
+// is the denominator's) and is zero with zero slope at s = 0, so the model's linearisation at rest is
+// B / A, whose poles the estimator keeps inside the stability radius. The hinges h are those of the
+// Wiener-Hammerstein model (models/detail/hinge_terms.hpp): with them f can be piecewise linear, a
+// saturation or a friction curve; their knots are structure, not estimated. d_1 = 1 fixes the scale
+// between D and f.
+// Parameters: b_0..b_nb, a_1..a_na, f_2..f_r, g_1..g_nh, d_2..d_nd.
+// Key-term form (f(s(k-1)) separated from D, whose first coefficient is 1):
+//   y(k) = [u lags] . b - [y lags] . a + sum_m f_m s(k-1)^m + sum_l g_l h(s(k-1) - knots_l)
+//          + sum_{j=2..nd} d_j x(k-j),   x(k-j) = f(s(k-j)),
+// linear in theta once the internal variables x(k-j) are computed; they are the nonlinearity of the
+// measured output's past, with the step's theta, for both key-term methods. A free run whose feedback
+// makes it leave the finite numbers is reported as every model's is (try_simulate() false).
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+#include "../blocks/linear_block.hpp"
+#include "../detail/history.hpp"
+#include "../detail/stability.hpp"
+#include "../detail/validate.hpp"
+#include "detail/hinge_terms.hpp"
+#include "detail/model_runs.hpp"
+#include "model_description.hpp"
+#include "model_steps.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
+          int Nh_ = Eigen::Dynamic, int Nd_ = Eigen::Dynamic>
+class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na_, Nb_, R_, Nh_, Nd_>> {
+  static constexpr int kLinearParams = detail::add_sizes(detail::poly_size(Nb_), Na_);  // b, a
+  static constexpr int kFeedbackParams =
+      detail::add_sizes(R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1, Nh_);  // f, g
+
+ public:
+  using Scalar = Scalar_;
+  static constexpr int kNumParams = detail::add_sizes(detail::add_sizes(kLinearParams, kFeedbackParams),
+                                                      Nd_ == Eigen::Dynamic ? Eigen::Dynamic : Nd_ - 1);
+  static constexpr bool kHasInternalVariables = true;
+  /// No inverse for control yet: it would subtract the feedback of the reference's past from the
+  /// linear block's inverse (control/inverse_model.hpp).
+  static constexpr bool kInvertible = false;
+  static constexpr const char* kName = "NonlinearFeedback";
+  static constexpr ModelDescription<7, 6> kDescription{
+      kName,
+      "Nonlinear-feedback (Lur'e) model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)), "
+      "f(s) = sum_{m=2..r} f_m s^m + sum_{l=1..nh} g_l h(s - knots_l) (h the hinge, zero between 0 and its knot), "
+      "d_1 = 1, s = y (nv = 0) or y(k) - y(k-1) (nv = 1).",
+      {{{"na", 1, detail::kMaxOrder, Na_, "poles of the linear block (na >= 1)"},
+        {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
+        {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay of the input in samples"},
+        {"r", 1, 32, R_, "degree of the feedback polynomial (1..32; 1: no polynomial terms)"},
+        {"nh", 0, 32, Nh_, "hinges of the feedback nonlinearity, knots where its slope changes (0..32; 0: none)"},
+        {"nd", 1, 32, Nd_, "taps of the feedback block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32)"},
+        {"nv", 0, 1, Eigen::Dynamic, "what the nonlinearity sees: 0 the output y, 1 its first difference (a velocity)"}}},
+      {{{"b", ParameterShape::Vector, 0, "b_0..b_nb", nullptr, false, {1, 0, -1, 0}},
+        {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
+        {"f", ParameterShape::Vector, 2, "f_2..f_r, the feedback polynomial's coefficients (none for r = 1)", nullptr,
+         false, {1, -1, 0, 0}},
+        {"knots", ParameterShape::Vector, 1,
+         "knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated)",
+         nullptr, false, {1, 0, 0, 0}, true},
+        {"g", ParameterShape::Vector, 1, "g_1..g_nh, the change of slope outward of each knot", nullptr, false, {}},
+        {"d", ParameterShape::Vector, 1, "d_1..d_nd with d_1 = 1",
+         "the nonlinear-feedback model is normalised so that d_1 = 1", false, {}}}}};
+  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Linear = LinearBlock<Scalar, Na_, Nb_>;
+  using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;
+
+  /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of y): set them where the
+  /// feedback's slope changes.
+  NonlinearFeedback(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index nh,
+                    Eigen::Index nd, Eigen::Index nv)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_nh(nh), m_nd(nd), m_nv(nv) {
+    detail::require_order(na, 1, "na");
+    detail::require_order(nb, 0, "nb");
+    detail::require_order(nk, 0, "nk");
+    detail::require_order(r, 1, "r (feedback polynomial degree)");
+    detail::require(r <= 32, "r (feedback polynomial degree) must be <= 32");
+    detail::require_order(nh, 0, "nh (hinges)");
+    detail::require(nh <= 32, "nh (hinges) must be <= 32");
+    detail::require_order(nd, 1, "nd (feedback taps)");
+    detail::require(nd <= 32, "nd (feedback taps) must be <= 32");
+    detail::require(nv == 0 || nv == 1, "nv must be 0 (the output is fed back) or 1 (its first difference), got " +
+                                            std::to_string(nv));
+    detail::require_matches_template(na, Na_, "na");
+    detail::require_matches_template(nb, Nb_, "nb");
+    detail::require_matches_template(r, R_, "r");
+    detail::require_matches_template(nh, Nh_, "nh");
+    detail::require_matches_template(nd, Nd_, "nd");
+    m_theta = Params::Zero(nb + 1 + na + r - 1 + nh + nd - 1);
+    m_knots = Knots(nh);
+    for (Eigen::Index j = 0; j < nh; ++j) {
+      const Eigen::Index position = j - nh / 2;  // -floor(nh/2)..ceil(nh/2) - 1; 0 and up move up one
+      m_knots[j] = static_cast<Scalar>(position < 0 ? position : position + 1);
+    }
+  }
+
+  Eigen::Index na() const noexcept { return m_na; }
+  Eigen::Index nb() const noexcept { return m_nb; }
+  Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index r() const noexcept { return m_r; }
+  Eigen::Index nh() const noexcept { return m_nh; }
+  Eigen::Index nd() const noexcept { return m_nd; }
+  Eigen::Index nv() const noexcept { return m_nv; }
+  Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  std::array<Eigen::Index, 7> orders() const noexcept { return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv}; }
+
+  const Params& theta() const noexcept { return m_theta; }
+  template <typename T>
+  void set_theta(const Eigen::MatrixBase<T>& theta) {
+    detail::assign_checked(m_theta, theta, "theta");
+  }
+
+  VectorX b() const { return m_theta.head(m_nb + 1); }
+  VectorX a() const { return m_theta.segment(first_a(), m_na); }
+  /// f_2..f_r.
+  VectorX f() const { return m_theta.segment(first_f(), m_r - 1); }
+  /// knots_1..knots_nh, strictly increasing, none at 0.
+  const Knots& knots() const noexcept { return m_knots; }
+  VectorX g() const { return m_theta.segment(first_g(), m_nh); }
+  /// d_1..d_nd with d_1 = 1.
+  VectorX d() const {
+    VectorX out(m_nd);
+    out[0] = Scalar(1);
+    out.tail(m_nd - 1) = m_theta.segment(first_d(), m_nd - 1);
+    return out;
+  }
+  template <typename T>
+  void set_b(const Eigen::MatrixBase<T>& b) {
+    detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
+  }
+  template <typename T>
+  void set_a(const Eigen::MatrixBase<T>& a) {
+    detail::assign_checked(m_theta.segment(first_a(), m_na), a, "a");
+  }
+  template <typename T>
+  void set_f(const Eigen::MatrixBase<T>& f) {
+    detail::assign_checked(m_theta.segment(first_f(), m_r - 1), f, "f");
+  }
+  /// Where the slope changes: strictly increasing, none at 0 (f has slope 0 at 0).
+  template <typename T>
+  void set_knots(const Eigen::MatrixBase<T>& knots) {
+    detail::require_size(knots, m_nh, "knots");
+    detail::require_finite(knots, "knots");
+    const Eigen::Index j = detail::first_not_increasing_or_zero(knots);
+    if (j >= 0 && knots[j] == 0) {
+      detail::fail("knots must not hold 0 (the feedback has slope 0 at 0), got 0 at index " + std::to_string(j));
+    }
+    if (j >= 0) {
+      detail::fail("knots must be strictly increasing, got " + detail::format_number(double(knots[j - 1])) +
+                   " before " + detail::format_number(double(knots[j])) + " at index " + std::to_string(j));
+    }
+    m_knots = knots;
+  }
+  template <typename T>
+  void set_g(const Eigen::MatrixBase<T>& g) {
+    detail::assign_checked(m_theta.segment(first_g(), m_nh), g, "g");
+  }
+  template <typename T>
+  void set_d(const Eigen::MatrixBase<T>& d) {
+    detail::require_size(d, m_nd, "d");
+    detail::require_finite(d, "d");
+    detail::require(d[0] == 1, std::string("d[0] (d_1) must be 1: ") + kDescription.parameters[5].normalised);
+    m_theta.segment(first_d(), m_nd - 1) = d.tail(m_nd - 1);
+  }
+
+  /// The parameter block kDescription.parameters[i]: b, a, f, knots, g, d.
+  VectorX parameter(std::size_t i) const {
+    switch (i) {
+      case 0: return b();
+      case 1: return a();
+      case 2: return f();
+      case 3: return m_knots;
+      case 4: return g();
+      case 5: return d();
+      default: detail::no_such_parameter(kName, i);
+    }
+  }
+  void set_parameter(std::size_t i, const VectorX& value) {
+    switch (i) {
+      case 0: return set_b(value);
+      case 1: return set_a(value);
+      case 2: return set_f(value);
+      case 3: return set_knots(value);
+      case 4: return set_g(value);
+      case 5: return set_d(value);
+      default: detail::no_such_parameter(kName, i);
+    }
+  }
+
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  template <typename U>
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+    const Feedback feedback(*this);
+    detail::History<Scalar> u_lags(m_nk + m_nb + 1);
+    detail::History<Scalar> y_lags(lags());
+    y.resize(u.size());
+    for (Eigen::Index k = 0; k < u.size(); ++k) {
+      u_lags.push(u[k]);
+      Scalar out = Scalar(0);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) out += m_theta[i] * u_lags[m_nk + i];
+      for (Eigen::Index j = 0; j < m_na; ++j) out -= m_theta[first_a() + j] * y_lags[j];
+      for (Eigen::Index j = 0; j < m_nd; ++j) out += tap(m_theta, j) * feedback.output(m_theta, feedback.s(y_lags, j));
+      y[k] = out;
+      if (!std::isfinite(out)) return false;
+      y_lags.push(out);
+    }
+    return true;
+  }
+
+  /// Where the recursive estimator starts (all zero: no feedback, d = 1, 0, ..., 0).
+  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
+  /// Projects an estimate onto the model's valid set: every theta is valid.
+  void constrain(Params& /*theta*/) const noexcept {}
+
+ private:
+  /// The feedback nonlinearity f on theta (its polynomial and its hinges) and the signal s it sees.
+  class Feedback {
+   public:
+    explicit Feedback(const NonlinearFeedback& model)
+        : m_hinges(model.knots(), model.first_g()), m_first_f(model.first_f()), m_r(model.r()), m_nv(model.nv()) {}
+    /// s(k-1-j) from the stored outputs y(k-1), y(k-2), ... (newest first).
+    template <class Lags>
+    Scalar s(const Lags& y, Eigen::Index j) const noexcept {
+      return m_nv == 0 ? y[j] : y[j] - y[j + 1];
+    }
+    template <typename Theta>
+    Scalar output(const Theta& theta, Scalar s) const noexcept {
+      Scalar power = s, out = Scalar(0);
+      for (Eigen::Index m = 2; m <= m_r; ++m) {
+        power *= s;
+        out += theta[m_first_f + m - 2] * power;
+      }
+      return m_hinges.add_output(theta, s, out);
+    }
+    /// df/ds at s (the hinges' one-sided slope beyond a knot).
+    template <typename Theta>
+    Scalar slope(const Theta& theta, Scalar s) const noexcept {
+      Scalar power = Scalar(1), out = Scalar(0);
+      for (Eigen::Index m = 2; m <= m_r; ++m) {
+        power *= s;  // s^(m-1)
+        out += Scalar(m) * theta[m_first_f + m - 2] * power;
+      }
+      return out + m_hinges.slope(theta, s);
+    }
+    /// weight * df/d[f, g] added into out's f and g entries: weight s^m and weight h_l(s).
+    template <typename Out>
+    void add_regressor(Scalar s, Scalar weight, Out& out) const noexcept {
+      Scalar power = s;
+      for (Eigen::Index m = 2; m <= m_r; ++m) {
+        power *= s;
+        out[m_first_f + m - 2] += weight * power;
+      }
+      m_hinges.add_regressor(s, weight, out);
+    }
+
+   private:
+    detail::HingeTerms<Scalar, Nh_> m_hinges;
+    Eigen::Index m_first_f, m_r, m_nv;
+  };
+
+ public:
+  /// Key-term form: regressor [u(k-nk..k-nk-nb), -y(k-1..k-na), s(k-1)^2..s(k-1)^r,
+  /// h(s(k-1) - knots_1..nh), x(k-2..k-nd)], x(k-j) = f(s(k-j)) with the step's theta; target y(k).
+  /// The past y are the measured outputs for both methods (the model's prediction where y is NaN),
+  /// so the internal variables are the nonlinearity of the measured past. predict() runs it.
+  class KeyTerms {
+   public:
+    KeyTerms(const NonlinearFeedback& model, KeyTermMethod /*method*/)
+        : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_y(model.lags()), m_na(model.na()),
+          m_nb(model.nb()), m_nk(model.nk()), m_nd(model.nd()), m_first_f(model.first_f()),
+          m_feedback_size(model.r() - 1 + model.nh()), m_first_d(model.first_d()),
+          m_phi(Params::Zero(model.num_params())) {}
+    void reset() noexcept {
+      m_u.clear();
+      m_y.clear();
+    }
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      m_u.push(u);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) m_phi[i] = m_u[m_nk + i];
+      for (Eigen::Index j = 0; j < m_na; ++j) m_phi[m_nb + 1 + j] = -m_y[j];
+      m_phi.segment(m_first_f, m_feedback_size).setZero();
+      const Scalar s1 = m_feedback.s(m_y, 0);
+      m_feedback.add_regressor(s1, Scalar(1), m_phi);
+      for (Eigen::Index j = 1; j < m_nd; ++j) m_phi[m_first_d + j - 1] = m_feedback.output(theta, m_feedback.s(m_y, j));
+      const Scalar prediction = m_phi.dot(theta);
+      m_y.push(std::isnan(y) ? prediction : y);
+      return {m_phi, y, prediction, m_feedback.output(theta, s1), true};
+    }
+
+   private:
+    Feedback m_feedback;
+    detail::History<Scalar> m_u, m_y;
+    Eigen::Index m_na, m_nb, m_nk, m_nd, m_first_f, m_feedback_size, m_first_d;
+    Params m_phi;
+  };
+
+  /// The output-error method's view: one step of the free run with its sensitivities,
+  ///   dy(k) = [u lags at b] + [-y lags at a] + sum_j d_j df/d[f, g](s(k-j)) + [x(k-j) at d_j]
+  ///           - sum_j a_j dy(k-j) + sum_j d_j f'(s(k-j)) ds(k-j),
+  /// ds the sensitivity of s (of y, or of y's first difference). The past outputs and their
+  /// sensitivities are kept as far back as the denominator and the feedback reach.
+  class OutputErrorTerms {
+   public:
+    explicit OutputErrorTerms(const NonlinearFeedback& model, Eigen::Index /*hold*/ = 0)
+        : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()),
+          m_nd(model.nd()), m_nv(model.nv()), m_first_f(model.first_f()),
+          m_feedback_size(model.r() - 1 + model.nh()), m_first_d(model.first_d()),
+          m_y(VectorX::Zero(model.lags())), m_dy(SensitivityLags::Zero(model.num_params(), model.lags())),
+          m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())), m_psi(Params::Zero(model.num_params())) {}
+    void reset() noexcept {
+      m_u.clear();
+      m_y.setZero();
+      m_dy.setZero();
+    }
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
+      m_u.push(u);
+      Scalar y = Scalar(0);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) {
+        m_psi[i] = m_u[m_nk + i];
+        y += theta[i] * m_psi[i];
+      }
+      for (Eigen::Index j = 0; j < m_na; ++j) {
+        m_psi[m_nb + 1 + j] = -m_y[j];
+        y -= theta[m_nb + 1 + j] * m_y[j];
+      }
+      m_psi.segment(m_first_f, m_feedback_size).setZero();
+      Scalar x1 = Scalar(0);
+      for (Eigen::Index j = 0; j < m_nd; ++j) {
+        const Scalar dj = j == 0 ? Scalar(1) : theta[m_first_d + j - 1];
+        const Scalar s = m_feedback.s(m_y, j);
+        const Scalar x = m_feedback.output(theta, s);
+        if (j == 0) x1 = x;
+        if (j > 0) m_psi[m_first_d + j - 1] = x;
+        y += dj * x;
+        m_feedback.add_regressor(s, dj, m_psi);
+      }
+      // Through the loop: the denominator's past and the feedback's slope at each past s.
+      for (Eigen::Index j = 0; j < m_na; ++j) m_psi -= theta[m_nb + 1 + j] * m_dy.col(j);
+      for (Eigen::Index j = 0; j < m_nd; ++j) {
+        const Scalar dj = j == 0 ? Scalar(1) : theta[m_first_d + j - 1];
+        const Scalar gain = dj * m_feedback.slope(theta, m_feedback.s(m_y, j));
+        if (gain == Scalar(0)) continue;
+        m_psi += gain * m_dy.col(j);
+        if (m_nv == 1) m_psi -= gain * m_dy.col(j + 1);
+      }
+      m_output = y;
+      return {y, m_psi, x1};
+    }
+    void accept() noexcept {
+      for (Eigen::Index j = m_y.size() - 1; j > 0; --j) {
+        m_y[j] = m_y[j - 1];
+        m_dy.col(j) = m_dy.col(j - 1);
+      }
+      m_y[0] = m_output;
+      m_dy.col(0) = m_psi;
+    }
+    /// After the estimate moved by delta: the stored outputs to first order (as SimulatedLags does).
+    void accept(const Params& delta) noexcept {
+      accept();
+      for (Eigen::Index j = 0; j < m_y.size(); ++j) m_y[j] += m_dy.col(j).dot(delta);
+    }
+    bool stable(const Params& theta, Scalar radius) noexcept {
+      return detail::roots_inside(theta.template segment<Na_>(m_nb + 1, m_na), radius, m_work);
+    }
+
+   private:
+    using SensitivityLags = Eigen::Matrix<Scalar, kNumParams, Eigen::Dynamic>;
+    Feedback m_feedback;
+    detail::History<Scalar> m_u;
+    Eigen::Index m_na, m_nb, m_nk, m_nd, m_nv, m_first_f, m_feedback_size, m_first_d;
+    VectorX m_y;            // y(k-1), y(k-2), ...: the simulated outputs, newest first
+    SensitivityLags m_dy;   // their sensitivities, one column each
+    Eigen::Matrix<Scalar, Na_, 1> m_work;  // for the stability test
+    Params m_psi;
+    Scalar m_output = Scalar(0);
+  };
+
+ private:
+  Eigen::Index first_a() const noexcept { return m_nb + 1; }
+  Eigen::Index first_f() const noexcept { return m_nb + 1 + m_na; }
+  Eigen::Index first_g() const noexcept { return first_f() + m_r - 1; }
+  Eigen::Index first_d() const noexcept { return first_g() + m_nh; }
+  /// How many past outputs a step reads: the denominator's na, the feedback's nd (and one more for
+  /// a first difference).
+  Eigen::Index lags() const noexcept { return std::max(m_na, m_nd + m_nv); }
+  /// d_{j+1} on theta (d_1 = 1).
+  Scalar tap(const Params& theta, Eigen::Index j) const noexcept { return j == 0 ? Scalar(1) : theta[first_d() + j - 1]; }
+
+  Params m_theta;
+  Knots m_knots;
+  Eigen::Index m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv;
+};
+
+}  // namespace bonl

@@ -1,0 +1,191 @@
+// The nonlinear-feedback (Lur'e) model (models/nonlinear_feedback.hpp). The property suites run over
+// it with the other models (bonl::Models); here what is its own:
+// - The free run equals the difference equation written out by hand, for the output fed back and for
+//   its first difference (the oracle keeps its own past, not the model's).
+// - The output-error sensitivities equal central finite differences of the free run.
+// - At the truth the key terms give the noise-free output exactly.
+// - identify() recovers the known systems (the Duffing-like one of tests/data/known_systems.json and
+//   friction_feedback(): hinges on the velocity), noise-free, to NRMSE <= 1e-6 on a fresh input of a
+//   larger amplitude than the identification input; with 5% output noise its simulation error on a
+//   fresh, noisy record is the noise's (within 2%) and its error to the truth far below it.
+// - The online output_error estimator converges on both.
+// - Bad orders, a d_1 other than 1 and bad knots are refused and leave the model as it was; a free run
+//   the feedback makes diverge is reported; there is no inverse for control.
+
+#include "test_support.hpp"
+
+#include <bonl/control.hpp>
+
+#include <cmath>
+#include <string>
+
+using namespace bonl_test;
+
+namespace {
+
+using Model = bonl::NonlinearFeedbackd;
+
+/// The free run written out: y(k) = b.u lags - a.y lags + sum_j d_j f(s(k-j)).
+Eigen::VectorXd by_hand(const Model& m, const Eigen::VectorXd& u) {
+  const Eigen::VectorXd b = m.b(), a = m.a(), f = m.f(), g = m.g(), d = m.d(), knots = m.knots();
+  const auto nonlinearity = [&](double s) {
+    double out = 0.0;
+    for (Eigen::Index i = 0; i < f.size(); ++i) out += f[i] * std::pow(s, double(i + 2));
+    for (Eigen::Index l = 0; l < knots.size(); ++l) {
+      out += g[l] * (knots[l] > 0 ? std::max(0.0, s - knots[l]) : std::min(0.0, s - knots[l]));
+    }
+    return out;
+  };
+  const auto y_at = [](const Eigen::VectorXd& y, Eigen::Index k) { return k >= 0 ? y[k] : 0.0; };
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(u.size());
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    double out = 0.0;
+    for (Eigen::Index i = 0; i < b.size(); ++i) {
+      const Eigen::Index at = k - m.nk() - i;
+      if (at >= 0) out += b[i] * u[at];
+    }
+    for (Eigen::Index j = 1; j <= a.size(); ++j) out -= a[j - 1] * y_at(y, k - j);
+    for (Eigen::Index j = 1; j <= d.size(); ++j) {
+      const double s = m.nv() == 0 ? y_at(y, k - j) : y_at(y, k - j) - y_at(y, k - j - 1);
+      out += d[j - 1] * nonlinearity(s);
+    }
+    y[k] = out;
+  }
+  return y;
+}
+
+Eigen::VectorXd identification_input() { return bonl::signals::random_levels(4000, 5, 1.0, 3); }
+/// A fresh input half as large again as the identification input: the feedback's curve must extrapolate.
+Eigen::VectorXd fresh_input() { return bonl::signals::random_levels(4000, 5, 1.5, 77); }
+
+/// The structure of `truth` (its orders and knots) with theta zero.
+Model structure_of(const Model& truth) {
+  Model structure = truth;
+  structure.set_theta(Eigen::VectorXd::Zero(truth.num_params()));
+  return structure;
+}
+
+}  // namespace
+
+TEST_CASE("the nonlinear-feedback free run is the difference equation written out", "[nonlinear_feedback]") {
+  for (const Model& m : {known_system<Model>(), known_system<Model>("small"), friction_feedback()}) {
+    INFO("nv = " << m.nv() << ", nh = " << m.nh());
+    const Eigen::VectorXd u = bonl::signals::random_levels(500, 5, 1.0, 5);
+    const Eigen::VectorXd expected = by_hand(m, u);
+    CHECK((m.simulate(u) - expected).cwiseAbs().maxCoeff() <= 1e-12 * (1.0 + expected.cwiseAbs().maxCoeff()));
+  }
+}
+
+TEST_CASE("the nonlinear-feedback output-error sensitivities are the free run's derivatives", "[nonlinear_feedback]") {
+  for (const Model& truth : {known_system<Model>(), friction_feedback()}) {
+    INFO("nv = " << truth.nv());
+    const Eigen::VectorXd u = bonl::signals::random_levels(300, 5, 1.0, 7);
+    const Eigen::VectorXd theta = truth.theta();
+    Model::OutputErrorTerms terms(truth);
+    Eigen::MatrixXd psi(theta.size(), u.size());
+    for (Eigen::Index k = 0; k < u.size(); ++k) {
+      psi.col(k) = terms.step(theta, u[k]).sensitivity;
+      terms.accept();
+    }
+    for (Eigen::Index i = 0; i < theta.size(); ++i) {
+      INFO("parameter " << i);
+      const double h = 1e-7;
+      Model up = truth, down = truth;
+      Eigen::VectorXd t = theta;
+      t[i] += h;
+      up.set_theta(t);
+      t[i] -= 2 * h;
+      down.set_theta(t);
+      const Eigen::VectorXd numeric = (up.simulate(u) - down.simulate(u)) / (2 * h);
+      CHECK((numeric - psi.row(i).transpose()).cwiseAbs().maxCoeff() <= 1e-6 * (1.0 + numeric.cwiseAbs().maxCoeff()));
+    }
+  }
+}
+
+TEST_CASE("at the truth the nonlinear-feedback key terms give the output", "[nonlinear_feedback]") {
+  for (const Model& truth : {known_system<Model>(), friction_feedback()}) {
+    const Eigen::VectorXd u = identification_input();
+    const Eigen::VectorXd y = truth.simulate(u);
+    for (const auto method : {bonl::KeyTermMethod::EquationError, bonl::KeyTermMethod::Paper}) {
+      Model::KeyTerms terms(truth, method);
+      double worst = 0.0;
+      for (Eigen::Index k = 0; k < u.size(); ++k) {
+        const auto step = terms.step(truth.theta(), u[k], y[k]);
+        worst = std::max(worst, std::abs(step.regressor.dot(truth.theta()) - y[k]));
+        worst = std::max(worst, std::abs(step.prediction - y[k]));
+      }
+      CHECK(worst <= 1e-12);
+    }
+  }
+}
+
+TEST_CASE("identify recovers the nonlinear-feedback known systems, noise-free and at the noise's level",
+          "[nonlinear_feedback][identify]") {
+  for (const Model& truth : {known_system<Model>(), friction_feedback()}) {
+    INFO("nv = " << truth.nv() << ", nh = " << truth.nh());
+    const Eigen::VectorXd u = identification_input();
+    const Eigen::VectorXd y = truth.simulate(u);
+    const Eigen::VectorXd fresh = fresh_input();
+    const Eigen::VectorXd y_fresh = truth.simulate(fresh);
+    const Model model = bonl::identify(structure_of(truth), u, y);
+    CHECK(bonl::metrics::nrmse(y_fresh, model.simulate(fresh)) <= 1e-6);
+
+    // 5% output noise (of the output's standard deviation) on the identification and a fresh record.
+    const double sigma = 0.05 * std::sqrt((y.array() - y.mean()).square().mean());
+    const Eigen::VectorXd noise = bonl::signals::white_noise(u.size(), sigma, 11);
+    const Model noisy = bonl::identify(structure_of(truth), u, Eigen::VectorXd(y + noise));
+    const Eigen::VectorXd fresh_noise = bonl::signals::white_noise(fresh.size(), sigma, 12);
+    const Eigen::VectorXd simulated = noisy.simulate(fresh);
+    const double error_to_measured = std::sqrt((y_fresh + fresh_noise - simulated).squaredNorm() / double(fresh.size()));
+    const double error_to_truth = std::sqrt((y_fresh - simulated).squaredNorm() / double(fresh.size()));
+    const double noise_rms = std::sqrt(fresh_noise.squaredNorm() / double(fresh.size()));
+    INFO("noise RMS " << noise_rms << ", error to the measured " << error_to_measured << ", to the truth "
+                      << error_to_truth);
+    CHECK(error_to_measured <= 1.02 * noise_rms);
+    CHECK(error_to_truth <= 0.25 * noise_rms);
+  }
+}
+
+TEST_CASE("the online output_error estimator converges on the nonlinear-feedback known systems",
+          "[nonlinear_feedback][output_error]") {
+  for (const Model& truth : {known_system<Model>(), friction_feedback()}) {
+    INFO("nv = " << truth.nv());
+    const Eigen::VectorXd u = identification_input();
+    const Eigen::VectorXd y = truth.simulate(u);
+    bonl::Estimator<Model> estimator(structure_of(truth));
+    for (int pass = 0; pass < 5; ++pass) {
+      estimator.start_pass();
+      for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
+    }
+    CHECK_FALSE(estimator.diverged());
+    const Eigen::VectorXd fresh = fresh_input();
+    CHECK(bonl::metrics::nrmse(truth.simulate(fresh), estimator.model().simulate(fresh)) <= 1e-4);
+  }
+}
+
+TEST_CASE("the nonlinear-feedback model refuses bad orders and parameters and reports a diverging run",
+          "[nonlinear_feedback][bad_input]") {
+  CHECK_THROWS_WITH(Model(3, 2, 0, 3, 0, 1, 2), Catch::Matchers::Contains("nv must be 0"));
+  CHECK_THROWS_WITH(Model(3, 2, 0, 3, 0, 0, 0), Catch::Matchers::Contains("nd (feedback taps)"));
+  CHECK_THROWS_WITH(Model(3, 2, 0, 3, 0, 33, 0), "bonl: nd (feedback taps) must be <= 32");
+  CHECK_THROWS_WITH(Model(3, 2, 0, 0, 0, 1, 0), Catch::Matchers::Contains("r (feedback polynomial degree)"));
+
+  Model model = known_system<Model>();
+  const Model before = model;
+  CHECK_THROWS_WITH(model.set_d(vec({2.0, 0.1})), Catch::Matchers::Contains("d[0] (d_1) must be 1"));
+  Model hinged = friction_feedback();
+  const Eigen::VectorXd knots = hinged.knots();
+  CHECK_THROWS_WITH(hinged.set_knots(vec({0.05, -0.05})), Catch::Matchers::Contains("strictly increasing"));
+  CHECK_THROWS_WITH(hinged.set_knots(vec({0.0, 0.05})), Catch::Matchers::Contains("must not hold 0"));
+  CHECK(hinged.knots() == knots);
+  CHECK(model.theta() == before.theta());
+
+  // A feedback that pushes the output further out: the free run leaves the finite numbers, reported.
+  Model runaway = known_system<Model>();
+  runaway.set_f(vec({0.0, 5.0}));
+  const Eigen::VectorXd u = bonl::signals::random_levels(2000, 5, 1.0, 9);
+  Eigen::VectorXd y;
+  CHECK_FALSE(runaway.try_simulate(u, y));
+  CHECK_THROWS_AS(runaway.simulate(u), bonl::NumericalError);
+  STATIC_REQUIRE_FALSE(bonl::control::has_inverse<Model>::value);
+}

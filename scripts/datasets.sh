@@ -19,6 +19,8 @@ for script in "${scripts[@]}"; do
   model=()
   # The Wiener-Hammerstein circuit's Wiener-Hammerstein model, also as a model file of its own.
   [[ $script == wiener_hammerstein ]] && model=(--model WienerHammerstein docs/results/datasets/wiener_hammerstein_model.json)
+  # The Silverbox's nonlinear-feedback model, likewise.
+  [[ $script == silverbox ]] && model=(--model NonlinearFeedback docs/results/datasets/silverbox_model.json)
   "$python" "examples/datasets/$script.py" --json "docs/results/datasets/$script.json" "${model[@]}"
   results+=("docs/results/datasets/$script.json")
 done

@@ -103,11 +103,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     detail::require_matches_template(nh, Nh_, "nh");
     detail::require_matches_template(nd, Nd_, "nd");
     m_theta = Params::Zero(nb + 1 + na + r - 1 + nh + nd - 1);
-    m_knots = Knots(nh);
-    for (Eigen::Index j = 0; j < nh; ++j) {
-      const Eigen::Index position = j - nh / 2;  // -floor(nh/2)..ceil(nh/2) - 1; 0 and up move up one
-      m_knots[j] = static_cast<Scalar>(position < 0 ? position : position + 1);
-    }
+    m_knots = detail::HingeTerms<Scalar, Nh_>::default_knots(nh);
   }
 
   Eigen::Index na() const noexcept { return m_na; }
@@ -155,16 +151,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// Where the slope changes: strictly increasing, none at 0 (f has slope 0 at 0).
   template <typename T>
   void set_knots(const Eigen::MatrixBase<T>& knots) {
-    detail::require_size(knots, m_nh, "knots");
-    detail::require_finite(knots, "knots");
-    const Eigen::Index j = detail::first_not_increasing_or_zero(knots);
-    if (j >= 0 && knots[j] == 0) {
-      detail::fail("knots must not hold 0 (the feedback has slope 0 at 0), got 0 at index " + std::to_string(j));
-    }
-    if (j >= 0) {
-      detail::fail("knots must be strictly increasing, got " + detail::format_number(double(knots[j - 1])) +
-                   " before " + detail::format_number(double(knots[j])) + " at index " + std::to_string(j));
-    }
+    detail::HingeTerms<Scalar, Nh_>::require_valid(knots, m_nh, "the feedback has slope 0 at 0");
     m_knots = knots;
   }
   template <typename T>

@@ -105,11 +105,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     detail::require_matches_template(na2, Na2_, "na2");
     detail::require_matches_template(nb2, Nb2_, "nb2");
     m_theta = Params::Zero(nb1 + 1 + na1 + r - 1 + nh + nb2 + na2);
-    m_knots = Knots(nh);
-    for (Eigen::Index j = 0; j < nh; ++j) {
-      const Eigen::Index position = j - nh / 2;  // -floor(nh/2)..ceil(nh/2) - 1; 0 and up move up one
-      m_knots[j] = static_cast<Scalar>(position < 0 ? position : position + 1);
-    }
+    m_knots = detail::HingeTerms<Scalar, Nh_>::default_knots(nh);
   }
 
   Eigen::Index na1() const noexcept { return m_na1; }
@@ -153,16 +149,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// Where the slope changes: strictly increasing, none at 0 (the slope at 0 is f_1 = 1).
   template <typename T>
   void set_knots(const Eigen::MatrixBase<T>& knots) {
-    detail::require_size(knots, m_nh, "knots");
-    detail::require_finite(knots, "knots");
-    const Eigen::Index j = detail::first_not_increasing_or_zero(knots);
-    if (j >= 0 && knots[j] == 0) {
-      detail::fail("knots must not hold 0 (the slope at 0 is f_1 = 1), got 0 at index " + std::to_string(j));
-    }
-    if (j >= 0) {
-      detail::fail("knots must be strictly increasing, got " + detail::format_number(double(knots[j - 1])) +
-                   " before " + detail::format_number(double(knots[j])) + " at index " + std::to_string(j));
-    }
+    detail::HingeTerms<Scalar, Nh_>::require_valid(knots, m_nh, "the slope at 0 is f_1 = 1");
     m_knots = knots;
   }
   template <typename T>

@@ -11,6 +11,9 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <string>
+
+#include "../../detail/validate.hpp"
 
 namespace bonl::detail {
 
@@ -20,6 +23,32 @@ class HingeTerms {
   using Knots = Eigen::Matrix<Scalar, Nh, 1>;
 
   HingeTerms(const Knots& knots, Eigen::Index first) : m_knots(knots), m_first(first) {}
+
+  /// A model's knots before they are set: -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of what the
+  /// hinges see).
+  static Knots default_knots(Eigen::Index nh) {
+    Knots knots(nh);
+    for (Eigen::Index j = 0; j < nh; ++j) {
+      const Eigen::Index position = j - nh / 2;  // -floor(nh/2)..ceil(nh/2) - 1; 0 and up move up one
+      knots[j] = static_cast<Scalar>(position < 0 ? position : position + 1);
+    }
+    return knots;
+  }
+  /// What a model's set_knots() accepts: nh finite entries, strictly increasing, none at 0
+  /// (`why_not_zero` says why, in the model's terms); otherwise std::invalid_argument.
+  template <typename T>
+  static void require_valid(const Eigen::MatrixBase<T>& knots, Eigen::Index nh, const char* why_not_zero) {
+    require_size(knots, nh, "knots");
+    require_finite(knots, "knots");
+    const Eigen::Index j = first_not_increasing_or_zero(knots);
+    if (j >= 0 && knots[j] == 0) {
+      fail(std::string("knots must not hold 0 (") + why_not_zero + "), got 0 at index " + std::to_string(j));
+    }
+    if (j >= 0) {
+      fail("knots must be strictly increasing, got " + format_number(double(knots[j - 1])) + " before " +
+           format_number(double(knots[j])) + " at index " + std::to_string(j));
+    }
+  }
 
   /// h(x - knot): zero between 0 and the knot, x - knot beyond it.
   static Scalar hinge(Scalar x, Scalar knot) noexcept {

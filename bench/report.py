@@ -144,7 +144,7 @@ def summary(flat: dict) -> str:
         ["plant: 50 s of the paper's experiment", f"{flat['plant_simulate_50s_ms']:.1f} ms, "
          f"{flat['plant_realtime_factor']:,.0f} times real time"],
     ]
-    head = (f"Latest full `bench/run` (`bench/RESULTS.md`, commit {machine['git']}, {machine['cpu']}, "
+    head = (f"Latest full `bench/run` (`bench/RESULTS.md` names its commit; {machine['cpu']}, "
             f"{machine['cores']} cores, {machine['compiler']}; C++ figures are CPU time, the fastest of "
             f"5 repetitions):")
     return head + "\n\n" + table(["what", "measured"], rows, "ll") + "\n"

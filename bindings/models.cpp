@@ -169,7 +169,9 @@ std::string class_doc() {
   constexpr auto& description = Model::kDescription;
   std::string doc = std::string(description.summary) + "\n\nParameters\n----------\n";
   for (const bonl::OrderDescription& order : description.orders) {
-    doc += std::string(order.name) + " : int\n    " + order.meaning + ".\n";
+    const bool optional = order.default_value != bonl::OrderDescription::kRequired;
+    doc += std::string(order.name) + (optional ? " : int, optional\n    " : " : int\n    ") + order.meaning +
+           (optional ? "; default " + std::to_string(order.default_value) : std::string()) + ".\n";
   }
   for (const bonl::ParameterDescription& parameter : description.parameters) {
     doc += std::string(parameter.name) +
@@ -195,6 +197,17 @@ using OrderArgument = Eigen::Index;
 template <std::size_t>
 using ParameterArgument = py::object;
 
+/// The constructor's argument for order O: required, or with its default (the integrators ni).
+template <class Model, std::size_t O>
+auto order_argument() {
+  constexpr const bonl::OrderDescription& order = Model::kDescription.orders[O];
+  if constexpr (order.default_value == bonl::OrderDescription::kRequired) {
+    return py::arg(order.name);
+  } else {
+    return py::arg_v(order.name, order.default_value);
+  }
+}
+
 /// Model(order_0, ..., *, parameter_0=None, ...): the orders positional, the parameter blocks by keyword.
 template <class Model, std::size_t... O, std::size_t... P>
 void def_init(py::class_<Model>& cls, std::index_sequence<O...>, std::index_sequence<P...>) {
@@ -209,7 +222,7 @@ void def_init(py::class_<Model>& cls, std::index_sequence<O...>, std::index_sequ
             }
             return model;
           }),
-          py::arg(description.orders[O].name)..., py::kw_only(), (py::arg(description.parameters[P].name) = py::none())...);
+          order_argument<Model, O>()..., py::kw_only(), (py::arg(description.parameters[P].name) = py::none())...);
 }
 
 /// One model class, entirely from the model's description.
@@ -224,6 +237,11 @@ void bind_model(py::module_& m) {
   py::list order_names;
   for (const bonl::OrderDescription& order : description.orders) order_names.append(order.name);
   cls.attr("ORDERS") = py::tuple(order_names);  // the constructor's order arguments, in order
+  py::dict order_defaults;  // the orders a call or a file may leave out, and their values
+  for (const bonl::OrderDescription& order : description.orders) {
+    if (order.default_value != bonl::OrderDescription::kRequired) order_defaults[order.name] = order.default_value;
+  }
+  cls.attr("ORDER_DEFAULTS") = order_defaults;
   cls.def_property_readonly(
       "orders", [](const Model& model) { return py::tuple(py::cast(model.orders())); }, "tuple of int: the orders, as ORDERS names them.");
   for (std::size_t i = 0; i < kOrders; ++i) {

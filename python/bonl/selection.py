@@ -81,10 +81,12 @@ class Selection:
 
 def grid(model_class: type, **orders: Iterable[int]) -> List[Any]:
     """Every structure of ``model_class`` over the lists of orders given by name (one value or a list
-    per order; every order of ``model_class.ORDERS`` must be given)."""
+    per order; every order of ``model_class.ORDERS`` must be given but those of
+    ``model_class.ORDER_DEFAULTS``, the integrators ``ni``, which take their default)."""
     if model_class not in _bonl.MODELS:
         raise ValueError(f"bonl: grid: model_class must be one of bonl.MODELS, got {model_class!r}")
     names = model_class.ORDERS
+    orders = {**model_class.ORDER_DEFAULTS, **orders}
     unknown = sorted(set(orders) - set(names))
     missing = [n for n in names if n not in orders]
     if unknown or missing:

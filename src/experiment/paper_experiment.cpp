@@ -49,11 +49,11 @@ Eigen::Index paper_order(const std::string& name) {
     const char* name;
     Eigen::Index value;
   };
-  static constexpr Order kOrders[] = {{"na", 3}, {"nb", 2}, {"nk", 8}, {"r", 3}, {"r1", 3}};
+  static constexpr Order kOrders[] = {{"na", 3}, {"nb", 2}, {"nk", 8}, {"r", 3}, {"r1", 3}, {"ni", 0}};  // the velocity: no integrator
   for (const Order& order : kOrders) {
     if (name == order.name) return order.value;
   }
-  detail::fail("experiment: the paper gives no order '" + name + "' (it gives na, nb, nk, r, r1)");
+  detail::fail("experiment: the paper gives no order '" + name + "' (it gives na, nb, nk, r, r1, ni)");
 }
 
 std::optional<PublishedScore> published_score(const std::string& name) {

@@ -709,7 +709,7 @@ TEST_CASE("J7-J15 the reader names the key at fault", "[bad_input][io]") {
       {"J7 unknown top-level key", [] { bonl::io::load_model(phw_with([](Json& d) { d["comment"] = "x"; })); },
        "unknown key comment"},
       {"J7 r in an ARX file", [&] { bonl::io::load_model(arx_with_r.dump()); },
-       "unknown key orders.r (expected orders keys: na, nb, nk)"},
+       "unknown key orders.r (expected orders keys: na, nb, nk, ni)"},
       {"J7 q in a P-H-W file", [&] { bonl::io::load_model(param("q", Json::array({1.0}))); }, "unknown key params.q"},
       {"J8 duplicate key", [&] { bonl::io::load_model(duplicate); }, "key \"na\" appears more than once in an object"},
       {"J9 na 2.0", [&] { bonl::io::load_model(orders("na", 2.0)); }, "orders.na must be an integer, got 2.0"},

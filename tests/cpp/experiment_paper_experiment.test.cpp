@@ -30,9 +30,9 @@ std::string validation_mse(const experiment::MethodResult& m) {
 
 TEST_CASE("the paper's models, orders and labels come from the models' descriptions", "[experiment]") {
   const auto proposed = experiment::paper_model<bonl::PaperPseudoHammersteinWiener>();
-  CHECK(proposed.orders() == std::array<Eigen::Index, 4>{3, 2, 8, 3});
+  CHECK(proposed.orders() == std::array<Eigen::Index, 5>{3, 2, 8, 3, 0});
   const auto with_q = experiment::paper_model<bonl::HammersteinWienerd>();  // run-time orders: the same values
-  CHECK(with_q.orders() == std::array<Eigen::Index, 5>{3, 2, 8, 3, 3});
+  CHECK(with_q.orders() == std::array<Eigen::Index, 6>{3, 2, 8, 3, 3, 0});
   CHECK_THROWS_WITH(experiment::paper_order("nx"), Catch::Matchers::StartsWith("bonl: ") &&
                                                        Catch::Matchers::Contains("no order 'nx'"));
   CHECK(experiment::paper_label("PseudoHammersteinWiener") == "P-H-W");

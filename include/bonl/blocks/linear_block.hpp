@@ -2,12 +2,14 @@
 // Linear dynamic block L of the models (paper eqs. 6-8), with the sign convention of eq. (7):
 //   A(z^-1) x(k) = z^-nk B(z^-1) w(k),  A = 1 + a_1 z^-1 + ... + a_na z^-na,
 //   B = b_0 + b_1 z^-1 + ... + b_nb z^-nb,
-// i.e. x(k) = -sum_j a_j x(k-j) + sum_i b_i w(k-nk-i). The block starts at rest: every past w and
-// x is zero.
+// i.e. x(k) = -sum_j a_j x(k-j) + sum_i b_i w(k-nk-i). With ni integrators (detail/integrators.hpp)
+// the denominator is A(z^-1) (1 - z^-1)^ni: the recursion runs on z = (1 - z^-1)^ni x and x carries
+// the integrators' past. The block starts at rest: every past w and x is zero.
 
 #include <Eigen/Core>
 
 #include "../detail/history.hpp"
+#include "../detail/integrators.hpp"
 #include "../detail/validate.hpp"
 
 namespace bonl {
@@ -19,24 +21,30 @@ class LinearBlock {
   using ACoeffs = Eigen::Matrix<Scalar, Na_, 1>;
   using BCoeffs = Eigen::Matrix<Scalar, detail::poly_size(Nb_), 1>;
 
-  /// na >= 1 poles, nb >= 0 (b has nb + 1 coefficients), pure delay nk >= 0. a = 0, b = [1, 0...].
-  LinearBlock(Eigen::Index na, Eigen::Index nb, Eigen::Index nk) : m_nk(nk) {
+  /// na >= 1 poles, nb >= 0 (b has nb + 1 coefficients), pure delay nk >= 0, ni in 0..2 integrators
+  /// (poles fixed at 1). a = 0, b = [1, 0...].
+  LinearBlock(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index ni = 0) : m_nk(nk), m_integrators(ni) {
     detail::require_order(na, 1, "na");
     detail::require_order(nb, 0, "nb");
     detail::require_order(nk, 0, "nk");
+    detail::require_integrators(ni);
     detail::require_matches_template(na, Na_, "na");
     detail::require_matches_template(nb, Nb_, "nb");
     m_a = ACoeffs::Zero(na);
     m_b = BCoeffs::Zero(nb + 1);
     m_b[0] = Scalar(1);
     m_w = detail::History<Scalar>(nk + nb + 1);
-    m_x = detail::History<Scalar>(na);
+    m_z = detail::History<Scalar>(na);
   }
 
   Eigen::Index na() const noexcept { return m_a.size(); }
   Eigen::Index nb() const noexcept { return m_b.size() - 1; }
   Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index ni() const noexcept { return m_integrators.size(); }
+  /// The estimated denominator a_1..a_na (without the integrators).
   const ACoeffs& a() const noexcept { return m_a; }
+  /// The whole denominator a_1..a_{na+ni} of A(z^-1) (1 - z^-1)^ni.
+  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> denominator() const { return detail::with_integrators(m_a, ni()); }
   const BCoeffs& b() const noexcept { return m_b; }
 
   template <typename A>
@@ -51,7 +59,8 @@ class LinearBlock {
   /// Back to rest.
   void reset() noexcept {
     m_w.clear();
-    m_x.clear();
+    m_z.clear();
+    m_integrators.clear();
   }
 
   /// Feeds w(k), returns x(k).
@@ -59,8 +68,9 @@ class LinearBlock {
     m_w.push(w);
     Scalar x = Scalar(0);
     for (Eigen::Index i = 0; i < m_b.size(); ++i) x += m_b[i] * m_w[m_nk + i];
-    for (Eigen::Index j = 0; j < m_a.size(); ++j) x -= m_a[j] * m_x[j];
-    m_x.push(x);
+    for (Eigen::Index j = 0; j < m_a.size(); ++j) x -= m_a[j] * m_z[j];
+    if (m_integrators.size() > 0) x += m_integrators.carried();
+    m_z.push(m_integrators.push(x));
     return x;
   }
 
@@ -69,7 +79,8 @@ class LinearBlock {
   BCoeffs m_b;
   Eigen::Index m_nk;
   detail::History<Scalar> m_w;
-  detail::History<Scalar> m_x;
+  detail::History<Scalar> m_z;  // z(k-1..k-na); x itself where there are no integrators
+  detail::IntegratorLags<Scalar> m_integrators;
 };
 
 }  // namespace bonl

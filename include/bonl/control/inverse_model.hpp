@@ -105,7 +105,7 @@ class InverseModel {
   /// q_1 = 0, an input polynomial not monotone through 0 or constant), for a command range that is
   /// not finite (with an input polynomial) or does not contain u0, or a band < 0.
   explicit InverseModel(const Model& model, const InverseOptions& options = {})
-      : m_linear(model.a(), model.b(), model.nk()),
+      : m_linear(bonl::detail::with_integrators(model.a(), model.ni()), model.b(), model.nk()),
         m_u0(static_cast<Scalar>(model.u0())),
         m_y0(static_cast<Scalar>(model.y0())),
         m_command_min(static_cast<Scalar>(std::isnan(options.command_min) ? model.input_min() : options.command_min)),

@@ -171,10 +171,10 @@ std::optional<Vector> quantile_knots(const Vector& x, Eigen::Index nh) {
 /// squares broke down.
 template <typename Scalar>
 ARX<Scalar> best_linear_approximation(const Records<Scalar>& records, Eigen::Index na, Eigen::Index nb,
-                                      Eigen::Index nk, int iterations) {
+                                      Eigen::Index nk, int iterations, Eigen::Index ni = 0) {
   IdentifyOptions least_squares;
   least_squares.method = Method::EquationError;
-  const ARX<Scalar> arx = estimate_recursively(ARX<Scalar>(na, nb, nk), records, least_squares);
+  const ARX<Scalar> arx = estimate_recursively(ARX<Scalar>(na, nb, nk, ni), records, least_squares);
   return refine_output_error(arx, records, iterations);
 }
 
@@ -198,7 +198,9 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
   std::vector<WienerHammersteinSplit<Model>> splits;
   std::optional<ARX<Scalar>> bla;
   try {
-    bla = detail::best_linear_approximation(records, na1 + na2, nb1 + nb2, structure.nk(), linear_iterations);
+    // With the structure's integrators (the second block's): its estimated poles are split.
+    bla = detail::best_linear_approximation(records, na1 + na2, nb1 + nb2, structure.nk(), linear_iterations,
+                                            structure.ni());
   } catch (const NumericalError&) {
     return splits;  // no BLA to split: identify() keeps its recursive starts
   }
@@ -219,7 +221,7 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
   for (const auto& poles : pole_subsets) {
     for (const auto& zeros : zero_subsets) {
       typename Model::First first(na1, nb1, structure.nk());
-      typename Model::Second second(na2, nb2, 0);
+      typename Model::Second second(na2, nb2, 0, structure.ni());
       first.set_a(detail::coefficients_of(pole_groups, poles, true).template cast<Scalar>());
       second.set_a(detail::coefficients_of(pole_groups, poles, false).template cast<Scalar>());
       VectorX b1(nb1 + 1), b2(nb2 + 1);

@@ -5,7 +5,9 @@
 // Format, version 2 (keys written in this order; readers are strict: no missing or unknown keys):
 //   {"format": "bonl-model", "version": 2,
 //    "model": the model's name (kDescription.name: "ARX", "Hammerstein", ...),
-//    "orders": {one integer per order of kDescription.orders: "na": .., "nb": .., ...},
+//    "orders": {one integer per order of kDescription.orders: "na": .., "nb": .., ...; an order with a
+//               default (the integrators ni, 0) is written only where it differs from it, and a file
+//               without it reads as the default, so files written before it existed still load},
 //    "params": {one entry per block of kDescription.parameters: an array ("b": [b_0..b_nb], ...), or a
 //               number for a one-number block ("c")},
 //    "operating_point": {"u0": .., "y0": ..},
@@ -145,13 +147,16 @@ inline Json parse(const std::string& text) {
 }
 
 /// Fails on a key that is missing from, or not allowed in, the object at `where` ("" = top level).
-template <class Keys>
-void require_keys(const Json& object, const std::string& where, const Keys& allowed) {
+/// `may_be_missing(i)`: the key allowed[i] may be left out.
+template <class Keys, class MayBeMissing>
+void require_keys(const Json& object, const std::string& where, const Keys& allowed, MayBeMissing&& may_be_missing) {
   const std::string path = where.empty() ? "" : where + ".";
   std::string listed;
   for (const char* key : allowed) listed += (listed.empty() ? "" : ", ") + std::string(key);
+  std::size_t index = 0;
   for (const char* key : allowed) {
-    if (!object.contains(key)) fail("missing key " + path + key);
+    if (!object.contains(key) && !may_be_missing(index)) fail("missing key " + path + key);
+    ++index;
   }
   for (const auto& item : object.items()) {
     bool known = false;
@@ -161,6 +166,10 @@ void require_keys(const Json& object, const std::string& where, const Keys& allo
            listed + ")");
     }
   }
+}
+template <class Keys>
+void require_keys(const Json& object, const std::string& where, const Keys& allowed) {
+  require_keys(object, where, allowed, [](std::size_t) { return false; });
 }
 inline void require_keys(const Json& object, const std::string& where, std::initializer_list<const char*> allowed) {
   require_keys<std::initializer_list<const char*>>(object, where, allowed);
@@ -299,11 +308,16 @@ Model model_from_document(const Json& document) {
 
   const Json& orders = document["orders"];
   if (!orders.is_object()) fail("orders must be an object, got " + show(orders));
-  require_keys(orders, "orders", names_of(description.orders));
+  const auto has_default = [&](std::size_t i) {
+    return description.orders[i].default_value != OrderDescription::kRequired;
+  };
+  require_keys(orders, "orders", names_of(description.orders), has_default);
   std::array<Eigen::Index, description.orders.size()> order_values{};
   for (std::size_t i = 0; i < order_values.size(); ++i) {
     const OrderDescription& order = description.orders[i];
-    order_values[i] = read_order(orders, order.name, order.minimum, order.maximum, order.fixed);
+    order_values[i] = orders.contains(order.name)
+                          ? read_order(orders, order.name, order.minimum, order.maximum, order.fixed)
+                          : order.default_value;
   }
 
   const Json& params = document["params"];
@@ -378,6 +392,7 @@ std::string to_json(const Model& model, int indent = -1) {
     Json orders = Json::object();
     const auto order_values = model.orders();
     for (std::size_t i = 0; i < description.orders.size(); ++i) {
+      if (order_values[i] == description.orders[i].default_value) continue;  // files from before it stay as they were
       orders[description.orders[i].name] = static_cast<std::int64_t>(order_values[i]);
     }
     Json params = Json::object();

@@ -23,22 +23,24 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   /// ARX has no unmeasured internal variable: its regressor is made of measured data only.
   static constexpr bool kHasInternalVariables = false;
   static constexpr const char* kName = "ARX";
-  static constexpr ModelDescription<3, 2> kDescription{
+  static constexpr ModelDescription<4, 2> kDescription{
       kName,
       "ARX model y(k) = -sum a_j y(k-j) + sum_{i=0..nb} b_i u(k-nk-i).",
       {{{"na", 1, detail::kMaxOrder, Na_, "poles of the linear block (na >= 1)"},
         {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
-        {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"}}},
+        {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"},
+        detail::kIntegratorsOrder}},
       {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free for ARX)", nullptr, false, {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}}}}};
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
 
-  ARX(Eigen::Index na, Eigen::Index nb, Eigen::Index nk) : m_na(na), m_nb(nb), m_nk(nk) {
+  ARX(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index ni = 0) : m_na(na), m_nb(nb), m_nk(nk), m_ni(ni) {
     detail::require_order(na, 1, "na");
     detail::require_order(nb, 0, "nb");
     detail::require_order(nk, 0, "nk");
+    detail::require_integrators(ni);
     detail::require_matches_template(na, Na_, "na");
     detail::require_matches_template(nb, Nb_, "nb");
     m_theta = Params::Zero(nb + 1 + na);
@@ -47,9 +49,10 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   Eigen::Index na() const noexcept { return m_na; }
   Eigen::Index nb() const noexcept { return m_nb; }
   Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index ni() const noexcept { return m_ni; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
 
-  std::array<Eigen::Index, 3> orders() const noexcept { return {m_na, m_nb, m_nk}; }
+  std::array<Eigen::Index, 4> orders() const noexcept { return {m_na, m_nb, m_nk, m_ni}; }
 
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>
@@ -91,17 +94,19 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   void constrain(Params& /*theta*/) const noexcept {}
 
   /// Regressor [u(k-nk), ..., u(k-nk-nb), -y(k-1), ..., -y(k-na)]; target y(k). Both methods agree:
-  /// ARX has no unmeasured internal variable.
+  /// ARX has no unmeasured internal variable. With integrators the y lags are differenced and the
+  /// target is y(k) less the integrators' part (detail/integrators.hpp).
   class KeyTerms {
    public:
     KeyTerms(const ARX& model, KeyTermMethod /*method*/)
-        : m_linear(model.na(), model.nb(), model.nk()), m_phi(Params::Zero(model.num_params())) {}
+        : m_linear(model.na(), model.nb(), model.nk(), model.ni()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_linear.reset(); }
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       m_linear.begin(u, m_phi);
-      const Scalar prediction = m_phi.dot(theta);
+      const Scalar carried = m_linear.carried();
+      const Scalar prediction = m_phi.dot(theta) + carried;
       m_linear.end(std::isnan(y) ? prediction : y);  // the lags are the measured outputs
-      return {m_phi, y, prediction, prediction, true};
+      return {m_phi, y - carried, prediction, prediction, true};
     }
 
    private:
@@ -115,7 +120,8 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   class OutputErrorTerms {
    public:
     explicit OutputErrorTerms(const ARX& model, Eigen::Index /*hold*/ = 0)
-        : m_linear(model.na(), model.nb(), model.nk(), model.num_params()), m_psi(Params::Zero(model.num_params())) {}
+        : m_linear(model.na(), model.nb(), model.nk(), model.num_params(), model.ni()),
+          m_psi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_linear.reset(); }
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar y = m_linear.step(theta, u, m_psi);
@@ -135,7 +141,7 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
 
  private:
   Params m_theta;
-  Eigen::Index m_na, m_nb, m_nk;
+  Eigen::Index m_na, m_nb, m_nk, m_ni;
 };
 
 }  // namespace bonl

@@ -19,16 +19,20 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   using typename Front::Scalar;
   using typename Front::VectorX;
   static constexpr const char* kName = "Hammerstein";
-  static constexpr ModelDescription<4, 4> kDescription{
+  static constexpr ModelDescription<5, 4> kDescription{
       kName,
       "Hammerstein model: two-segment input polynomial, then the linear block (b_0 = 1). "
       "w = sum_l f_l u^l + h(u) sum_l p_l u^l (h(u) = 1 for u < 0), "
       "x(k) = -sum a_j x(k-j) + sum b_i w(k-nk-i), y = x.",
-      detail::front_orders<Na_, Nb_, R_>(), detail::kFrontParameters};
+      detail::concat(detail::front_orders<Na_, Nb_, R_>(), std::array<OrderDescription, 1>{detail::kIntegratorsOrder}),
+      detail::kFrontParameters};
 
-  Hammerstein(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r) : Front(na, nb, nk, r, 0) {}
+  Hammerstein(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index ni = 0)
+      : Front(na, nb, nk, r, 0, ni) {}
 
-  std::array<Eigen::Index, 4> orders() const noexcept { return {this->na(), this->nb(), this->nk(), this->r()}; }
+  std::array<Eigen::Index, 5> orders() const noexcept {
+    return {this->na(), this->nb(), this->nk(), this->r(), this->ni()};
+  }
   /// The parameter block kDescription.parameters[i]: b, a, f, p.
   VectorX parameter(std::size_t i) const {
     if (i >= 4) detail::no_such_parameter(kName, i);
@@ -49,18 +53,20 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form (eq. 14): y(k) = [basis(u(k-nk)), w lags, -x lags] . theta. The past x are the
-  /// measured y for the equation-error method and the model's own run for the paper's.
+  /// measured y for the equation-error method and the model's own run for the paper's. With
+  /// integrators the target is y(k) less their part, known from the past x.
   class KeyTerms {
    public:
     KeyTerms(const Hammerstein& model, KeyTermMethod method)
-        : m_front(model.na(), model.nb(), model.nk(), model.r(), method), m_method(method),
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()), m_method(method),
           m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_front.reset(); }
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_front.pending()) m_front.store_a_posteriori(theta, m_phi);
+      const Scalar carried = m_front.carried();
       const Scalar x = m_front.begin(theta, u, m_phi);
       if (m_method == KeyTermMethod::EquationError) m_front.store(std::isnan(y) ? x : y);
-      return {m_phi, y, x, x, true};
+      return {m_phi, y - carried, x, x, true};
     }
 
    private:
@@ -74,7 +80,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   class OutputErrorTerms {
    public:
     explicit OutputErrorTerms(const Hammerstein& model, Eigen::Index /*hold*/ = 0)
-        : m_front(model.na(), model.nb(), model.nk(), model.r()) {}
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()) {}
     void reset() noexcept { m_front.reset(); }
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x = m_front.step(theta, u);

@@ -27,22 +27,24 @@ class HammersteinWiener
   using typename Front::VectorX;
   using OutputBlock = OutputPolynomial<Scalar, R1_>;
   static constexpr const char* kName = "HammersteinWiener";
-  static constexpr ModelDescription<5, 5> kDescription{
+  static constexpr ModelDescription<6, 5> kDescription{
       kName,
       "Hammerstein-Wiener model: the Hammerstein model followed by y = sum_{m=1..r1} q_m x^m (q_1 = 1).",
       detail::concat(detail::front_orders<Na_, Nb_, R_>(),
-                     std::array<OrderDescription, 1>{{{"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}}}),
+                     std::array<OrderDescription, 2>{
+                         {{"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}, detail::kIntegratorsOrder}}),
       detail::concat(detail::kFrontParameters,
                      std::array<ParameterDescription, 1>{{{"q", ParameterShape::Vector, 1, "q_1..q_r1 with q_1 = 1",
                                                            "the H-W model is normalised so that q_1 = 1", false,
                                                            {1, -1, 0, 0}}}})};
 
-  HammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index r1)
-      : Front(na, nb, nk, r, checked_r1(r1) - 1), m_r1(r1) {}
+  HammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index r1,
+                    Eigen::Index ni = 0)
+      : Front(na, nb, nk, r, checked_r1(r1) - 1, ni), m_r1(r1) {}
 
   Eigen::Index r1() const noexcept { return m_r1; }
-  std::array<Eigen::Index, 5> orders() const noexcept {
-    return {this->na(), this->nb(), this->nk(), this->r(), m_r1};
+  std::array<Eigen::Index, 6> orders() const noexcept {
+    return {this->na(), this->nb(), this->nk(), this->r(), m_r1, this->ni()};
   }
   /// The parameter block kDescription.parameters[i]: b, a, f, p, q.
   VectorX parameter(std::size_t i) const {
@@ -74,16 +76,18 @@ class HammersteinWiener
   class KeyTerms {
    public:
     KeyTerms(const HammersteinWiener& model, KeyTermMethod method)
-        : m_front(model.na(), model.nb(), model.nk(), model.r(), method), m_output(model.r1(), model.num_params()),
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()),
+          m_output(model.r1(), model.num_params()),
           m_method(method), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_front.reset(); }
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_front.pending()) m_front.store_a_posteriori(theta, m_phi);
+      const Scalar carried = m_front.carried();
       const Scalar x = m_front.begin(theta, u, m_phi);
       const Scalar prediction = m_output.output(theta, x);
       m_output.regress(x, m_phi);
       if (m_method == KeyTermMethod::EquationError) m_front.store(std::isnan(y) ? x : m_output.invert(theta, y, x));
-      return {m_phi, y, prediction, x, true};
+      return {m_phi, y - carried, prediction, x, true};
     }
 
    private:
@@ -99,7 +103,7 @@ class HammersteinWiener
   class OutputErrorTerms {
    public:
     explicit OutputErrorTerms(const HammersteinWiener& model, Eigen::Index /*hold*/ = 0)
-        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_output(model.r1(), model.num_params()),
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_output(model.r1(), model.num_params()),
           m_front_size(model.num_params() - model.r1() + 1), m_psi(Params::Zero(model.num_params())) {}
     void reset() noexcept { m_front.reset(); }
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {

@@ -31,6 +31,10 @@ struct OrderDescription {
   Eigen::Index maximum;  ///< largest value the model accepts
   int fixed;             ///< the compile-time value of this model type, or Eigen::Dynamic
   const char* meaning;   ///< one line for documentation: "poles of the linear block"
+  /// The value where a model file or a constructor call leaves the order out (an order added after
+  /// files were written: ni); kRequired where it must be given.
+  Eigen::Index default_value = kRequired;
+  static constexpr Eigen::Index kRequired = -1;
 };
 
 /// How a parameter block is stored in files and shown in Python.
@@ -136,6 +140,11 @@ Model make_model(const std::array<Eigen::Index, Model::kDescription.orders.size(
 }
 
 namespace detail {
+
+/// Every model's last order: the integrators of its linear block (of the second block where it has
+/// two), poles fixed at 1 (detail/integrators.hpp); 0 where a file or a call does not give it.
+inline constexpr OrderDescription kIntegratorsOrder{
+    "ni", 0, 2, Eigen::Dynamic, "integrators: poles fixed at 1 in the linear block's denominator (0..2)", 0};
 
 /// a followed by b, for descriptions that extend a shared part (the block models' front).
 template <class T, std::size_t N, std::size_t M>

@@ -18,6 +18,8 @@
 // linear in theta once the internal variables x(k-j) are computed; they are the nonlinearity of the
 // measured output's past, with the step's theta, for both key-term methods. A free run whose feedback
 // makes it leave the finite numbers is reported as every model's is (try_simulate() false).
+// With ni integrators the denominator is A (1 - q^-1)^ni (detail/integrators.hpp): with nv = 1 and
+// ni = 1 that is a drive's position integrating a velocity that friction acts on.
 
 #include <Eigen/Core>
 
@@ -29,6 +31,7 @@
 
 #include "../blocks/linear_block.hpp"
 #include "../detail/history.hpp"
+#include "../detail/integrators.hpp"
 #include "../detail/stability.hpp"
 #include "../detail/validate.hpp"
 #include "detail/hinge_terms.hpp"
@@ -54,7 +57,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// linear block's inverse (control/inverse_model.hpp).
   static constexpr bool kInvertible = false;
   static constexpr const char* kName = "NonlinearFeedback";
-  static constexpr ModelDescription<7, 6> kDescription{
+  static constexpr ModelDescription<8, 6> kDescription{
       kName,
       "Nonlinear-feedback (Lur'e) model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)), "
       "f(s) = sum_{m=2..r} f_m s^m + sum_{l=1..nh} g_l h(s - knots_l) (h the hinge, zero between 0 and its knot), "
@@ -65,7 +68,8 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         {"r", 1, 32, R_, "degree of the feedback polynomial (1..32; 1: no polynomial terms)"},
         {"nh", 0, 32, Nh_, "hinges of the feedback nonlinearity, knots where its slope changes (0..32; 0: none)"},
         {"nd", 1, 32, Nd_, "taps of the feedback block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32)"},
-        {"nv", 0, 1, Eigen::Dynamic, "what the nonlinearity sees: 0 the output y, 1 its first difference (a velocity)"}}},
+        {"nv", 0, 1, Eigen::Dynamic, "what the nonlinearity sees: 0 the output y, 1 its first difference (a velocity)"},
+        detail::kIntegratorsOrder}},
       {{{"b", ParameterShape::Vector, 0, "b_0..b_nb", nullptr, false, {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
         {"f", ParameterShape::Vector, 2, "f_2..f_r, the feedback polynomial's coefficients (none for r = 1)", nullptr,
@@ -84,8 +88,8 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of y): set them where the
   /// feedback's slope changes.
   NonlinearFeedback(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index nh,
-                    Eigen::Index nd, Eigen::Index nv)
-      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_nh(nh), m_nd(nd), m_nv(nv) {
+                    Eigen::Index nd, Eigen::Index nv, Eigen::Index ni = 0)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_nh(nh), m_nd(nd), m_nv(nv), m_ni(ni) {
     detail::require_order(na, 1, "na");
     detail::require_order(nb, 0, "nb");
     detail::require_order(nk, 0, "nk");
@@ -97,6 +101,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     detail::require(nd <= 32, "nd (feedback taps) must be <= 32");
     detail::require(nv == 0 || nv == 1, "nv must be 0 (the output is fed back) or 1 (its first difference), got " +
                                             std::to_string(nv));
+    detail::require_integrators(ni);
     detail::require_matches_template(na, Na_, "na");
     detail::require_matches_template(nb, Nb_, "nb");
     detail::require_matches_template(r, R_, "r");
@@ -113,8 +118,9 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   Eigen::Index nh() const noexcept { return m_nh; }
   Eigen::Index nd() const noexcept { return m_nd; }
   Eigen::Index nv() const noexcept { return m_nv; }
+  Eigen::Index ni() const noexcept { return m_ni; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
-  std::array<Eigen::Index, 7> orders() const noexcept { return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv}; }
+  std::array<Eigen::Index, 8> orders() const noexcept { return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_ni}; }
 
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>
@@ -197,16 +203,20 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     const Feedback feedback(*this);
     detail::History<Scalar> u_lags(m_nk + m_nb + 1);
     detail::History<Scalar> y_lags(lags());
+    detail::History<Scalar> z_lags(m_na);  // the denominator's past: y differenced ni times
+    detail::IntegratorLags<Scalar> integrators(m_ni);
     y.resize(u.size());
     for (Eigen::Index k = 0; k < u.size(); ++k) {
       u_lags.push(u[k]);
       Scalar out = Scalar(0);
       for (Eigen::Index i = 0; i <= m_nb; ++i) out += m_theta[i] * u_lags[m_nk + i];
-      for (Eigen::Index j = 0; j < m_na; ++j) out -= m_theta[first_a() + j] * y_lags[j];
+      for (Eigen::Index j = 0; j < m_na; ++j) out -= m_theta[first_a() + j] * z_lags[j];
       for (Eigen::Index j = 0; j < m_nd; ++j) out += tap(m_theta, j) * feedback.output(m_theta, feedback.s(y_lags, j));
+      if (m_ni > 0) out += integrators.carried();
       y[k] = out;
       if (!std::isfinite(out)) return false;
       y_lags.push(out);
+      z_lags.push(integrators.push(out));
     }
     return true;
   }
@@ -266,34 +276,43 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// Key-term form: regressor [u(k-nk..k-nk-nb), -y(k-1..k-na), s(k-1)^2..s(k-1)^r,
   /// h(s(k-1) - knots_1..nh), x(k-2..k-nd)], x(k-j) = f(s(k-j)) with the step's theta; target y(k).
   /// The past y are the measured outputs for both methods (the model's prediction where y is NaN),
-  /// so the internal variables are the nonlinearity of the measured past. predict() runs it.
+  /// so the internal variables are the nonlinearity of the measured past. predict() runs it. With
+  /// integrators the a-entries hold the differenced past and the target is y(k) less their part.
   class KeyTerms {
    public:
     KeyTerms(const NonlinearFeedback& model, KeyTermMethod /*method*/)
-        : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_y(model.lags()), m_na(model.na()),
+        : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_y(model.lags()), m_z(model.na()),
+          m_integrators(model.ni()), m_na(model.na()),
           m_nb(model.nb()), m_nk(model.nk()), m_nd(model.nd()), m_first_f(model.first_f()),
           m_feedback_size(model.r() - 1 + model.nh()), m_first_d(model.first_d()),
           m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_u.clear();
       m_y.clear();
+      m_z.clear();
+      m_integrators.clear();
     }
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       m_u.push(u);
       for (Eigen::Index i = 0; i <= m_nb; ++i) m_phi[i] = m_u[m_nk + i];
-      for (Eigen::Index j = 0; j < m_na; ++j) m_phi[m_nb + 1 + j] = -m_y[j];
+      for (Eigen::Index j = 0; j < m_na; ++j) m_phi[m_nb + 1 + j] = -m_z[j];
       m_phi.segment(m_first_f, m_feedback_size).setZero();
       const Scalar s1 = m_feedback.s(m_y, 0);
       m_feedback.add_regressor(s1, Scalar(1), m_phi);
       for (Eigen::Index j = 1; j < m_nd; ++j) m_phi[m_first_d + j - 1] = m_feedback.output(theta, m_feedback.s(m_y, j));
-      const Scalar prediction = m_phi.dot(theta);
-      m_y.push(std::isnan(y) ? prediction : y);
-      return {m_phi, y, prediction, m_feedback.output(theta, s1), true};
+      const Scalar carried = m_integrators.carried();
+      const Scalar prediction = m_phi.dot(theta) + carried;
+      const Scalar lag = std::isnan(y) ? prediction : y;
+      m_y.push(lag);
+      m_z.push(m_integrators.push(lag));
+      return {m_phi, y - carried, prediction, m_feedback.output(theta, s1), true};
     }
 
    private:
     Feedback m_feedback;
     detail::History<Scalar> m_u, m_y;
+    detail::History<Scalar> m_z;  // the denominator's past: y differenced ni times
+    detail::IntegratorLags<Scalar> m_integrators;
     Eigen::Index m_na, m_nb, m_nk, m_nd, m_first_f, m_feedback_size, m_first_d;
     Params m_phi;
   };
@@ -302,19 +321,25 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   ///   dy(k) = [u lags at b] + [-y lags at a] + sum_j d_j df/d[f, g](s(k-j)) + [x(k-j) at d_j]
   ///           - sum_j a_j dy(k-j) + sum_j d_j f'(s(k-j)) ds(k-j),
   /// ds the sensitivity of s (of y, or of y's first difference). The past outputs and their
-  /// sensitivities are kept as far back as the denominator and the feedback reach.
+  /// sensitivities are kept as far back as the denominator and the feedback reach. With integrators
+  /// the denominator's past is z = (1 - q^-1)^ni y, kept with its sensitivities beside y's, and
+  /// y(k) and dy(k) carry the integrators' part of the past y and dy.
   class OutputErrorTerms {
    public:
     explicit OutputErrorTerms(const NonlinearFeedback& model, Eigen::Index /*hold*/ = 0)
         : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()),
           m_nd(model.nd()), m_nv(model.nv()), m_first_f(model.first_f()),
           m_feedback_size(model.r() - 1 + model.nh()), m_first_d(model.first_d()),
-          m_y(VectorX::Zero(model.lags())), m_dy(SensitivityLags::Zero(model.num_params(), model.lags())),
+          m_ni(model.ni()), m_y(VectorX::Zero(model.lags())),
+          m_dy(SensitivityLags::Zero(model.num_params(), model.lags())), m_z(VectorX::Zero(model.na())),
+          m_dz(SensitivityLags::Zero(model.num_params(), model.na())),
           m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())), m_psi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_u.clear();
       m_y.setZero();
       m_dy.setZero();
+      m_z.setZero();
+      m_dz.setZero();
     }
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       m_u.push(u);
@@ -324,8 +349,8 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         y += theta[i] * m_psi[i];
       }
       for (Eigen::Index j = 0; j < m_na; ++j) {
-        m_psi[m_nb + 1 + j] = -m_y[j];
-        y -= theta[m_nb + 1 + j] * m_y[j];
+        m_psi[m_nb + 1 + j] = -m_z[j];
+        y -= theta[m_nb + 1 + j] * m_z[j];
       }
       m_psi.segment(m_first_f, m_feedback_size).setZero();
       Scalar x1 = Scalar(0);
@@ -339,7 +364,11 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         m_feedback.add_regressor(s, dj, m_psi);
       }
       // Through the loop: the denominator's past and the feedback's slope at each past s.
-      for (Eigen::Index j = 0; j < m_na; ++j) m_psi -= theta[m_nb + 1 + j] * m_dy.col(j);
+      for (Eigen::Index j = 0; j < m_na; ++j) m_psi -= theta[m_nb + 1 + j] * m_dz.col(j);
+      if (m_ni > 0) {
+        y += detail::carried<Scalar>(m_ni, m_y);
+        add_carried_sensitivity(m_psi, Scalar(1));
+      }
       for (Eigen::Index j = 0; j < m_nd; ++j) {
         const Scalar dj = j == 0 ? Scalar(1) : theta[m_first_d + j - 1];
         const Scalar gain = dj * m_feedback.slope(theta, m_feedback.s(m_y, j));
@@ -351,6 +380,16 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       return {y, m_psi, x1};
     }
     void accept() noexcept {
+      for (Eigen::Index j = m_z.size() - 1; j > 0; --j) {
+        m_z[j] = m_z[j - 1];
+        m_dz.col(j) = m_dz.col(j - 1);
+      }
+      m_z[0] = m_output;  // z(k) = y(k) - carried(k), read before the y lags move
+      m_dz.col(0) = m_psi;
+      if (m_ni > 0) {
+        m_z[0] -= detail::carried<Scalar>(m_ni, m_y);
+        add_carried_sensitivity(m_dz.col(0), Scalar(-1));
+      }
       for (Eigen::Index j = m_y.size() - 1; j > 0; --j) {
         m_y[j] = m_y[j - 1];
         m_dy.col(j) = m_dy.col(j - 1);
@@ -362,6 +401,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     void accept(const Params& delta) noexcept {
       accept();
       for (Eigen::Index j = 0; j < m_y.size(); ++j) m_y[j] += m_dy.col(j).dot(delta);
+      for (Eigen::Index j = 0; j < m_z.size(); ++j) m_z[j] += m_dz.col(j).dot(delta);
     }
     bool stable(const Params& theta, Scalar radius) noexcept {
       return detail::roots_inside(theta.template segment<Na_>(m_nb + 1, m_na), radius, m_work);
@@ -369,11 +409,24 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
 
    private:
     using SensitivityLags = Eigen::Matrix<Scalar, kNumParams, Eigen::Dynamic>;
+
+    /// out += sign * d carried(k) / d theta = sign * (dy(k-1), or 2 dy(k-1) - dy(k-2)).
+    template <typename Out>
+    void add_carried_sensitivity(Out&& out, Scalar sign) const noexcept {
+      if (m_ni == 1) {
+        out += sign * m_dy.col(0);
+      } else {
+        out += (Scalar(2) * sign) * m_dy.col(0) - sign * m_dy.col(1);
+      }
+    }
+
     Feedback m_feedback;
     detail::History<Scalar> m_u;
-    Eigen::Index m_na, m_nb, m_nk, m_nd, m_nv, m_first_f, m_feedback_size, m_first_d;
+    Eigen::Index m_na, m_nb, m_nk, m_nd, m_nv, m_first_f, m_feedback_size, m_first_d, m_ni;
     VectorX m_y;            // y(k-1), y(k-2), ...: the simulated outputs, newest first
     SensitivityLags m_dy;   // their sensitivities, one column each
+    VectorX m_z;            // z(k-1..k-na): the denominator's past, y differenced ni times
+    SensitivityLags m_dz;   // their sensitivities
     Eigen::Matrix<Scalar, Na_, 1> m_work;  // for the stability test
     Params m_psi;
     Scalar m_output = Scalar(0);
@@ -384,15 +437,15 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   Eigen::Index first_f() const noexcept { return m_nb + 1 + m_na; }
   Eigen::Index first_g() const noexcept { return first_f() + m_r - 1; }
   Eigen::Index first_d() const noexcept { return first_g() + m_nh; }
-  /// How many past outputs a step reads: the denominator's na, the feedback's nd (and one more for
-  /// a first difference).
-  Eigen::Index lags() const noexcept { return std::max(m_na, m_nd + m_nv); }
+  /// How many past outputs a step reads besides the denominator's (kept apart, differenced): the
+  /// feedback's nd (and one more for a first difference) and the integrators' ni.
+  Eigen::Index lags() const noexcept { return std::max(m_nd + m_nv, m_ni); }
   /// d_{j+1} on theta (d_1 = 1).
   Scalar tap(const Params& theta, Eigen::Index j) const noexcept { return j == 0 ? Scalar(1) : theta[first_d() + j - 1]; }
 
   Params m_theta;
   Knots m_knots;
-  Eigen::Index m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv;
+  Eigen::Index m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_ni;
 };
 
 }  // namespace bonl

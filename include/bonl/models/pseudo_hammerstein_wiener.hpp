@@ -23,19 +23,22 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   using typename Front::Scalar;
   using typename Front::VectorX;
   static constexpr const char* kName = "PseudoHammersteinWiener";
-  static constexpr ModelDescription<4, 5> kDescription{
+  static constexpr ModelDescription<5, 5> kDescription{
       kName,
       "Pseudo-Hammerstein-Wiener model: the Hammerstein model followed by a symmetric, unit-slope "
       "backlash of half-width c. y(k) = x(k) - c if x(k) > y(k-1) + c; x(k) + c if x(k) < y(k-1) - c; "
       "else y(k-1).",
-      detail::front_orders<Na_, Nb_, R_>(),
+      detail::concat(detail::front_orders<Na_, Nb_, R_>(), std::array<OrderDescription, 1>{detail::kIntegratorsOrder}),
       detail::concat(detail::kFrontParameters,
                      std::array<ParameterDescription, 1>{
                          {{"c", ParameterShape::Number, 0, "backlash half-width", nullptr, true, {1, 0, 0, 0}}}})};
 
-  PseudoHammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r) : Front(na, nb, nk, r, 1) {}
+  PseudoHammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index ni = 0)
+      : Front(na, nb, nk, r, 1, ni) {}
 
-  std::array<Eigen::Index, 4> orders() const noexcept { return {this->na(), this->nb(), this->nk(), this->r()}; }
+  std::array<Eigen::Index, 5> orders() const noexcept {
+    return {this->na(), this->nb(), this->nk(), this->r(), this->ni()};
+  }
   /// The parameter block kDescription.parameters[i]: b, a, f, p, c (one entry).
   VectorX parameter(std::size_t i) const {
     if (i < Front::kFrontBlocks) return this->front_parameter(i);
@@ -100,7 +103,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   class KeyTerms {
    public:
     KeyTerms(const PseudoHammersteinWiener& model, KeyTermMethod method)
-        : m_front(model.na(), model.nb(), model.nk(), model.r(), method), m_method(method),
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()), m_method(method),
           m_last(model.num_params() - 1), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_front.reset();
@@ -109,6 +112,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     }
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_front.pending()) m_x_prev = m_front.store_a_posteriori(theta, m_phi);
+      const Scalar carried = m_front.carried();
       const Scalar x = m_front.begin(theta, u, m_phi);
       const Scalar prediction = Backlash<Scalar>::map(x, m_y_prev, std::max(theta[m_last], Scalar(0)));
       Scalar target = y;
@@ -136,7 +140,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
         m_front.store(std::isnan(y) ? x : std::min(std::max(x, y - c), y + c));
       }
       m_y_prev = std::isnan(y) ? prediction : y;
-      return {m_phi, target, prediction, x, informative};
+      return {m_phi, target - carried, prediction, x, informative};
     }
 
    private:
@@ -161,7 +165,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   class OutputErrorTerms {
    public:
     explicit OutputErrorTerms(const PseudoHammersteinWiener& model, Eigen::Index hold = 0)
-        : m_front(model.na(), model.nb(), model.nk(), model.r()), m_last(model.num_params() - 1),
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_last(model.num_params() - 1),
           m_psi(Params::Zero(model.num_params())), m_dy(m_psi), m_hold(hold) {}
     void reset() noexcept {
       m_front.reset();

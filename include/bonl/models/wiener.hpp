@@ -33,14 +33,15 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
       detail::add_sizes(kLinearParams, R1_ == Eigen::Dynamic ? Eigen::Dynamic : R1_ - 1);
   static constexpr bool kHasInternalVariables = true;
   static constexpr const char* kName = "Wiener";
-  static constexpr ModelDescription<4, 3> kDescription{
+  static constexpr ModelDescription<5, 3> kDescription{
       kName,
       "Wiener model: the linear block x(k) = -sum a_j x(k-j) + sum_{i=0..nb} b_i u(k-nk-i), then "
       "y = sum_{m=1..r1} q_m x^m (q_1 = 1).",
       {{{"na", 1, detail::kMaxOrder, Na_, "poles of the linear block (na >= 1)"},
         {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
         {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"},
-        {"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}}},
+        {"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"},
+        detail::kIntegratorsOrder}},
       {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain)", nullptr, false,
          {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
@@ -51,10 +52,12 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
   using OutputBlock = OutputPolynomial<Scalar, R1_>;
 
-  Wiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r1) : m_na(na), m_nb(nb), m_nk(nk), m_r1(r1) {
+  Wiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r1, Eigen::Index ni = 0)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r1(r1), m_ni(ni) {
     detail::require_order(na, 1, "na");
     detail::require_order(nb, 0, "nb");
     detail::require_order(nk, 0, "nk");
+    detail::require_integrators(ni);
     detail::require_order(r1, 2, "r1 (output polynomial degree)");
     detail::require(r1 <= 32, "r1 (output polynomial degree) must be <= 32");
     detail::require_matches_template(na, Na_, "na");
@@ -67,8 +70,9 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   Eigen::Index nb() const noexcept { return m_nb; }
   Eigen::Index nk() const noexcept { return m_nk; }
   Eigen::Index r1() const noexcept { return m_r1; }
+  Eigen::Index ni() const noexcept { return m_ni; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
-  std::array<Eigen::Index, 4> orders() const noexcept { return {m_na, m_nb, m_nk, m_r1}; }
+  std::array<Eigen::Index, 5> orders() const noexcept { return {m_na, m_nb, m_nk, m_r1, m_ni}; }
 
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>
@@ -119,11 +123,12 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   /// x(k) the a-priori estimate [u lags, -x lags] . [b, a]. The past x: the equation-error method maps
   /// the measured y back through q^-1 (the branch nearest the model's own estimate; where q cannot
   /// be inverted, the model's estimate), the paper's method keeps the model's estimates (eq. 24:
-  /// stored a posteriori, at the next step). predict() runs the equation-error form.
+  /// stored a posteriori, at the next step). predict() runs the equation-error form. With integrators
+  /// the x lags are differenced and the target is y(k) less their part of x(k).
   class KeyTerms {
    public:
     KeyTerms(const Wiener& model, KeyTermMethod method)
-        : m_linear(model.na(), model.nb(), model.nk()), m_output(model.r1(), model.num_params()), m_method(method),
+        : m_linear(model.na(), model.nb(), model.nk(), model.ni()), m_output(model.r1(), model.num_params()), m_method(method),
           m_linear_size(model.nb() + 1 + model.na()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_linear.reset();
@@ -132,6 +137,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_pending) m_linear.end(linear_part(theta));
       m_linear.begin(u, m_phi);
+      const Scalar carried = m_linear.carried();
       const Scalar x = linear_part(theta);
       const Scalar prediction = m_output.output(theta, x);
       m_output.regress(x, m_phi);
@@ -140,13 +146,14 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
       } else {
         m_pending = true;
       }
-      return {m_phi, y, prediction, x, true};
+      return {m_phi, y - carried, prediction, x, true};
     }
 
    private:
-    /// x(k) = [u lags, -x lags] . [b, a].
+    /// x(k) = [u lags, -x lags] . [b, a] (and the integrators' part).
     Scalar linear_part(const Params& theta) const noexcept {
-      return m_phi.template head<kLinearParams>(m_linear_size).dot(theta.template head<kLinearParams>(m_linear_size));
+      return m_phi.template head<kLinearParams>(m_linear_size).dot(theta.template head<kLinearParams>(m_linear_size)) +
+             m_linear.carried();
     }
 
     detail::LinearKeyTerms<Scalar, Na_> m_linear;
@@ -165,7 +172,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     using Sensitivity = Eigen::Matrix<Scalar, kLinearParams, 1>;
 
     explicit OutputErrorTerms(const Wiener& model, Eigen::Index /*hold*/ = 0)
-        : m_linear(model.na(), model.nb(), model.nk(), model.nb() + 1 + model.na()),
+        : m_linear(model.na(), model.nb(), model.nk(), model.nb() + 1 + model.na(), model.ni()),
           m_output(model.r1(), model.num_params()), m_dx(Sensitivity::Zero(model.nb() + 1 + model.na())),
           m_psi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
@@ -195,7 +202,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
 
  private:
   Params m_theta;
-  Eigen::Index m_na, m_nb, m_nk, m_r1;
+  Eigen::Index m_na, m_nb, m_nk, m_r1, m_ni;
 };
 
 }  // namespace bonl

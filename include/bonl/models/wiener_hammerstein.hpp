@@ -50,7 +50,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   static constexpr int kNumParams = detail::add_sizes(kFrontParams, detail::add_sizes(Nb2_, Na2_));
   static constexpr bool kHasInternalVariables = true;
   static constexpr const char* kName = "WienerHammerstein";
-  static constexpr ModelDescription<7, 7> kDescription{
+  static constexpr ModelDescription<8, 7> kDescription{
       kName,
       "Wiener-Hammerstein model: the linear block x1 = z^-nk B1/A1 u, then the static nonlinearity "
       "w = sum_{m=1..r} f_m x1^m + sum_{j=1..nh} g_j h(x1 - knots_j) (f_1 = 1; h the hinge, zero between 0 "
@@ -61,7 +61,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
         {"r", 1, 32, R_, "degree of the static polynomial (1..32; 1: no polynomial terms)"},
         {"nh", 0, 32, Nh_, "hinges of the static nonlinearity, knots where its slope changes (0..32; 0: none)"},
         {"na2", 1, detail::kMaxOrder, Na2_, "poles of the second linear block (na2 >= 1)"},
-        {"nb2", 0, detail::kMaxOrder, Nb2_, "B2 has nb2 + 1 coefficients b2_0..b2_nb2, b2_0 = 1"}}},
+        {"nb2", 0, detail::kMaxOrder, Nb2_, "B2 has nb2 + 1 coefficients b2_0..b2_nb2, b2_0 = 1"},
+        detail::kIntegratorsOrder}},
       {{{"b1", ParameterShape::Vector, 0, "b1_0..b1_nb1 (free: f_1 = b2_0 = 1 fix the other gains)", nullptr,
          false, {1, 0, -1, 0}},
         {"a1", ParameterShape::Vector, 1, "a1_1..a1_na1", nullptr, false, {}},
@@ -87,8 +88,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of x1, which are y's): set
   /// them where the slope changes, or let identify() place them from the data.
   WienerHammerstein(Eigen::Index na1, Eigen::Index nb1, Eigen::Index nk, Eigen::Index r, Eigen::Index nh,
-                    Eigen::Index na2, Eigen::Index nb2)
-      : m_na1(na1), m_nb1(nb1), m_nk(nk), m_r(r), m_nh(nh), m_na2(na2), m_nb2(nb2) {
+                    Eigen::Index na2, Eigen::Index nb2, Eigen::Index ni = 0)
+      : m_na1(na1), m_nb1(nb1), m_nk(nk), m_r(r), m_nh(nh), m_na2(na2), m_nb2(nb2), m_ni(ni) {
     detail::require_order(na1, 1, "na1");
     detail::require_order(nb1, 0, "nb1");
     detail::require_order(nk, 0, "nk");
@@ -98,6 +99,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     detail::require(nh <= 32, "nh (hinges) must be <= 32");
     detail::require_order(na2, 1, "na2");
     detail::require_order(nb2, 0, "nb2");
+    detail::require_integrators(ni);
     detail::require_matches_template(na1, Na1_, "na1");
     detail::require_matches_template(nb1, Nb1_, "nb1");
     detail::require_matches_template(r, R_, "r");
@@ -115,8 +117,12 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   Eigen::Index nh() const noexcept { return m_nh; }
   Eigen::Index na2() const noexcept { return m_na2; }
   Eigen::Index nb2() const noexcept { return m_nb2; }
+  /// The integrators of the second block, the one at the output.
+  Eigen::Index ni() const noexcept { return m_ni; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
-  std::array<Eigen::Index, 7> orders() const noexcept { return {m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2}; }
+  std::array<Eigen::Index, 8> orders() const noexcept {
+    return {m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2, m_ni};
+  }
 
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>
@@ -199,7 +205,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     return block;
   }
   Second second_block() const {
-    Second block(m_na2, m_nb2, 0);
+    Second block(m_na2, m_nb2, 0, m_ni);
     block.set_a(a2());
     block.set_b(b2());
     return block;
@@ -286,17 +292,20 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// B2, whose zeros may lie on the unit circle (a notch filter's do). The equation-error method
   /// stores them with the step's theta, the paper's a posteriori at the next step (eq. 24); the y
   /// lags are measured (the model's prediction where y is NaN). predict() runs the equation-error form.
+  /// With integrators (in the second block) the y lags are differenced and the target is y(k) less
+  /// their part.
   class KeyTerms {
    public:
     KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
         : m_first(model.na1(), model.nb1(), model.nk()),
-          m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_method(method),
+          m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_integrators(model.ni()), m_method(method),
           m_first_size(model.nb1() + 1 + model.na1()), m_second(model.first_b2()), m_nb2(model.nb2()),
           m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_first.reset();
       m_w.clear();
       m_y.clear();
+      m_integrators.clear();
       m_pending = false;
     }
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
@@ -308,15 +317,16 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       for (Eigen::Index i = 0; i < m_nb2; ++i) m_phi[m_second + i] = m_w[i];
       for (Eigen::Index j = 0; j < m_na2; ++j) m_phi[m_second + m_nb2 + j] = -m_y[j];
       const Eigen::Index n2 = m_nb2 + m_na2;
-      const Scalar prediction = w + m_phi.tail(n2).dot(theta.tail(n2));
+      const Scalar carried = m_integrators.carried();
+      const Scalar prediction = w + m_phi.tail(n2).dot(theta.tail(n2)) + carried;
       if (m_method == KeyTermMethod::EquationError) {
         m_first.end(std::isnan(y) ? x1 : measured_x1(theta, y, x1, prediction - w));
         m_w.push(w);
       } else {
         m_pending = true;
       }
-      m_y.push(std::isnan(y) ? prediction : y);
-      return {m_phi, y, prediction, x1, true};
+      m_y.push(m_integrators.push(std::isnan(y) ? prediction : y));
+      return {m_phi, y - carried, prediction, x1, true};
     }
 
    private:
@@ -342,7 +352,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     detail::LinearKeyTerms<Scalar, Na1_> m_first;
     MiddleTerms m_middle;
     detail::History<Scalar> m_w;  // w(k-1..k-nb2)
-    detail::History<Scalar> m_y;  // y(k-1..k-na2)
+    detail::History<Scalar> m_y;  // y(k-1..k-na2), differenced where there are integrators
+    detail::IntegratorLags<Scalar> m_integrators;
     KeyTermMethod m_method;
     Eigen::Index m_first_size, m_second, m_nb2, m_na2;  // m_second: the index of b2_1
     Params m_phi;
@@ -361,7 +372,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
 
     explicit OutputErrorTerms(const WienerHammerstein& model, Eigen::Index /*hold*/ = 0)
         : m_first(model.na1(), model.nb1(), model.nk(), model.nb1() + 1 + model.na1()),
-          m_middle(model), m_y(model.na2(), model.num_params()), m_nb2(model.nb2()), m_na2(model.na2()),
+          m_middle(model), m_y(model.na2(), model.num_params(), model.ni()), m_nb2(model.nb2()), m_na2(model.na2()),
           m_first_size(model.nb1() + 1 + model.na1()), m_front_size(m_first_size + model.r() - 1 + model.nh()),
           m_dx(FirstSensitivity::Zero(m_first_size)), m_dw(FrontSensitivity::Zero(m_front_size)),
           m_w_lags(Eigen::Matrix<Scalar, Nb2_, 1>::Zero(model.nb2())),
@@ -458,7 +469,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
 
   Params m_theta;
   Knots m_knots;
-  Eigen::Index m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2;
+  Eigen::Index m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2, m_ni;
 };
 
 }  // namespace bonl

@@ -13,6 +13,7 @@
 #include "../../blocks/linear_block.hpp"
 #include "../../blocks/two_segment_polynomial.hpp"
 #include "../../detail/history.hpp"
+#include "../../detail/integrators.hpp"
 #include "../../detail/stability.hpp"
 #include "../../detail/validate.hpp"
 #include "../model_description.hpp"
@@ -22,7 +23,8 @@
 
 namespace bonl::detail {
 
-/// The front's orders and parameter blocks, as the block models describe them.
+/// The front's orders and parameter blocks, as the block models describe them (each model appends its
+/// own orders, and kIntegratorsOrder last).
 template <int Na, int Nb, int R>
 constexpr std::array<OrderDescription, 4> front_orders() {
   return {{{"na", 1, kMaxOrder, Na, "poles of the linear block (na >= 1)"},
@@ -60,6 +62,7 @@ class HammersteinFront {
   Eigen::Index nb() const noexcept { return m_nb; }
   Eigen::Index nk() const noexcept { return m_nk; }
   Eigen::Index r() const noexcept { return m_r; }
+  Eigen::Index ni() const noexcept { return m_ni; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   Eigen::Index front_size() const noexcept { return 2 * (m_r + 1) + m_nb + m_na; }
 
@@ -127,11 +130,13 @@ class HammersteinFront {
   InputBlock input_block() const { return InputBlock(f(), p()); }
 
  protected:
-  HammersteinFront(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index extra) {
+  HammersteinFront(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index extra,
+                   Eigen::Index ni) {
     require_order(na, 1, "na");
     require_order(nb, 0, "nb");
     require_order(nk, 0, "nk");
     require_order(r, 1, "r");
+    require_integrators(ni);
     require_matches_template(na, Na_, "na");
     require_matches_template(nb, Nb_, "nb");
     require_matches_template(r, R_, "r");
@@ -139,6 +144,7 @@ class HammersteinFront {
     m_nb = nb;
     m_nk = nk;
     m_r = r;
+    m_ni = ni;
     m_theta = Params::Zero(front_size() + extra);
   }
 
@@ -157,11 +163,13 @@ class HammersteinFront {
   Eigen::Index m_nb = 0;
   Eigen::Index m_nk = 0;
   Eigen::Index m_r = 0;
+  Eigen::Index m_ni = 0;
 };
 
 /// The front's part of the key-term regressor (eq. 14 with eq. 7's signs):
 ///   [basis(u(k-nk)), w(k-nk-1), ..., w(k-nk-nb), -x(k-1), ..., -x(k-na)],
-/// so that x(k) = regressor . theta_front. Before the record starts, u, w and x are zero
+/// so that x(k) = regressor . theta_front. With integrators the lags are z = (1 - q^-1)^ni x and
+/// x(k) = regressor . theta_front + carried() (detail/integrators.hpp). Before the record starts, u, w and x are zero
 /// (the model is at rest), which is what the free-run simulation assumes too.
 /// Orders fixed in the template (the paper's 3, 2, 3) make every loop here a fixed, unrolled
 /// sequence and the x history a shift register; Eigen::Dynamic takes them from the constructor.
@@ -173,13 +181,16 @@ class FrontKeyTerms {
   static constexpr int kFront = front_params(Na, Nb, R);
 
  public:
-  FrontKeyTerms(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, KeyTermMethod method)
-      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_method(method), m_u(nk + nb + 1), m_w(nk + nb + 1), m_x(na) {}
+  FrontKeyTerms(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, KeyTermMethod method,
+                Eigen::Index ni)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_method(method), m_u(nk + nb + 1), m_w(nk + nb + 1), m_z(na),
+        m_integrators(ni) {}
 
   void reset() noexcept {
     m_u.clear();
     m_w.clear();
-    m_x.clear();
+    m_z.clear();
+    m_integrators.clear();
     m_k = 0;
     m_pending = false;
   }
@@ -187,13 +198,17 @@ class FrontKeyTerms {
   /// The paper's method: the previous sample's x and w wait for store_a_posteriori().
   bool pending() const noexcept { return m_pending; }
 
+  /// The integrators' part of x(k) (0 without integrators): what a model takes off its target.
+  Scalar carried() const noexcept { return m_integrators.carried(); }
+
   /// The paper's method (eq. 24): stores the previous sample's x = phi . theta and w = N1(u) with
   /// `theta`, the estimate updated since; `phi` is that sample's regressor. Returns that x.
   template <typename Theta, typename Phi>
   Scalar store_a_posteriori(const Theta& theta, const Phi& phi) noexcept {
     const Eigen::Index n = 2 * (r() + 1) + nb() + na();
-    const Scalar x = phi.template head<kFront>(n).dot(theta.template head<kFront>(n));
-    m_x.push(x);
+    Scalar x = phi.template head<kFront>(n).dot(theta.template head<kFront>(n));
+    if (m_integrators.size() > 0) x += m_integrators.carried();
+    m_z.push(m_integrators.push(x));
     m_w.push(TwoSegmentPolynomial<Scalar>::evaluate(coefficients(theta, 0), coefficients(theta, r() + 1), m_u[0]));
     advance();
     m_pending = false;
@@ -228,16 +243,17 @@ class FrontKeyTerms {
       x += theta[n_fp + i - 1] * w;
     }
     for (Eigen::Index j = 1; j <= na(); ++j) {
-      phi[n_fp + nb() + j - 1] = -m_x[j - 1];
-      x -= theta[n_fp + nb() + j - 1] * m_x[j - 1];
+      phi[n_fp + nb() + j - 1] = -m_z[j - 1];
+      x -= theta[n_fp + nb() + j - 1] * m_z[j - 1];
     }
+    if (m_integrators.size() > 0) x += m_integrators.carried();
     m_pending = paper;
     return x;
   }
 
   /// The equation-error method: stores x(k), the lag later regressors use (what the measured output says).
   void store(Scalar x_lag) noexcept {
-    m_x.push(x_lag);
+    m_z.push(m_integrators.push(x_lag));
     advance();
   }
 
@@ -260,7 +276,8 @@ class FrontKeyTerms {
   Eigen::Index m_na = 0, m_nb = 0, m_nk = 0, m_r = 0;
   KeyTermMethod m_method;
   History<Scalar> m_u, m_w;  // capacity nk + nb + 1: nk is a run-time order
-  History<Scalar, Na> m_x;
+  History<Scalar, Na> m_z;   // z(k-1..k-na): x itself where there are no integrators
+  IntegratorLags<Scalar> m_integrators;
   Eigen::Index m_k = 0;
   bool m_pending = false;
 };
@@ -281,8 +298,8 @@ class FrontOutputError {
   using Sensitivity = Eigen::Matrix<Scalar, kFront, 1>;
 
   FrontOutputError() = default;
-  FrontOutputError(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r)
-      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_u(nk + nb + 1), m_lags(na, 2 * (r + 1) + nb + na),
+  FrontOutputError(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index ni)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_u(nk + nb + 1), m_lags(na, 2 * (r + 1) + nb + na, ni),
         m_dx(Sensitivity::Zero(2 * (r + 1) + nb + na)), m_work(Eigen::Matrix<Scalar, Na, 1>::Zero(na)) {}
 
   void reset() noexcept {

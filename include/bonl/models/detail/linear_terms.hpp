@@ -2,42 +2,49 @@
 // The linear block's part of a model's key-term regressor and of its output-error step, shared by
 // the models whose front is the linear block alone (ARX, Wiener), as hammerstein_front.hpp is for
 // the models with an input polynomial:
-//   x(k) = sum_{i=0..nb} b_i u(k-nk-i) - sum_{j=1..na} a_j x(k-j),   theta = [b_0..b_nb, a_1..a_na, ...].
+//   x(k) = sum_{i=0..nb} b_i u(k-nk-i) - sum_{j=1..na} a_j x(k-j),   theta = [b_0..b_nb, a_1..a_na, ...],
+// with ni integrators x(k) = [u lags] . b - [z lags] . a + carried(k) (detail/integrators.hpp).
 
 #include <Eigen/Core>
 
 #include "../../detail/history.hpp"
+#include "../../detail/integrators.hpp"
 #include "../../detail/stability.hpp"
 #include "simulated_lags.hpp"
 
 namespace bonl::detail {
 
-/// Regressor [u(k-nk), ..., u(k-nk-nb), -x(k-1), ..., -x(k-na)] in phi's first nb + 1 + na entries,
-/// with x the lags end() stored (ARX: the measured y; Wiener: the internal x).
+/// Regressor [u(k-nk), ..., u(k-nk-nb), -z(k-1), ..., -z(k-na)] in phi's first nb + 1 + na entries,
+/// with z the differenced lags end() stored (ARX: the measured y; Wiener: the internal x), z = x where
+/// there are no integrators. x(k) = regressor . [b, a] + carried().
 template <typename Scalar, int Na = Eigen::Dynamic>
 class LinearKeyTerms {
  public:
-  LinearKeyTerms(Eigen::Index na, Eigen::Index nb, Eigen::Index nk)
-      : m_na(na), m_nb(nb), m_nk(nk), m_u(nk + nb + 1), m_x(na) {}
+  LinearKeyTerms(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index ni = 0)
+      : m_na(na), m_nb(nb), m_nk(nk), m_u(nk + nb + 1), m_z(na), m_integrators(ni) {}
 
   void reset() noexcept {
     m_u.clear();
-    m_x.clear();
+    m_z.clear();
+    m_integrators.clear();
   }
   /// Pushes u(k) and writes the regressor.
   template <typename Phi>
   void begin(Scalar u, Phi& phi) noexcept {
     m_u.push(u);
     for (Eigen::Index i = 0; i <= m_nb; ++i) phi[i] = m_u[m_nk + i];
-    for (Eigen::Index j = 1; j <= m_na; ++j) phi[m_nb + j] = -m_x[j - 1];
+    for (Eigen::Index j = 1; j <= m_na; ++j) phi[m_nb + j] = -m_z[j - 1];
   }
+  /// The integrators' part of x(k), known from the past (0 without integrators).
+  Scalar carried() const noexcept { return m_integrators.carried(); }
   /// Stores x(k), the lag later regressors use.
-  void end(Scalar x) noexcept { m_x.push(x); }
+  void end(Scalar x) noexcept { m_z.push(m_integrators.push(x)); }
 
  private:
   Eigen::Index m_na, m_nb, m_nk;
   History<Scalar> m_u;  // capacity nk + nb + 1: nk is a run-time order
-  History<Scalar, Na> m_x;
+  History<Scalar, Na> m_z;
+  IntegratorLags<Scalar> m_integrators;
 };
 
 /// One step of the linear block's free run with the current estimate, and the sensitivity of x(k) to
@@ -46,8 +53,8 @@ class LinearKeyTerms {
 template <typename Scalar, int Na = Eigen::Dynamic, int N = Eigen::Dynamic>
 class LinearOutputError {
  public:
-  LinearOutputError(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index n)
-      : m_na(na), m_nb(nb), m_nk(nk), m_u(nk + nb + 1), m_lags(na, n),
+  LinearOutputError(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index n, Eigen::Index ni = 0)
+      : m_na(na), m_nb(nb), m_nk(nk), m_u(nk + nb + 1), m_lags(na, n, ni),
         m_work(Eigen::Matrix<Scalar, Na, 1>::Zero(na)) {}
 
   void reset() noexcept {

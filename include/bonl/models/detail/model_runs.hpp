@@ -82,7 +82,7 @@ typename Model::VectorX run_after_past(const Model& model, const Eigen::MatrixBa
 }
 
 /// simulate(), predict() and linear_block() for a model Derived with try_simulate_deviations(u, y),
-/// KeyTerms, a(), b(), na(), nb(), nk() and the type Linear; and the model's operating point.
+/// KeyTerms, a(), b(), na(), nb(), nk(), ni() and the type Linear; and the model's operating point.
 template <class Derived>
 class ModelRuns {
  public:
@@ -166,9 +166,9 @@ class ModelRuns {
     require_past(u_past, y_past);
     return run_after_past(self(), u_past, y_past, u, [&y](Eigen::Index k) { return y[k]; });
   }
-  /// The linear block B / A with the model's delay.
+  /// The linear block B / (A (1 - z^-1)^ni) with the model's delay and integrators.
   auto linear_block() const {
-    typename Derived::Linear block(self().na(), self().nb(), self().nk());
+    typename Derived::Linear block(self().na(), self().nb(), self().nk(), self().ni());
     block.set_a(self().a());
     block.set_b(self().b());
     return block;

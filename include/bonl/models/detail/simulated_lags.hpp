@@ -12,8 +12,14 @@
 // old estimate gave; to first order the new estimate would have given x + (dx/dtheta)' delta, so
 // they are moved there. Measured on the known systems: this recovers most of what re-simulating the
 // whole record with the new estimate would (docs/algorithm.md), at na dot products per sample.
+//
+// With ni integrators (detail/integrators.hpp) the recursion above runs on z = (1 - q^-1)^ni x, and
+//   x(k) = z(k) + carried(k),   d x(k) / d theta = d z(k) / d theta - sum_i d_i d x(k-i) / d theta,
+// so the past z and x are kept with their sensitivities, na and ni of them.
 
 #include <Eigen/Core>
+
+#include "../../detail/integrators.hpp"
 
 namespace bonl::detail {
 
@@ -24,18 +30,22 @@ class SimulatedLags {
   using Sensitivity = Eigen::Matrix<Scalar, N, 1>;
 
   SimulatedLags() = default;
-  SimulatedLags(Eigen::Index na, Eigen::Index n)
-      : m_x(Eigen::Matrix<Scalar, Na, 1>::Zero(na)), m_dx(Eigen::Matrix<Scalar, N, Na>::Zero(n, na)) {}
+  /// na poles, n parameters, ni integrators (0..2).
+  SimulatedLags(Eigen::Index na, Eigen::Index n, Eigen::Index ni = 0)
+      : m_x(Eigen::Matrix<Scalar, Na, 1>::Zero(na)), m_dx(Eigen::Matrix<Scalar, N, Na>::Zero(n, na)), m_ni(ni),
+        m_integrated(IntegratedSensitivities::Zero(n, ni)) {}
 
   /// Back to rest: every past x and its sensitivity zero.
   void reset() noexcept {
     m_x.setZero();
     m_dx.setZero();
+    m_integrated_x[0] = m_integrated_x[1] = Scalar(0);
+    m_integrated.setZero();
   }
 
   /// With phi's input-side entries already in `dx` (everything but the a-entries at a_offset ..
-  /// a_offset + na - 1): writes the a-entries -x(k-j), turns dx into d x(k) / d theta and returns
-  /// -sum_j a_j x(k-j), the denominator's part of x(k).
+  /// a_offset + na - 1): writes the a-entries -z(k-j), turns dx into d x(k) / d theta and returns
+  /// -sum_j a_j z(k-j) + carried(k), the denominator's part of x(k).
   template <typename A, typename Dx>
   Scalar apply(const A& a, Dx& dx, Eigen::Index a_offset) const noexcept {
     Scalar part = Scalar(0);
@@ -44,6 +54,10 @@ class SimulatedLags {
       part -= a[j] * m_x[j];
     }
     for (Eigen::Index j = 0; j < m_x.size(); ++j) dx -= a[j] * m_dx.col(j);
+    if (m_ni > 0) {
+      part += carried<Scalar>(m_ni, m_integrated_x);
+      add_carried_sensitivity(dx, Scalar(1));
+    }
     return part;
   }
 
@@ -57,6 +71,16 @@ class SimulatedLags {
     if (m_x.size() > 0) {
       m_x[0] = x;
       m_dx.col(0) = dx;
+      if (m_ni > 0) {  // z(k) = x(k) - carried(k), and its sensitivity
+        m_x[0] -= carried<Scalar>(m_ni, m_integrated_x);
+        add_carried_sensitivity(m_dx.col(0), Scalar(-1));
+      }
+    }
+    if (m_ni > 0) {
+      m_integrated_x[1] = m_integrated_x[0];
+      m_integrated_x[0] = x;
+      if (m_ni == 2) m_integrated.col(1) = m_integrated.col(0);
+      m_integrated.col(0) = dx;
     }
   }
 
@@ -64,14 +88,27 @@ class SimulatedLags {
   template <typename Delta>
   void correct(const Delta& delta) noexcept {
     for (Eigen::Index j = 0; j < m_x.size(); ++j) m_x[j] += m_dx.col(j).dot(delta);
+    for (Eigen::Index i = 0; i < m_ni; ++i) m_integrated_x[i] += m_integrated.col(i).dot(delta);
   }
 
-  /// x(k-1-j).
-  Scalar lag(Eigen::Index j) const noexcept { return m_x[j]; }
-
  private:
-  Eigen::Matrix<Scalar, Na, 1> m_x;
-  Eigen::Matrix<Scalar, N, Na> m_dx;  // column j: d x(k-1-j) / d theta
+  using IntegratedSensitivities = Eigen::Matrix<Scalar, N, Eigen::Dynamic, Eigen::ColMajor, N, kMaxIntegrators>;
+
+  /// out += sign * d carried(k) / d theta = sign * (dx(k-1), or 2 dx(k-1) - dx(k-2)).
+  template <typename Out>
+  void add_carried_sensitivity(Out&& out, Scalar sign) const noexcept {
+    if (m_ni == 1) {
+      out += sign * m_integrated.col(0);
+    } else {
+      out += (Scalar(2) * sign) * m_integrated.col(0) - sign * m_integrated.col(1);
+    }
+  }
+
+  Eigen::Matrix<Scalar, Na, 1> m_x;   // z(k-1-j): x(k-1-j) where there are no integrators
+  Eigen::Matrix<Scalar, N, Na> m_dx;  // column j: d z(k-1-j) / d theta
+  Eigen::Index m_ni = 0;
+  Scalar m_integrated_x[2] = {Scalar(0), Scalar(0)};  // x(k-1), x(k-2) for the integrators
+  IntegratedSensitivities m_integrated;               // column i: d x(k-1-i) / d theta
 };
 
 }  // namespace bonl::detail

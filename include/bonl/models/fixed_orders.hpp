@@ -109,6 +109,18 @@ template <class Model, class Table>
 using WithOrders = decltype(detail::ModelTemplate<Model>::template with_orders<Table>(
     std::make_index_sequence<detail::ModelTemplate<Model>::kTemplateOrders>{}));
 
+/// A model of type Model at the orders Table gives, its run-time orders too (nk = 8 from PaperOrders),
+/// each order Table does not name at its minimum: the structure of WithOrders<M, Table>, or of M.
+template <class Model, class Table>
+Model make_model_at() {
+  constexpr auto& orders = Model::kDescription.orders;
+  std::array<Eigen::Index, orders.size()> values{};
+  for (std::size_t i = 0; i < orders.size(); ++i) {
+    values[i] = detail::order_value<Table>(orders[i].name, static_cast<int>(orders[i].minimum));
+  }
+  return make_model<Model>(values);
+}
+
 /// Every model of a list (ModelList) in scalar type S, or with the orders of Table.
 template <class List, typename S>
 struct ModelsWithScalar;

@@ -68,8 +68,8 @@ TEST_CASE("the fixed-order and float lists hold every model of bonl::Models, in 
   });
 }
 
-TEMPLATE_LIST_TEST_CASE("a fixed-order model takes the table's orders; the others are run-time", "[fixed_orders]",
-                        bonl::PaperOrderModels) {
+TEMPLATE_LIST_TEST_CASE("a fixed-order model takes the table's orders, and its other orders stay run-time",
+                        "[fixed_orders]", bonl::PaperOrderModels) {
   constexpr auto& orders = TestType::kDescription.orders;
   std::array<Eigen::Index, orders.size()> values{};
   for (std::size_t i = 0; i < orders.size(); ++i) {

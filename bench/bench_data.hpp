@@ -14,9 +14,6 @@
 
 namespace bonl_bench {
 
-/// The paper's orders (section 5).
-constexpr Eigen::Index kNa = 3, kNb = 2, kNk = 8, kR = 3, kR1 = 3;
-
 /// Known parameters of the P-H-W system that generates the record (also used, in part, by the other
 /// models for the free-run benchmarks).
 inline Eigen::VectorXd true_f() { return (Eigen::VectorXd(4) << 0.002, 0.06, 0.02, -0.01).finished(); }
@@ -34,7 +31,7 @@ struct Record {
 
 inline const Record<double>& record_double() {
   static const Record<double> data = [] {
-    bonl::PaperPseudoHammersteinWiener truth(kNa, kNb, kNk, kR);
+    auto truth = bonl::make_model_at<bonl::PaperPseudoHammersteinWiener, bonl::PaperOrders>();
     truth.set_f(true_f());
     truth.set_p(true_p());
     truth.set_b(true_b());
@@ -92,42 +89,18 @@ const Record<Scalar>& mismatched_record(Mismatch data) {
   return data == Mismatch::DelayedFir ? fir : integrator;
 }
 
-/// The benchmarked models at the paper's orders, in scalar type S, with fixed (paper-order template)
-/// or run-time sizes. Every model of bonl::Models, each named by its kName; a new model is one entry.
+/// The benchmarked models at the paper's orders (bonl::PaperOrders), in scalar type S, with fixed
+/// (template) or run-time sizes: every model of bonl::Models, each named by its kName.
 template <typename S, bool Fixed>
-struct PaperOrderModels {
-  static constexpr int Na = Fixed ? 3 : Eigen::Dynamic;
-  static constexpr int Nb = Fixed ? 2 : Eigen::Dynamic;
-  static constexpr int R = Fixed ? 3 : Eigen::Dynamic;
-  static constexpr int Nh = Fixed ? 0 : Eigen::Dynamic;  // hinges (Wiener-Hammerstein, feedback): none
-  static constexpr int Nd = Fixed ? 1 : Eigen::Dynamic;  // the nonlinear-feedback model's taps: one
-  using PseudoHammersteinWiener = bonl::PseudoHammersteinWiener<S, Na, Nb, R>;
-  using type = bonl::ModelList<bonl::ARX<S, Na, Nb>, bonl::Hammerstein<S, Na, Nb, R>,
-                               bonl::HammersteinWiener<S, Na, Nb, R, R>, bonl::PseudoHammersteinWiener<S, Na, Nb, R>,
-                               bonl::Wiener<S, Na, Nb, R>, bonl::WienerHammerstein<S, Na, Nb, R, Nh, Na, Nb>,
-                               bonl::NonlinearFeedback<S, Na, Nb, R, Nh, Nd>>;
-};
-static_assert(bonl::Models::size == PaperOrderModels<double, true>::type::size,
-              "bench/bench_data.hpp: every model of bonl::Models has an entry in PaperOrderModels");
+using PaperOrderModels =
+    typename bonl::ModelsWithScalar<std::conditional_t<Fixed, bonl::PaperOrderModels, bonl::Models>, S>::type;
 
-/// The structure of a model at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3), by the names
-/// its description gives its orders; any other order (the hinges nh, the feedback's taps nd and signal
-/// nv) at the smallest value the model accepts.
+/// The structure of a model at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3, ...:
+/// bonl::PaperOrders); any other order (the feedback's signal nv, ...) at the smallest value the
+/// model accepts.
 template <class Model>
 Model make_structure() {
-  std::array<Eigen::Index, Model::kDescription.orders.size()> orders{};
-  for (std::size_t i = 0; i < orders.size(); ++i) {
-    const auto& order = Model::kDescription.orders[i];
-    const std::string name = order.name;
-    const std::string kind = name.substr(0, 2);  // na1 and na2 as na, nb1 and nb2 as nb
-    orders[i] = kind == "na"    ? kNa
-                : kind == "nb"  ? kNb
-                : name == "nk"  ? kNk
-                : name == "r"   ? kR
-                : name == "r1"  ? kR1
-                                : order.minimum;
-  }
-  return bonl::make_model<Model>(orders);
+  return bonl::make_model_at<Model, bonl::PaperOrders>();
 }
 
 /// What the safeguards did over passes of an estimator over a record: how many updates ran the RLS

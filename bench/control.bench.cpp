@@ -48,7 +48,7 @@ void inverse_model(benchmark::State& state) {
 
 template <bool Fixed>
 void register_sizes(const std::string& suffix) {
-  bonl::for_each_model(typename bonl_bench::PaperOrderModels<double, Fixed>::type{}, [&](auto tag) {
+  bonl::for_each_model(bonl_bench::PaperOrderModels<double, Fixed>{}, [&](auto tag) {
     using Model = typename decltype(tag)::type;
     if constexpr (bonl::control::has_inverse<Model>::value) {  // not the Wiener-Hammerstein model (yet)
       benchmark::RegisterBenchmark((std::string("inverse/") + Model::kName + "/" + suffix).c_str(),

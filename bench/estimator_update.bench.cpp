@@ -62,7 +62,7 @@ void update(benchmark::State& state, bonl::Method method, const bonl_bench::Reco
 
 template <typename S, bool Fixed>
 void register_sizes(const std::string& suffix) {
-  bonl::for_each_model(typename bonl_bench::PaperOrderModels<S, Fixed>::type{}, [&](auto tag) {
+  bonl::for_each_model(bonl_bench::PaperOrderModels<S, Fixed>{}, [&](auto tag) {
     using Model = typename decltype(tag)::type;
     for (const bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
       const std::string extra = method == bonl::Method::OutputError ? "" : std::string("/") + bonl::to_string(method);
@@ -75,7 +75,7 @@ void register_sizes(const std::string& suffix) {
 /// The default (output-error) P-H-W update on the records it does not fit.
 template <bool Fixed>
 void register_mismatches(const std::string& suffix) {
-  using Model = typename bonl_bench::PaperOrderModels<double, Fixed>::PseudoHammersteinWiener;
+  using Model = std::conditional_t<Fixed, bonl::PaperPseudoHammersteinWiener, bonl::PseudoHammersteinWienerd>;
   for (const bonl_bench::Mismatch data : bonl_bench::kMismatches) {
     benchmark::RegisterBenchmark(
         (std::string("update/") + Model::kName + "/" + suffix + "/" + bonl_bench::name(data)).c_str(),

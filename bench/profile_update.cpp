@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   const std::string data = argc == 4 ? argv[3] : "known";
 
   long updated = -1;
-  bonl::for_each_model(bonl_bench::PaperOrderModels<double, true>::type{}, [&](auto tag) {
+  bonl::for_each_model(bonl::PaperOrderModels{}, [&](auto tag) {
     using Model = typename decltype(tag)::type;
     if (model == Model::kName) updated = run<Model>(method, passes, data);
   });

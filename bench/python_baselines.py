@@ -152,10 +152,9 @@ def bonl_bindings(quick: bool, smoke: bool = False) -> dict:
     # Estimator.update over the whole record in one call (run-time sizes, the GIL released), per
     # sample, for every model at the paper's orders and each method: against the C++ run-time-size
     # update of the same structure (update/<model>/dynamic/double[/method] in bonl_bench).
-    paper_orders = dict(na=3, nb=2, nk=8, r=3, r1=3, nh=0, nd=1, nv=0, na1=3, nb1=2, na2=3, nb2=2, ni=0)  # bench_data.hpp's
     streaming = {}
     for model_class in bonl.MODELS:
-        model = model_class(*(paper_orders[name] for name in model_class.ORDERS))
+        model = model_class(*model_class.PAPER_ORDERS)  # bench_data.hpp's structures: bonl::PaperOrders
         for method in ("output_error", "equation_error", "paper"):
             def stream() -> None:
                 bonl.Estimator(model, method=method).update(u, y)

@@ -32,7 +32,7 @@ void simulate(benchmark::State& state) {
 
 template <bool Fixed>
 void register_sizes(const std::string& suffix) {
-  bonl::for_each_model(typename bonl_bench::PaperOrderModels<double, Fixed>::type{}, [&](auto tag) {
+  bonl::for_each_model(bonl_bench::PaperOrderModels<double, Fixed>{}, [&](auto tag) {
     using Model = typename decltype(tag)::type;
     benchmark::RegisterBenchmark((std::string("simulate/") + Model::kName + "/" + suffix).c_str(), simulate<Model>);
   });

@@ -242,6 +242,9 @@ void bind_model(py::module_& m) {
     if (order.default_value != bonl::OrderDescription::kRequired) order_defaults[order.name] = order.default_value;
   }
   cls.attr("ORDER_DEFAULTS") = order_defaults;
+  // The orders of the structure at the paper's orders (bonl::PaperOrders, an order it does not name at
+  // its minimum): what the benchmarks and the fixed-order variants use.
+  cls.attr("PAPER_ORDERS") = py::tuple(py::cast(bonl::make_model_at<Model, bonl::PaperOrders>().orders()));
   cls.def_property_readonly(
       "orders", [](const Model& model) { return py::tuple(py::cast(model.orders())); }, "tuple of int: the orders, as ORDERS names them.");
   for (std::size_t i = 0; i < kOrders; ++i) {

@@ -431,9 +431,19 @@ void fuzz(FuzzedDataProvider& in) {
   harness->run(in);
 }
 
-/// The kinds after the run-time models of bonl::Models: the paper's fixed orders, in double and in
-/// float (instantiated in fuzz_estimator_update_more.cpp, to split the compile).
-inline constexpr int kFixedKinds = 8;
+/// fuzz<Model>(in) for the model of the list at `index`.
+template <class List>
+void fuzz_model_at(List models, int index, FuzzedDataProvider& in) {
+  int i = 0;
+  bonl::for_each_model(models, [&](auto tag) {
+    if (i++ == index) fuzz<typename decltype(tag)::type>(in);
+  });
+}
+
+/// The kinds after the run-time models of bonl::Models: every model at the paper's fixed orders
+/// (bonl::PaperOrders), in double, then in float (instantiated in fuzz_estimator_update_more.cpp, to
+/// split the compile).
+inline constexpr int kFixedKinds = 2 * static_cast<int>(bonl::Models::size);
 void fuzz_fixed_kind(int kind, FuzzedDataProvider& in);
 
 }  // namespace bonl_fuzz

@@ -1,7 +1,7 @@
 // libFuzzer target: bytes -> bonl::Estimator<Model> fed a stream of (u, y) with NaN, inf, huge,
 // tiny and denormal values among ordinary ones (bonl/estimator/recursive_estimator.hpp).
 //
-// The input picks a model (every model of bonl::Models at small run-time orders, or the paper's
+// The input picks a model (every model of bonl::Models at small run-time orders, or at the paper's
 // fixed orders in double and in float), its orders (some invalid), the method, the
 // forgetting schedule, p0, c0, internal_refresh, trace_ceiling and recover_after (some invalid),
 // then a stream of operations: mostly update(u, y), sometimes reset(), reset(theta0), start_pass(),
@@ -40,10 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int kind = in.ConsumeIntegralInRange<int>(0, kRunTimeKinds + kFixedKinds - 1);
   try {
     if (kind < kRunTimeKinds) {  // every model of bonl::Models at small run-time orders, a few invalid
-      int index = 0;
-      bonl::for_each_model(bonl::Models{}, [&](auto tag) {
-        if (index++ == kind) fuzz<typename decltype(tag)::type>(in);
-      });
+      fuzz_model_at(bonl::Models{}, kind, in);
     } else {
       fuzz_fixed_kind(kind - kRunTimeKinds, in);
     }

@@ -5,15 +5,11 @@
 namespace bonl_fuzz {
 
 void fuzz_fixed_kind(int kind, FuzzedDataProvider& in) {
-  switch (kind) {
-    case 0: fuzz<bonl::PaperARX>(in); break;
-    case 1: fuzz<bonl::PaperHammerstein>(in); break;
-    case 2: fuzz<bonl::PaperHammersteinWiener>(in); break;
-    case 3: fuzz<bonl::PaperPseudoHammersteinWiener>(in); break;
-    case 4: fuzz<bonl::ARX<float, 3, 2>>(in); break;
-    case 5: fuzz<bonl::Hammerstein<float, 3, 2, 3>>(in); break;
-    case 6: fuzz<bonl::HammersteinWiener<float, 3, 2, 3, 3>>(in); break;
-    default: fuzz<bonl::PseudoHammersteinWiener<float, 3, 2, 3>>(in); break;
+  constexpr int kModels = static_cast<int>(bonl::Models::size);
+  if (kind < kModels) {
+    fuzz_model_at(bonl::PaperOrderModels{}, kind, in);
+  } else {
+    fuzz_model_at(bonl::ModelsWithScalar<bonl::PaperOrderModels, float>::type{}, kind - kModels, in);
   }
 }
 

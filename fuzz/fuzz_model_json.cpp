@@ -8,9 +8,9 @@
 //   arrays of finite numbers of the right lengths, b_0 = 1, q_1 = 1, c >= 0, knots strictly
 //   increasing and not 0; and the loaded model's numbers are those of the file, bit for bit.
 // - The typed readers agree with load_model: model_from_json<K> (run-time orders) succeeds exactly
-//   when load_model returned kind K, with bit-identical parameters; for the paper's four models the
-//   fixed-order (paper) type succeeds exactly when the orders match too, the float type exactly when
-//   every number fits in a float, giving the parameters rounded to float; another kind always fails.
+//   when load_model returned kind K, with bit-identical parameters; the kind's fixed-order type (at
+//   bonl::PaperOrders) succeeds exactly when the orders match too, its float type exactly when every
+//   number fits in a float, giving the parameters rounded to float; another kind always fails.
 //   The format's rules come from each model's description (bonl/models/model_description.hpp), so
 //   every model of bonl::Models is covered.
 // - A loaded model round-trips: to_json (compact and indented) reads back to the same kind, orders
@@ -43,37 +43,10 @@ constexpr const char* kPrefix = "bonl: model JSON: ";
 
 bool has_prefix(const char* message) { return std::string(message).rfind(kPrefix, 0) == 0; }
 
-/// The fixed-order (paper) and float variants of the paper's four models, whose typed readers must
-/// agree with load_model too. A model without an entry here (the Wiener model) is checked at run-time
-/// orders in double only: everything else about it comes from its description.
-template <class M>
-struct Variants {
-  static constexpr bool kListed = false;
-};
-template <>
-struct Variants<bonl::ARXd> {
-  static constexpr bool kListed = true;
-  using Paper = bonl::PaperARX;
-  using Float = bonl::ARX<float>;
-};
-template <>
-struct Variants<bonl::Hammersteind> {
-  static constexpr bool kListed = true;
-  using Paper = bonl::PaperHammerstein;
-  using Float = bonl::Hammerstein<float>;
-};
-template <>
-struct Variants<bonl::HammersteinWienerd> {
-  static constexpr bool kListed = true;
-  using Paper = bonl::PaperHammersteinWiener;
-  using Float = bonl::HammersteinWiener<float>;
-};
-template <>
-struct Variants<bonl::PseudoHammersteinWienerd> {
-  static constexpr bool kListed = true;
-  using Paper = bonl::PaperPseudoHammersteinWiener;
-  using Float = bonl::PseudoHammersteinWiener<float>;
-};
+/// Every model of bonl::Models at the paper's fixed orders, and in float (at run-time orders): their
+/// typed readers must agree with load_model too.
+using PaperModels = bonl::PaperOrderModels;
+using FloatModels = bonl::ModelsWithScalar<bonl::Models, float>::type;
 
 /// Same kind and orders.
 template <class A, class B>
@@ -107,27 +80,25 @@ std::optional<Target> typed_read(const std::string& text) {
   return std::nullopt;
 }
 
-/// One of the typed readers (every model of bonl::Models at run-time orders, then the paper's four at
-/// paper orders and in float); must fail.
-void typed_read_must_fail(const std::string& text, unsigned which) {
-  constexpr unsigned kRunTime = bonl::Models::size;
-  const unsigned kind = which % (kRunTime + 8);
+/// Whether model_from_json<Model>(text) loads, for the model of the list at `index`.
+template <class List>
+bool typed_read_at(List models, unsigned index, const std::string& text) {
+  unsigned i = 0;
   bool loaded = false;
-  unsigned index = 0;
-  bonl::for_each_model(bonl::Models{}, [&](auto tag) {
-    if (index++ == kind) loaded = typed_read<typename decltype(tag)::type>(text).has_value();
+  bonl::for_each_model(models, [&](auto tag) {
+    if (i++ == index) loaded = typed_read<typename decltype(tag)::type>(text).has_value();
   });
-  switch (kind < kRunTime ? 8 : kind - kRunTime) {
-    case 0: loaded = typed_read<bonl::PaperARX>(text).has_value(); break;
-    case 1: loaded = typed_read<bonl::PaperHammerstein>(text).has_value(); break;
-    case 2: loaded = typed_read<bonl::PaperHammersteinWiener>(text).has_value(); break;
-    case 3: loaded = typed_read<bonl::PaperPseudoHammersteinWiener>(text).has_value(); break;
-    case 4: loaded = typed_read<bonl::ARX<float>>(text).has_value(); break;
-    case 5: loaded = typed_read<bonl::Hammerstein<float>>(text).has_value(); break;
-    case 6: loaded = typed_read<bonl::HammersteinWiener<float>>(text).has_value(); break;
-    case 7: loaded = typed_read<bonl::PseudoHammersteinWiener<float>>(text).has_value(); break;
-    default: break;
-  }
+  return loaded;
+}
+
+/// One of the typed readers (every model of bonl::Models at run-time orders, then at the paper's
+/// orders, then in float); must fail.
+void typed_read_must_fail(const std::string& text, unsigned which) {
+  constexpr unsigned kModels = bonl::Models::size;
+  const unsigned kind = which % (3 * kModels);
+  const bool loaded = kind < kModels       ? typed_read_at(bonl::Models{}, kind, text)
+                      : kind < 2 * kModels ? typed_read_at(PaperModels{}, kind - kModels, text)
+                                           : typed_read_at(FloatModels{}, kind - 2 * kModels, text);
   FUZZ_CHECK(!loaded);
 }
 
@@ -217,25 +188,26 @@ void check_format(const std::string& text, const M& model) {
   }
 }
 
-/// The paper-order and float typed readers of one of the paper's four models agree with load_model.
+/// The paper-order and float typed readers of the model agree with load_model.
 template <class M>
 void check_variants(const std::string& text, const M& model) {
-  using K = Variants<M>;
+  using Paper = bonl::WithOrders<M, bonl::PaperOrders>;
+  using Float = bonl::WithScalar<M, float>;
   // Paper (fixed) orders: loads exactly when the file has them.
-  const auto paper = typed_read<typename K::Paper>(text);
-  FUZZ_CHECK(paper.has_value() == fits_fixed_orders<typename K::Paper>(model));
+  const auto paper = typed_read<Paper>(text);
+  FUZZ_CHECK(paper.has_value() == fits_fixed_orders<Paper>(model));
   if (paper) FUZZ_CHECK(same_model(*paper, model));
 
   // float: loads exactly when every parameter fits in a float; then the parameters are rounded.
   bool fits = true;
   for (Eigen::Index i = 0; i < model.theta().size(); ++i) fits = fits && std::abs(model.theta()[i]) <= FLT_MAX;
-  const auto single = typed_read<typename K::Float>(text);
+  const auto single = typed_read<Float>(text);
   FUZZ_CHECK(single.has_value() == fits);
   if (single) {
     FUZZ_CHECK(same_orders(*single, model));
     const Eigen::VectorXf rounded = model.theta().template cast<float>();
     FUZZ_CHECK(same_bits(single->theta().data(), rounded.data(), static_cast<long>(rounded.size())));
-    const auto single_again = typed_read<typename K::Float>(bonl::io::to_json(*single));
+    const auto single_again = typed_read<Float>(bonl::io::to_json(*single));
     FUZZ_CHECK(single_again.has_value() && same_model(*single_again, *single));
   }
 }
@@ -247,7 +219,7 @@ void check_loaded(const std::string& text, const M& model, std::size_t index, un
   // Run-time orders: the same model, bit for bit.
   const auto dynamic = typed_read<M>(text);
   FUZZ_CHECK(dynamic.has_value() && same_model(*dynamic, model));
-  if constexpr (Variants<M>::kListed) check_variants(text, model);
+  check_variants(text, model);
 
   // Another kind never loads it.
   constexpr unsigned kRunTime = bonl::Models::size;

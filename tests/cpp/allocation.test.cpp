@@ -70,8 +70,7 @@ void check_updates_allocate_nothing(const Model& structure, const std::optional<
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE("fixed-size updates allocate nothing", "[allocation]", bonl::PaperARX, bonl::PaperHammerstein,
-                   bonl::PaperHammersteinWiener, bonl::PaperPseudoHammersteinWiener, bonl::PaperWiener) {
+TEMPLATE_LIST_TEST_CASE("fixed-size updates allocate nothing", "[allocation]", bonl::PaperOrderModels) {
   static_assert(noexcept(std::declval<bonl::Estimator<TestType>&>().update(0.0, 0.0)));
   check_updates_allocate_nothing(known_system<TestType>(), bonl::EstimatorOptions{}.forgetting);
 }

@@ -5,28 +5,29 @@
 // test_support.hpp do not compile them again. They were compiled in up to 20 suites each, which
 // cost the CI's two builds about a quarter of their time (docs/performance.md, "The CI's time").
 //
-// A model missing from BONL_TEST_COMPILED_ONCE_MODELS is still tested the same way; its templates are
-// only compiled in every suite that uses them.
+// They are instantiated for every model of bonl::Models, and known_system for every model at the
+// paper's fixed orders (bonl::PaperOrders) too, by the model's index: an explicit instantiation names
+// one type, and the preprocessor, which repeats it, cannot count the models of a type list. So
+// BONL_TEST_EACH_MODEL(X), X(i) for every index i of bonl::Models, is written at build time by
+// tests/tools/model_indices.cpp into model_indices.hpp, and a new model needs no entry here.
 
 #include "known_systems.hpp"
+#include "model_indices.hpp"
 
+#include <cstddef>
+#include <tuple>
 #include <vector>
 
-#define BONL_TEST_COMPILED_ONCE_MODELS(X) \
-  X(bonl::ARXd)                           \
-  X(bonl::Hammersteind)                   \
-  X(bonl::HammersteinWienerd)             \
-  X(bonl::PseudoHammersteinWienerd)       \
-  X(bonl::Wienerd)                        \
-  X(bonl::WienerHammersteind)             \
-  X(bonl::NonlinearFeedbackd)
+namespace bonl_test {
 
-#define BONL_TEST_PAPER_MODELS(X)     \
-  X(bonl::PaperARX)                     \
-  X(bonl::PaperHammerstein)             \
-  X(bonl::PaperHammersteinWiener)       \
-  X(bonl::PaperPseudoHammersteinWiener) \
-  X(bonl::PaperWiener)
+/// The model of bonl::Models at index I, and the same model at the paper's fixed orders (another type:
+/// every model has orders that are template parameters).
+template <std::size_t I>
+using ModelAt = std::tuple_element_t<I, bonl::ApplyModels<bonl::Models, std::tuple>::type>;
+template <std::size_t I>
+using PaperModelAt = bonl::WithOrders<ModelAt<I>, bonl::PaperOrders>;
+
+}  // namespace bonl_test
 
 // compiled_once.cpp defines BONL_TEST_EXTERN as empty, which turns these declarations into the
 // definitions.
@@ -46,5 +47,8 @@
                                                          const bonl::IdentifyOptions&);                            \
   BONL_TEST_KNOWN_SYSTEM(M)
 
-BONL_TEST_COMPILED_ONCE_MODELS(BONL_TEST_IDENTIFICATION)
-BONL_TEST_PAPER_MODELS(BONL_TEST_KNOWN_SYSTEM)
+#define BONL_TEST_COMPILED_ONCE(I)                \
+  BONL_TEST_IDENTIFICATION(bonl_test::ModelAt<I>) \
+  BONL_TEST_KNOWN_SYSTEM(bonl_test::PaperModelAt<I>)
+
+BONL_TEST_EACH_MODEL(BONL_TEST_COMPILED_ONCE)

@@ -117,8 +117,8 @@ TEMPLATE_LIST_TEST_CASE("the output-error terms simulate like simulate() and the
   check_sensitivities<TestType>();
 }
 
-TEMPLATE_TEST_CASE("fixed orders: the output-error sensitivities are the simulation's derivatives", "[output_error]",
-                   bonl::PaperARX, bonl::PaperHammersteinWiener, bonl::PaperPseudoHammersteinWiener, bonl::PaperWiener) {
+TEMPLATE_LIST_TEST_CASE("fixed orders: the output-error sensitivities are the simulation's derivatives", "[output_error]",
+                        bonl::PaperOrderModels) {
   check_sensitivities<TestType>();
 }
 

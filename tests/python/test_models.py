@@ -88,3 +88,12 @@ def test_unstable_model_is_reported():
     model = bonl.Hammerstein(1, 0, 0, 1, f=[0.0, 1.0], a=[-1.5])
     with pytest.raises(bonl.NumericalError):
         model.simulate(np.ones(5000))
+
+
+def test_paper_orders_are_the_known_systems_at_the_papers_orders():
+    # The known systems' paper_orders set (tests/data/known_systems.json) is at the paper's orders,
+    # bonl::PaperOrders, every other order at its minimum: the oracle of PAPER_ORDERS.
+    for name, model in known_models().items():
+        model_class = type(model)
+        assert model_class.PAPER_ORDERS == model.orders, name
+        assert model_class(*model_class.PAPER_ORDERS).orders == model.orders, name

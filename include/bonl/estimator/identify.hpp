@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "../detail/validate.hpp"
@@ -19,7 +21,6 @@
 #include "recursive_estimator.hpp"
 #include "estimate_recursively.hpp"
 #include "identify_options.hpp"
-#include "wiener_hammerstein_start.hpp"
 
 namespace bonl {
 
@@ -72,6 +73,14 @@ struct ScaledRecords {
   Records<Scalar> views;
 };
 
+/// Does Model give identify() starts of its own (the customisation point below)?
+template <class Model, class = void>
+struct HasIdentifyStarts : std::false_type {};
+template <class Model>
+struct HasIdentifyStarts<Model, std::void_t<decltype(Model::identify_starts(
+                                    std::declval<const Model&>(), std::declval<const Records<typename Model::Scalar>&>()))>>
+    : std::true_type {};
+
 /// identify() without the input range.
 template <class Model>
 Model identify_records(const Model& structure, const Records<typename Model::Scalar>& records,
@@ -119,11 +128,11 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
       failures += std::string(failures.empty() ? "" : "; ") + error.what();
     }
   }
-  // A Wiener-Hammerstein model also starts from the best linear approximation's best splits
-  // (wiener_hammerstein_start.hpp): its recursive estimates alone depend on where they happen to go.
-  if constexpr (is_wiener_hammerstein<Model>::value) {
-    const auto splits = wiener_hammerstein_splits(structure, records);
-    for (std::size_t i = 0; i < splits.size() && i < kWienerHammersteinStarts; ++i) starts.push_back(splits[i].model);
+  // A model whose recursive estimates alone make poor starts adds its own after them, by a member
+  //   static std::vector<Model> identify_starts(const Model& structure, const Records<Scalar>& records)
+  // that gets the records as here: deviations from the operating point, in identify's units.
+  if constexpr (HasIdentifyStarts<Model>::value) {
+    for (Model& start : Model::identify_starts(structure, records)) starts.push_back(std::move(start));
   }
   if (starts.empty()) throw NumericalError("bonl: identification failed from every start: " + failures);
   return refine_output_error(starts, records, options.refine_iterations);

@@ -27,7 +27,6 @@
 #include <complex>
 #include <cstddef>
 #include <optional>
-#include <type_traits>
 #include <vector>
 
 #include "../detail/validate.hpp"
@@ -51,13 +50,7 @@ struct WienerHammersteinSplit {
   double cost = 0.0;  ///< its mean squared residual on the records (free run, each from rest)
 };
 
-/// Is Model a WienerHammerstein model (of any scalar and sizes)?
-template <class Model>
-struct is_wiener_hammerstein : std::false_type {};
-template <typename Scalar, int Na1, int Nb1, int R, int Nh, int Na2, int Nb2>
-struct is_wiener_hammerstein<WienerHammerstein<Scalar, Na1, Nb1, R, Nh, Na2, Nb2>> : std::true_type {};
-
-/// How many of the best splits identify() refines, beside the recursive estimates.
+/// How many of the best splits identify() refines, beside the recursive estimates (wiener_hammerstein_starts).
 inline constexpr std::size_t kWienerHammersteinStarts = 3;
 
 namespace detail {
@@ -295,6 +288,17 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
   std::stable_sort(splits.begin(), splits.end(),
                    [](const auto& first, const auto& second) { return first.cost < second.cost; });
   return splits;
+}
+
+/// identify()'s starts for a WienerHammerstein model beside its recursive estimates (the model's
+/// identify_starts): the best kWienerHammersteinStarts splits, best first. Its recursive estimates
+/// alone depend on where they happen to go.
+template <class Model>
+std::vector<Model> wiener_hammerstein_starts(const Model& structure, const Records<typename Model::Scalar>& records) {
+  const auto splits = wiener_hammerstein_splits(structure, records);
+  std::vector<Model> starts;
+  for (std::size_t i = 0; i < splits.size() && i < kWienerHammersteinStarts; ++i) starts.push_back(splits[i].model);
+  return starts;
 }
 
 }  // namespace bonl

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "../blocks/linear_block.hpp"
 #include "../blocks/output_polynomial.hpp"
@@ -195,6 +196,15 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       case 6: return set_a2(value);
       default: detail::no_such_parameter(kName, i);
     }
+  }
+
+  /// identify()'s starts beside its recursive estimates: the best splits of the records' best linear
+  /// approximation. wiener_hammerstein_starts belongs to the estimator, a layer above the models
+  /// (estimator/wiener_hammerstein_start.hpp, in <bonl/estimator.hpp>): found by argument-dependent
+  /// lookup where identify() calls this.
+  template <class RecordList>
+  static std::vector<WienerHammerstein> identify_starts(const WienerHammerstein& structure, const RecordList& records) {
+    return wiener_hammerstein_starts(structure, records);
   }
 
   /// Linear block i (0: B1/A1 with the delay, 1: B2/A2) and its denominator.

@@ -32,6 +32,7 @@ class ARX:
         a_1..a_na.
     """
     ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk')
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8)
     def __copy__(self) -> ARX:
         ...
     def __deepcopy__(self, memo: dict) -> ARX:
@@ -201,6 +202,7 @@ class Hammerstein:
         p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
     """
     ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r')
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3)
     def __copy__(self) -> Hammerstein:
         ...
     def __deepcopy__(self, memo: dict) -> Hammerstein:
@@ -395,6 +397,7 @@ class HammersteinWiener:
         q_1..q_r1 with q_1 = 1.
     """
     ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'r1')
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 3)
     def __copy__(self) -> HammersteinWiener:
         ...
     def __deepcopy__(self, memo: dict) -> HammersteinWiener:
@@ -600,6 +603,7 @@ class PseudoHammersteinWiener:
         backlash half-width, >= 0.
     """
     ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r')
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3)
     def __copy__(self) -> PseudoHammersteinWiener:
         ...
     def __deepcopy__(self, memo: dict) -> PseudoHammersteinWiener:
@@ -796,6 +800,7 @@ class Wiener:
         q_1..q_r1 with q_1 = 1.
     """
     ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r1')
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3)
     def __copy__(self) -> Wiener:
         ...
     def __deepcopy__(self, memo: dict) -> Wiener:
@@ -990,6 +995,7 @@ class WienerHammerstein:
         a2_1..a2_na2.
     """
     ORDERS: typing.ClassVar[tuple] = ('na1', 'nb1', 'nk', 'r', 'nh', 'na2', 'nb2')
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0, 3, 2)
     def __copy__(self) -> WienerHammerstein:
         ...
     def __deepcopy__(self, memo: dict) -> WienerHammerstein:
@@ -1229,6 +1235,7 @@ class NonlinearFeedback:
         d_1..d_nd with d_1 = 1.
     """
     ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'nh', 'nd', 'nv')
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0, 2, 0)
     def __copy__(self) -> NonlinearFeedback:
         ...
     def __deepcopy__(self, memo: dict) -> NonlinearFeedback:

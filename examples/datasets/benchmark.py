@@ -71,7 +71,7 @@ class Benchmark:
 
     def grid_of(self, family) -> Optional[Dict[str, Sequence[int]]]:
         """The orders ``family`` is selected over here, or None where this data set does not run it."""
-        orders = {**self.orders, **self.family_orders.get(family.__name__, {})}
+        orders = {**family.ORDER_DEFAULTS, **self.orders, **self.family_orders.get(family.__name__, {})}
         if not all(name in orders for name in family.ORDERS):
             return None
         return {name: orders[name] for name in family.ORDERS}
@@ -109,7 +109,7 @@ def _run(benchmark, families):
         chosen = selection.table[0]
         rows.append({
             "model": family.__name__,
-            "orders": dict(zip(family.ORDERS, best.orders)),
+            "orders": bonl.named_orders(best),
             "identify": options,
             "candidates": len(candidates) * len(benchmark.identify),
             "check_rms": math.sqrt(chosen.score),

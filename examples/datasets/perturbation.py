@@ -42,7 +42,7 @@ def structures(tanks, chosen):
     rows = {}
     for row in chosen["rows"]:
         family = getattr(bonl, row["model"])
-        structure = family(*(row["orders"][name] for name in family.ORDERS))
+        structure = family(**row["orders"])
         figures = [test.rms(bonl.identify(structure, records, **row["identify"]))
                    for records in [tanks.estimation] + [perturbed(tanks.estimation, s) for s in SEEDS]]
         rows[row["model"]] = {"orders": row["orders"], "identify": row["identify"], "unperturbed": figures[0],

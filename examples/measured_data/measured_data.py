@@ -99,7 +99,7 @@ def load_cascaded_tanks(data: pathlib.Path = DATA) -> dict:
 
 def structure(model: type, orders: dict):
     """A model of class `model` at `orders` (its parameters are not used by identify)."""
-    return model(*(orders[name] for name in model.ORDERS))
+    return model(**orders)
 
 
 def settings(model: type) -> dict:
@@ -111,7 +111,7 @@ def settings(model: type) -> dict:
 
 def candidates(model: type, grid: dict, offsets: tuple) -> list:
     """Every candidate of class `model`, in grid order: (orders, offset)."""
-    keys = list(model.ORDERS)
+    keys = [key for key in model.ORDERS if key in grid]  # the integrators ni: the class's default
     result = []
     for values in itertools.product(*(grid[key] for key in keys)):
         for offset in offsets:

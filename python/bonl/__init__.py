@@ -24,6 +24,6 @@ experiment = _importlib.import_module(".experiment", __name__)
 metrics = _importlib.import_module(".metrics", __name__)
 plant = _importlib.import_module(".plant", __name__)
 
-from .selection import Selection, grid, select  # noqa: E402  (order and structure selection)
+from .selection import Selection, grid, named_orders, select  # noqa: E402  (order and structure selection)
 
-__all__ = sorted({*_core_names, "__version__", "control", "experiment", "metrics", "plant", "Selection", "grid", "select"})
+__all__ = sorted({*_core_names, "__version__", "control", "experiment", "metrics", "plant", "Selection", "grid", "named_orders", "select"})

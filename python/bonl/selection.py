@@ -139,13 +139,17 @@ def _held_out(samples: int, fraction: float) -> int:
     return max(1, int(round(fraction * samples)))
 
 
-def _orders(structure: Any) -> Dict[str, int]:
-    return dict(zip(type(structure).ORDERS, structure.orders))
+def named_orders(structure: Any) -> Dict[str, int]:
+    """The structure's orders by name, as its model file writes them: an order at its default
+    (``ORDER_DEFAULTS``, the integrators ``ni = 0``) is left out."""
+    defaults = type(structure).ORDER_DEFAULTS
+    return {name: value for name, value in zip(type(structure).ORDERS, structure.orders)
+            if defaults.get(name) != value}
 
 
 def _failed(structure: Any, error: str, seconds: float) -> Candidate:
     """The row of a candidate that has no model: score inf, with why."""
-    return Candidate(type(structure).__name__, _orders(structure), structure.num_params, math.inf, math.inf, None,
+    return Candidate(type(structure).__name__, named_orders(structure), structure.num_params, math.inf, math.inf, None,
                      seconds, error, None)
 
 
@@ -169,7 +173,7 @@ def _fit(structure: Any, records: List[Tuple[np.ndarray, np.ndarray]], criterion
         score = -math.inf if fit_mse == 0 else math.inf
     else:
         score = n * math.log(fit_mse) + (2 * p if criterion == "aic" else p * math.log(n))
-    return Candidate(type(structure).__name__, _orders(structure), p, score, fit_mse, validation,
+    return Candidate(type(structure).__name__, named_orders(structure), p, score, fit_mse, validation,
                      time.perf_counter() - t0, None, model)
 
 

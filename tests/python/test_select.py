@@ -25,8 +25,9 @@ def _candidates():
 def test_grid_is_every_combination_of_the_orders():
     structures = bonl.grid(bonl.HammersteinWiener, na=[1, 2], nb=1, nk=[0, 3], r=[2], r1=[2, 3])
     assert len(structures) == 8
-    assert {s.orders for s in structures} == {(na, 1, nk, 2, r1) for na in (1, 2) for nk in (0, 3) for r1 in (2, 3)}
-    assert bonl.HammersteinWiener.ORDERS == ("na", "nb", "nk", "r", "r1")
+    assert {s.orders for s in structures} == {(na, 1, nk, 2, r1, 0) for na in (1, 2) for nk in (0, 3) for r1 in (2, 3)}
+    assert bonl.HammersteinWiener.ORDERS == ("na", "nb", "nk", "r", "r1", "ni")
+    assert {s.ni for s in bonl.grid(bonl.ARX, na=1, nb=0, nk=0, ni=[0, 1])} == {0, 1}
 
 
 @pytest.mark.parametrize("criterion", ["validation", "aic", "bic"])
@@ -112,7 +113,7 @@ def test_a_candidate_the_executor_fails_is_reported_and_the_rest_are_kept():
     with _LosesTheSecondCandidate() as executor:
         given = bonl.select(_candidates(), u, y, executor=executor)
     lost = _candidates()[1]
-    assert given.table[-1].orders == dict(zip(bonl.Hammerstein.ORDERS, lost.orders))
+    assert given.table[-1].orders == bonl.named_orders(lost)
     assert given.table[-1].error == "executor: RuntimeError: worker lost"
     assert given.table[-1].score == math.inf and given.table[-1].model is None
     kept = [(r.name, r.orders, r.score) for r in local.table if r.orders != given.table[-1].orders]
@@ -142,7 +143,7 @@ def test_progress_bar_on_request(capsys):
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u), "y must be a 1-D array of real numbers, got None"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], [(u, y), u]), r"records\[1\] must be a pair \(u, y\)"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, method="best"), "method must be"),
-    (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1]), "ARX takes the orders na, nb, nk; missing: nk"),
+    (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1]), "ARX takes the orders na, nb, nk, ni; missing: nk"),
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1], nk=[0], r=[2]), "unknown: r"),
     (lambda u, y: bonl.grid(int, na=[1]), "model_class must be one of bonl.MODELS"),
 ], ids=["empty", "not a model", "criterion", "fraction", "negative window", "fractional window", "window with aic",

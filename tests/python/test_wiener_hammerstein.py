@@ -66,7 +66,7 @@ def test_a_model_with_hinges_simulates_the_blocks_written_out():
 def test_the_knots_go_through_the_model_file_and_bad_ones_are_refused():
     model = _saturating(r=2)
     back = bonl.load_model(model.to_json())
-    assert back.orders == model.orders and back.ORDERS == ("na1", "nb1", "nk", "r", "nh", "na2", "nb2")
+    assert back.orders == model.orders and back.ORDERS == ("na1", "nb1", "nk", "r", "nh", "na2", "nb2", "ni")
     np.testing.assert_array_equal(back.knots, [-0.3, 0.4])
     np.testing.assert_array_equal(back.theta, model.theta)
     with pytest.raises(ValueError, match="knots must be strictly increasing, got 0.4 before -0.3 at index 1"):

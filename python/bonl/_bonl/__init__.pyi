@@ -26,20 +26,23 @@ class ARX:
         B has nb + 1 coefficients b_0..b_nb.
     nk : int
         pure delay in samples.
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
     b : array_like, optional
         b_0..b_nb (b_0 is free for ARX).
     a : array_like, optional
         a_1..a_na.
     """
-    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk')
-    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8)
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 0)
     def __copy__(self) -> ARX:
         ...
     def __deepcopy__(self, memo: dict) -> ARX:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -138,6 +141,11 @@ class ARX:
         int: B has nb + 1 coefficients b_0..b_nb.
         """
     @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
+        """
+    @property
     def nk(self) -> int:
         """
         int: pure delay in samples.
@@ -192,6 +200,8 @@ class Hammerstein:
         pure delay in samples.
     r : int
         degree of the input polynomials (r >= 1).
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
     b : array_like, optional
         b_0..b_nb with b_0 = 1.
     a : array_like, optional
@@ -201,15 +211,16 @@ class Hammerstein:
     p : array_like, optional
         p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
     """
-    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r')
-    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3)
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0)
     def __copy__(self) -> Hammerstein:
         ...
     def __deepcopy__(self, memo: dict) -> Hammerstein:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -316,6 +327,11 @@ class Hammerstein:
         int: B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
         """
     @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
+        """
+    @property
     def nk(self) -> int:
         """
         int: pure delay in samples.
@@ -385,6 +401,8 @@ class HammersteinWiener:
         degree of the input polynomials (r >= 1).
     r1 : int
         degree of the output polynomial (2..32).
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
     b : array_like, optional
         b_0..b_nb with b_0 = 1.
     a : array_like, optional
@@ -396,15 +414,16 @@ class HammersteinWiener:
     q : array_like, optional
         q_1..q_r1 with q_1 = 1.
     """
-    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'r1')
-    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 3)
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'r1', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 3, 0)
     def __copy__(self) -> HammersteinWiener:
         ...
     def __deepcopy__(self, memo: dict) -> HammersteinWiener:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None, q: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None, q: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -511,6 +530,11 @@ class HammersteinWiener:
         int: B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
         """
     @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
+        """
+    @property
     def nk(self) -> int:
         """
         int: pure delay in samples.
@@ -591,6 +615,8 @@ class PseudoHammersteinWiener:
         pure delay in samples.
     r : int
         degree of the input polynomials (r >= 1).
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
     b : array_like, optional
         b_0..b_nb with b_0 = 1.
     a : array_like, optional
@@ -602,15 +628,16 @@ class PseudoHammersteinWiener:
     c : float, optional
         backlash half-width, >= 0.
     """
-    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r')
-    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3)
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0)
     def __copy__(self) -> PseudoHammersteinWiener:
         ...
     def __deepcopy__(self, memo: dict) -> PseudoHammersteinWiener:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None, c: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None, c: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -725,6 +752,11 @@ class PseudoHammersteinWiener:
         int: B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
         """
     @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
+        """
+    @property
     def nk(self) -> int:
         """
         int: pure delay in samples.
@@ -792,6 +824,8 @@ class Wiener:
         pure delay in samples.
     r1 : int
         degree of the output polynomial (2..32).
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
     b : array_like, optional
         b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain).
     a : array_like, optional
@@ -799,15 +833,16 @@ class Wiener:
     q : array_like, optional
         q_1..q_r1 with q_1 = 1.
     """
-    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r1')
-    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3)
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r1', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0)
     def __copy__(self) -> Wiener:
         ...
     def __deepcopy__(self, memo: dict) -> Wiener:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, q: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, q: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -906,6 +941,11 @@ class Wiener:
         int: B has nb + 1 coefficients b_0..b_nb.
         """
     @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
+        """
+    @property
     def nk(self) -> int:
         """
         int: pure delay in samples.
@@ -979,6 +1019,8 @@ class WienerHammerstein:
         poles of the second linear block (na2 >= 1).
     nb2 : int
         B2 has nb2 + 1 coefficients b2_0..b2_nb2, b2_0 = 1.
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
     b1 : array_like, optional
         b1_0..b1_nb1 (free: f_1 = b2_0 = 1 fix the other gains).
     a1 : array_like, optional
@@ -994,15 +1036,16 @@ class WienerHammerstein:
     a2 : array_like, optional
         a2_1..a2_na2.
     """
-    ORDERS: typing.ClassVar[tuple] = ('na1', 'nb1', 'nk', 'r', 'nh', 'na2', 'nb2')
-    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0, 3, 2)
+    ORDERS: typing.ClassVar[tuple] = ('na1', 'nb1', 'nk', 'r', 'nh', 'na2', 'nb2', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0, 3, 2, 0)
     def __copy__(self) -> WienerHammerstein:
         ...
     def __deepcopy__(self, memo: dict) -> WienerHammerstein:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na1: typing.SupportsInt | typing.SupportsIndex, nb1: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, na2: typing.SupportsInt | typing.SupportsIndex, nb2: typing.SupportsInt | typing.SupportsIndex, *, b1: typing.Any = None, a1: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, b2: typing.Any = None, a2: typing.Any = None) -> None:
+    def __init__(self, na1: typing.SupportsInt | typing.SupportsIndex, nb1: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, na2: typing.SupportsInt | typing.SupportsIndex, nb2: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b1: typing.Any = None, a1: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, b2: typing.Any = None, a2: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -1156,6 +1199,11 @@ class WienerHammerstein:
         int: hinges of the static nonlinearity, knots where its slope changes (0..32; 0: none).
         """
     @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
+        """
+    @property
     def nk(self) -> int:
         """
         int: pure delay in samples (in the first block).
@@ -1221,6 +1269,8 @@ class NonlinearFeedback:
         taps of the feedback block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32).
     nv : int
         what the nonlinearity sees: 0 the output y, 1 its first difference (a velocity).
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
     b : array_like, optional
         b_0..b_nb.
     a : array_like, optional
@@ -1234,15 +1284,16 @@ class NonlinearFeedback:
     d : array_like, optional
         d_1..d_nd with d_1 = 1.
     """
-    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'nh', 'nd', 'nv')
-    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0, 2, 0)
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'nh', 'nd', 'nv', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0, 2, 0, 0)
     def __copy__(self) -> NonlinearFeedback:
         ...
     def __deepcopy__(self, memo: dict) -> NonlinearFeedback:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, nd: typing.SupportsInt | typing.SupportsIndex, nv: typing.SupportsInt | typing.SupportsIndex, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, d: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, nd: typing.SupportsInt | typing.SupportsIndex, nv: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, d: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -1381,6 +1432,11 @@ class NonlinearFeedback:
     def nh(self) -> int:
         """
         int: hinges of the feedback nonlinearity, knots where its slope changes (0..32; 0: none).
+        """
+    @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
         """
     @property
     def nk(self) -> int:

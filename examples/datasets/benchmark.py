@@ -68,6 +68,11 @@ class Benchmark:
     #: model's polynomial degree and its two blocks' orders); a family whose orders neither grid names
     #: is not run on this data set
     family_orders: Dict[str, Dict[str, Sequence[int]]] = dataclasses.field(default_factory=dict)
+    #: a family's own identify options, by its name, where the shared ones do not fit it
+    family_identify: Dict[str, List[Dict[str, object]]] = dataclasses.field(default_factory=dict)
+    #: a family's structures set up before selection, by its name (knots, an operating point that is
+    #: physics, not data): called on each candidate, from the estimation data only
+    prepare: Dict[str, Callable[[object], None]] = dataclasses.field(default_factory=dict)
 
     def grid_of(self, family) -> Optional[Dict[str, Sequence[int]]]:
         """The orders ``family`` is selected over here, or None where this data set does not run it."""
@@ -100,9 +105,12 @@ def _run(benchmark, families):
         if orders is None:
             continue
         candidates = bonl.grid(family, **orders)
+        for candidate in candidates:
+            benchmark.prepare.get(family.__name__, lambda structure: None)(candidate)
+        identify = benchmark.family_identify.get(family.__name__, benchmark.identify)
         start = time.perf_counter()
         selections = [(bonl.select(candidates, benchmark.estimation, window=benchmark.window, **options), options)
-                      for options in benchmark.identify]
+                      for options in identify]
         selection, options = min(selections, key=lambda pair: pair[0].table[0].score)
         seconds = time.perf_counter() - start
         best = selection.best
@@ -111,7 +119,7 @@ def _run(benchmark, families):
             "model": family.__name__,
             "orders": bonl.named_orders(best),
             "identify": options,
-            "candidates": len(candidates) * len(benchmark.identify),
+            "candidates": len(candidates) * len(identify),
             "check_rms": math.sqrt(chosen.score),
             "test_rms": {test.name: test.rms(best) for test in benchmark.tests},
             "test_rms_from_rest": {test.name: test.rms(best, from_rest=True) for test in benchmark.tests if test.window},
@@ -129,6 +137,7 @@ def _run(benchmark, families):
         **({"family_orders": {family: {k: list(v) for k, v in grid.items()}
                               for family, grid in benchmark.family_orders.items()}}
            if benchmark.family_orders else {}),
+        **({"family_identify": benchmark.family_identify} if benchmark.family_identify else {}),
         "identify": benchmark.identify,
         "tests": [{"name": t.name, "samples": int(t.u.size), "window": t.window, "skip": t.skip}
                   for t in benchmark.tests],

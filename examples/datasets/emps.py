@@ -1,7 +1,9 @@
 """EMPS, electro-mechanical positioning system (Janot et al. 2019; data/emps/SOURCE.md): u = vir,
 y = qm; estimate on DATA_EMPS, simulate DATA_EMPS_PULSES after the benchmark's 20-sample
 state-initialisation window and score its RMS error [m]. The data were taken in closed loop and the
-plant holds an integrator; bonl's models are open-loop and keep their poles inside the unit circle."""
+plant holds an integrator. The block-model families run without one (their estimated poles inside
+the unit circle); the nonlinear-feedback family is the drive's physics: a position integrating a
+velocity (ni = 1) that a friction curve of the velocity acts on (nv = 1), at rest for u = 0."""
 
 import numpy as np
 import scipy.io
@@ -20,6 +22,20 @@ COMPARISONS = (Comparison(test="pulses record", protocol="nonlinear-benchmarks 1
                           best=("dynoNet, Forgione and Piga 2021", 2.64e-3)),)
 
 
+def _friction_drive(y):
+    """The nonlinear-feedback structures' setup from the estimation record: knots of the friction
+    curve at +-0.25 (and +-1) standard deviations of the velocity (the position's first difference,
+    where Coulomb friction changes slope), and the operating point (0, the first position): an
+    integrating drive rests for zero force wherever it stands."""
+    spread = float(np.std(np.diff(y)))
+
+    def prepare(structure):
+        inner = [-0.25 * spread, 0.25 * spread]
+        structure.knots = np.array(inner if structure.nh == 2 else [-spread] + inner + [spread])
+        structure.operating_point = (0.0, float(y[0]))
+    return prepare
+
+
 def make():
     """EMPS: every model family selected on DATA_EMPS, tested on DATA_EMPS_PULSES."""
     u, y = _record("DATA_EMPS.mat")
@@ -30,6 +46,10 @@ def make():
         tests=[Test("pulses record", u_test, y_test, window=20)],
         orders=dict(na=[1, 2, 3], nb=[1, 2], nk=[0, 1], r=[1, 3], r1=[3]),
         identify=[dict(operating_point="initial"), dict(operating_point="mean")],
+        family_orders={"NonlinearFeedback": dict(na=[1, 2, 3], nb=[2], nk=[0, 1], r=[1], nh=[2, 4], nd=[1, 2],
+                                                 nv=[1], ni=[1])},
+        family_identify={"NonlinearFeedback": [{}]},  # the structure's operating point (_friction_drive)
+        prepare={"NonlinearFeedback": _friction_drive(y)},
         published=[("dynoNet (Forgione and Piga 2021), fit 96.8 %", "2.64e-3")])
 
 

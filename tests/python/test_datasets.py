@@ -197,3 +197,19 @@ def test_the_silverbox_nonlinear_feedback_model_file_gives_its_figures_on_every_
         assert test.rms(model) == pytest.approx(row["test_rms"][test.name], rel=1e-9), test.name
         assert test.rms(model, from_rest=True) == pytest.approx(row["test_rms_from_rest"][test.name], rel=1e-9)
         assert row["test_rms"][test.name] < 0.2 * linear["test_rms"][test.name], test.name
+
+
+def test_the_emps_friction_drive_model_file_gives_its_figures_and_beats_the_linear_model():
+    """docs/results/datasets/emps_model.json (scripts/datasets.sh): the nonlinear-feedback model with an
+    integrator (a friction curve of the velocity, the position integrating it) selected on the EMPS's
+    estimation data, loaded from its own file, scores the results file's figures on the pulses record,
+    after the 20-sample window and from rest, below the linear model and every other family."""
+    model = bonl.load_model((RESULTS / "emps_model.json").read_text())
+    assert isinstance(model, bonl.NonlinearFeedback) and model.ni == 1 and model.nv == 1
+    rows = {row["model"]: row for row in _results("emps")["rows"]}
+    row = rows["NonlinearFeedback"]
+    (test,) = _script("emps").make().tests
+    assert test.rms(model) == pytest.approx(row["test_rms"][test.name], rel=1e-9)
+    assert test.rms(model, from_rest=True) == pytest.approx(row["test_rms_from_rest"][test.name], rel=1e-9)
+    assert all(row["test_rms"][test.name] < other["test_rms"][test.name] for name, other in rows.items()
+               if name != "NonlinearFeedback")

@@ -18,3 +18,12 @@ step "run bonl_demo"
   --markdown docs/results/plant_experiment_summary.md > /dev/null
 bonl_splice_summary plant_experiment_summary docs/results/plant_experiment_summary.md README.md
 step "wrote docs/results/plant_experiment.json and plant_experiment_summary.md, updated README.md"
+
+# The same experiment with the joint angle as the output, without and with an integrator (docs/plant.md).
+# Needs `pip install .` (scripts/test.sh makes build/venv).
+python=${PYTHON:-build/venv/bin/python}
+step "examples/joint_angle/joint_angle.py"
+"$python" examples/joint_angle/joint_angle.py --json docs/results/joint_angle.json \
+  --markdown docs/results/joint_angle_summary.md > /dev/null
+bonl_splice_summary joint_angle_summary docs/results/joint_angle_summary.md docs/plant.md
+step "wrote docs/results/joint_angle.json and joint_angle_summary.md, updated docs/plant.md"

@@ -21,6 +21,7 @@ QUOTES = [
     ("tracking_summary", ROOT / "docs" / "results" / "tracking_summary.md",
      [ROOT / "README.md", ROOT / "docs" / "control.md"]),
     ("benchmarks_summary", ROOT / "docs" / "results" / "benchmarks_summary.md", [ROOT / "docs" / "benchmarks.md"]),
+    ("joint_angle_summary", ROOT / "docs" / "results" / "joint_angle_summary.md", [ROOT / "docs" / "plant.md"]),
     ("bench_summary", ROOT / "docs" / "results" / "bench_summary.md",
      [ROOT / "README.md", ROOT / "docs" / "performance.md"]),
 ]
@@ -93,3 +94,20 @@ def test_the_benchmark_summary_is_the_committed_full_run():
     assert report.summary(flat) == (ROOT / "docs" / "results" / "bench_summary.md").read_text()
     results_md = (ROOT / "bench" / "RESULTS.md").read_text()
     assert "(commit %s)" % flat["machine"]["git"] in results_md, "bench/RESULTS.md and RESULTS.json are of different runs"
+
+
+def test_the_joint_angle_models_give_their_committed_figures():
+    """docs/results/joint_angle.json (examples/joint_angle/joint_angle.py): the paper's four models on
+    the simulated joint's angle, without and with an integrator, recomputed to 1e-9 relative; the table
+    docs/plant.md quotes is the one the results give."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("joint_angle", ROOT / "examples" / "joint_angle" / "joint_angle.py")
+    joint_angle = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(joint_angle)
+    committed = json.loads((ROOT / "docs" / "results" / "joint_angle.json").read_text())
+    results = joint_angle.run()
+    assert [(r["model"], r["ni"]) for r in results["rows"]] == [(r["model"], r["ni"]) for r in committed["rows"]]
+    for new, old in zip(results["rows"], committed["rows"]):
+        assert new["validation_rms"] == pytest.approx(old["validation_rms"], rel=1e-9), (new["model"], new["ni"])
+        assert new["json"]["orders"].get("ni", 0) == new["ni"]
+    assert joint_angle.table(committed) == (ROOT / "docs" / "results" / "joint_angle_summary.md").read_text()

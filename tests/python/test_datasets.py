@@ -213,3 +213,16 @@ def test_the_emps_friction_drive_model_file_gives_its_figures_and_beats_the_line
     assert test.rms(model, from_rest=True) == pytest.approx(row["test_rms_from_rest"][test.name], rel=1e-9)
     assert all(row["test_rms"][test.name] < other["test_rms"][test.name] for name, other in rows.items()
                if name != "NonlinearFeedback")
+
+
+def test_the_bouc_wen_nonlinear_feedback_model_file_gives_its_figures_on_every_test():
+    """docs/results/datasets/bouc_wen_model.json (scripts/datasets.sh): the nonlinear-feedback model
+    selected on the Bouc-Wen training data, loaded from its own file, scores the results file's figures
+    on each test record and is below the linear model on each."""
+    model = bonl.load_model((RESULTS / "bouc_wen_model.json").read_text())
+    assert isinstance(model, bonl.NonlinearFeedback)
+    rows = {row["model"]: row for row in _results("bouc_wen")["rows"]}
+    row, linear = rows["NonlinearFeedback"], rows["ARX"]
+    for test in _script("bouc_wen").make().tests:
+        assert test.rms(model) == pytest.approx(row["test_rms"][test.name], rel=1e-9), test.name
+        assert row["test_rms"][test.name] < linear["test_rms"][test.name], test.name

@@ -36,6 +36,17 @@ Scalar carried(Eigen::Index ni, const Lags& lags) noexcept {
   return Scalar(2) * lags[0] - lags[1];
 }
 
+/// out += sign * d carried(k) / d theta from the past sensitivities, columns[0] = dx(k-1) / d theta,
+/// columns[1] = dx(k-2) / d theta: dx(k-1), or 2 dx(k-1) - dx(k-2). For ni > 0.
+template <typename Scalar, class Columns, class Out>
+void add_carried_sensitivity(Eigen::Index ni, const Columns& columns, Scalar sign, Out&& out) noexcept {
+  if (ni == 1) {
+    out += sign * columns.col(0);
+  } else {
+    out += (Scalar(2) * sign) * columns.col(0) - sign * columns.col(1);
+  }
+}
+
 /// The whole denominator a_1..a_{na+ni} of A(q^-1) (1 - q^-1)^ni from the estimated a_1..a_na.
 template <typename A>
 Eigen::Matrix<typename A::Scalar, Eigen::Dynamic, 1> with_integrators(const Eigen::MatrixBase<A>& a, Eigen::Index ni) {

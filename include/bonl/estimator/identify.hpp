@@ -42,11 +42,16 @@ DataScale data_scale(const Records<Scalar>& records, double u0, double y0, Eigen
   double u_squares = 0.0, y_squares = 0.0, samples = 0.0;
   for (const auto& record : records) {
     u_squares += static_cast<double>((record.u.array() - static_cast<Scalar>(u0)).matrix().squaredNorm());
-    Eigen::Matrix<Scalar, Eigen::Dynamic, 1> y = (record.y.array() - static_cast<Scalar>(y0)).matrix();
-    for (Eigen::Index n = 0; n < ni && y.size() > 1; ++n) y = (y.tail(y.size() - 1) - y.head(y.size() - 1)).eval();
-    double squares = static_cast<double>(y.squaredNorm());
-    if (y.size() != record.y.size()) squares *= static_cast<double>(record.y.size()) / static_cast<double>(y.size());
-    y_squares += squares;
+    const auto deviations = (record.y.array() - static_cast<Scalar>(y0)).matrix();
+    if (ni == 0) {
+      y_squares += static_cast<double>(deviations.squaredNorm());
+    } else {  // the ni-th difference, its mean square counted over the record's length
+      Eigen::Matrix<Scalar, Eigen::Dynamic, 1> y = deviations;
+      for (Eigen::Index n = 0; n < ni && y.size() > 1; ++n) y = (y.tail(y.size() - 1) - y.head(y.size() - 1)).eval();
+      double squares = static_cast<double>(y.squaredNorm());
+      if (y.size() != record.y.size()) squares *= static_cast<double>(record.y.size()) / static_cast<double>(y.size());
+      y_squares += squares;
+    }
     samples += static_cast<double>(record.u.size());
   }
   const auto nearest_power_of_two = [samples](double squares) {

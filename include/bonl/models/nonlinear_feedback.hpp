@@ -367,7 +367,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       for (Eigen::Index j = 0; j < m_na; ++j) m_psi -= theta[m_nb + 1 + j] * m_dz.col(j);
       if (m_ni > 0) {
         y += detail::carried<Scalar>(m_ni, m_y);
-        add_carried_sensitivity(m_psi, Scalar(1));
+        detail::add_carried_sensitivity(m_ni, m_dy, Scalar(1), m_psi);
       }
       for (Eigen::Index j = 0; j < m_nd; ++j) {
         const Scalar dj = j == 0 ? Scalar(1) : theta[m_first_d + j - 1];
@@ -388,7 +388,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       m_dz.col(0) = m_psi;
       if (m_ni > 0) {
         m_z[0] -= detail::carried<Scalar>(m_ni, m_y);
-        add_carried_sensitivity(m_dz.col(0), Scalar(-1));
+        detail::add_carried_sensitivity(m_ni, m_dy, Scalar(-1), m_dz.col(0));
       }
       for (Eigen::Index j = m_y.size() - 1; j > 0; --j) {
         m_y[j] = m_y[j - 1];
@@ -409,16 +409,6 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
 
    private:
     using SensitivityLags = Eigen::Matrix<Scalar, kNumParams, Eigen::Dynamic>;
-
-    /// out += sign * d carried(k) / d theta = sign * (dy(k-1), or 2 dy(k-1) - dy(k-2)).
-    template <typename Out>
-    void add_carried_sensitivity(Out&& out, Scalar sign) const noexcept {
-      if (m_ni == 1) {
-        out += sign * m_dy.col(0);
-      } else {
-        out += (Scalar(2) * sign) * m_dy.col(0) - sign * m_dy.col(1);
-      }
-    }
 
     Feedback m_feedback;
     detail::History<Scalar> m_u;

@@ -56,7 +56,7 @@ class SimulatedLags {
     for (Eigen::Index j = 0; j < m_x.size(); ++j) dx -= a[j] * m_dx.col(j);
     if (m_ni > 0) {
       part += carried<Scalar>(m_ni, m_integrated_x);
-      add_carried_sensitivity(dx, Scalar(1));
+      add_carried_sensitivity(m_ni, m_integrated, Scalar(1), dx);
     }
     return part;
   }
@@ -73,7 +73,7 @@ class SimulatedLags {
       m_dx.col(0) = dx;
       if (m_ni > 0) {  // z(k) = x(k) - carried(k), and its sensitivity
         m_x[0] -= carried<Scalar>(m_ni, m_integrated_x);
-        add_carried_sensitivity(m_dx.col(0), Scalar(-1));
+        add_carried_sensitivity(m_ni, m_integrated, Scalar(-1), m_dx.col(0));
       }
     }
     if (m_ni > 0) {
@@ -93,16 +93,6 @@ class SimulatedLags {
 
  private:
   using IntegratedSensitivities = Eigen::Matrix<Scalar, N, Eigen::Dynamic, Eigen::ColMajor, N, kMaxIntegrators>;
-
-  /// out += sign * d carried(k) / d theta = sign * (dx(k-1), or 2 dx(k-1) - dx(k-2)).
-  template <typename Out>
-  void add_carried_sensitivity(Out&& out, Scalar sign) const noexcept {
-    if (m_ni == 1) {
-      out += sign * m_integrated.col(0);
-    } else {
-      out += (Scalar(2) * sign) * m_integrated.col(0) - sign * m_integrated.col(1);
-    }
-  }
 
   Eigen::Matrix<Scalar, Na, 1> m_x;   // z(k-1-j): x(k-1-j) where there are no integrators
   Eigen::Matrix<Scalar, N, Na> m_dx;  // column j: d z(k-1-j) / d theta

@@ -158,22 +158,9 @@ TEMPLATE_LIST_TEST_CASE("the output-error sensitivities with integrators are the
       terms.accept();
     }
     CHECK(relative_difference(y, model.simulate(u)) <= 1e-10);
-    Eigen::MatrixXd numeric(u.size(), theta.size());
-    for (Eigen::Index i = 0; i < theta.size(); ++i) {
-      const double h = 1e-6 * std::max(1.0, std::abs(theta[i]));
-      Model up = model, down = model;
-      typename Model::Params t = theta;
-      t[i] += h;
-      up.set_theta(t);
-      t[i] -= 2 * h;
-      down.set_theta(t);
-      numeric.col(i) = (up.simulate(u) - down.simulate(u)) / (2 * h);
-    }
     // A backlash output is piecewise smooth: a sample whose regime the step flips differs (as in the
     // suite without integrators, recursive_output_error.test.cpp), so samples are counted.
-    const double scale = numeric.cwiseAbs().maxCoeff();
-    Eigen::Index matching = 0;
-    for (Eigen::Index k = 0; k < u.size(); ++k) matching += (psi.row(k) - numeric.row(k)).cwiseAbs().maxCoeff() <= 1e-6 * scale;
+    const Eigen::Index matching = matching_samples(psi, simulation_differences(model, u));
     INFO(matching << " of " << u.size() << " samples match");
     CHECK(matching >= u.size() * 98 / 100);
   }

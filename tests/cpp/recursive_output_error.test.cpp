@@ -80,25 +80,9 @@ void check_sensitivities() {
   const Eigen::VectorXd simulated = model.simulate(u);
   CHECK((y - simulated).cwiseAbs().maxCoeff() <= 1e-12 * simulated.cwiseAbs().maxCoeff());
 
-  // Central differences of simulate(), one parameter at a time.
-  Eigen::MatrixXd differences(u.size(), model.num_params());
-  for (Eigen::Index i = 0; i < model.num_params(); ++i) {
-    const double step = 1e-6 * std::max(1.0, std::abs(model.theta()[i]));
-    Model plus = model, minus = model;
-    typename Model::Params theta = model.theta();
-    theta[i] += step;
-    plus.set_theta(theta);
-    theta[i] -= 2 * step;
-    minus.set_theta(theta);
-    differences.col(i) = (plus.simulate(u) - minus.simulate(u)) / (2 * step);
-  }
-  // A backlash output is piecewise smooth: a sample whose regime the +-step flips (and the gap
-  // samples holding its value) differ, so P-H-W compares per sample and allows a few such samples.
-  const double scale = differences.cwiseAbs().maxCoeff();
-  Eigen::Index matching = 0;
-  for (Eigen::Index k = 0; k < u.size(); ++k) {
-    if ((jacobian.row(k) - differences.row(k)).cwiseAbs().maxCoeff() <= 1e-6 * scale) ++matching;
-  }
+  // Central differences of simulate(). A backlash output is piecewise smooth: a sample whose regime
+  // the +-step flips (and the gap samples holding its value) differ, so P-H-W allows a few such samples.
+  const Eigen::Index matching = matching_samples(jacobian, simulation_differences(model, u));
   INFO(Model::kName << ": " << matching << " of " << u.size() << " samples match the finite differences");
   if constexpr (is_phw<Model>) {
     CHECK(matching >= u.size() * 99 / 100);

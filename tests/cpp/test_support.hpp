@@ -43,4 +43,33 @@ inline double standard_deviation(const Eigen::VectorXd& y) {
   return std::sqrt((y.array() - y.mean()).square().mean());
 }
 
+/// Central differences of model.simulate(u), one parameter at a time (step 1e-6 max(1, |theta_i|)):
+/// row k is d y(k) / d theta, the oracle of the output-error sensitivities.
+template <class Model>
+Eigen::MatrixXd simulation_differences(const Model& model, const Eigen::VectorXd& u) {
+  Eigen::MatrixXd differences(u.size(), model.num_params());
+  for (Eigen::Index i = 0; i < model.num_params(); ++i) {
+    const double step = 1e-6 * std::max(1.0, std::abs(model.theta()[i]));
+    Model plus = model, minus = model;
+    typename Model::Params theta = model.theta();
+    theta[i] += step;
+    plus.set_theta(theta);
+    theta[i] -= 2 * step;
+    minus.set_theta(theta);
+    differences.col(i) = (plus.simulate(u) - minus.simulate(u)) / (2 * step);
+  }
+  return differences;
+}
+
+/// How many samples (rows) of `jacobian` equal `differences` to 1e-6 of its largest entry. A backlash
+/// output is piecewise smooth: a sample whose regime the +-step flips differs, so the tests count.
+inline Eigen::Index matching_samples(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& differences) {
+  const double scale = differences.cwiseAbs().maxCoeff();
+  Eigen::Index matching = 0;
+  for (Eigen::Index k = 0; k < jacobian.rows(); ++k) {
+    if ((jacobian.row(k) - differences.row(k)).cwiseAbs().maxCoeff() <= 1e-6 * scale) ++matching;
+  }
+  return matching;
+}
+
 }  // namespace bonl_test

@@ -157,6 +157,32 @@ TEST_CASE("identify recovers the nonlinear-feedback known systems, noise-free an
   }
 }
 
+TEST_CASE("identify's open-loop start is the records' best linear approximation with the feedback off",
+          "[nonlinear_feedback][identify]") {
+  for (const Model& truth : {known_system<Model>(), friction_drive_position()}) {
+    INFO("ni = " << truth.ni());
+    const Eigen::VectorXd u = identification_input();
+    const Eigen::VectorXd y = truth.simulate(u);
+    const bonl::Records<double> records{{u, y}};
+    const auto starts = bonl::nonlinear_feedback_starts(structure_of(truth), records);
+    REQUIRE(starts.size() == 1);
+    const Model& open = starts.front();
+    // The oracle: an output-error ARX identified with the same orders, delay and integrators.
+    const bonl::ARXd linear = bonl::refine_output_error(
+        bonl::identify(bonl::ARXd(truth.na(), truth.nb(), truth.nk(), truth.ni()), u, y,
+                       [] { bonl::IdentifyOptions o; o.method = bonl::Method::EquationError; o.refine_iterations = 0; return o; }()),
+        u, y);
+    CHECK(open.b().isApprox(linear.b(), 1e-12));
+    CHECK(open.a().isApprox(linear.a(), 1e-12));
+    CHECK(open.f().isZero(0.0));
+    CHECK(open.g().isZero(0.0));
+    CHECK(open.d() == (Eigen::VectorXd::Unit(truth.nd(), 0)));
+    CHECK(open.knots() == truth.knots());
+    // With the loop open it simulates as the linear model does.
+    CHECK((open.simulate(u) - linear.simulate(u)).cwiseAbs().maxCoeff() <= 1e-12 * y.cwiseAbs().maxCoeff());
+  }
+}
+
 TEST_CASE("the online output_error estimator converges on the nonlinear-feedback known systems",
           "[nonlinear_feedback][output_error]") {
   for (const Model& truth : {known_system<Model>(), friction_feedback(), friction_drive_position()}) {

@@ -35,6 +35,7 @@
 #include "../models/detail/hinge_terms.hpp"
 #include "../models/poles.hpp"
 #include "../models/wiener_hammerstein.hpp"
+#include "best_linear_approximation.hpp"
 #include "estimate_recursively.hpp"
 #include "identify_options.hpp"
 #include "method.hpp"
@@ -157,18 +158,6 @@ std::optional<Vector> quantile_knots(const Vector& x, Eigen::Index nh) {
   }
   if (first_not_increasing_or_zero(knots) >= 0) return std::nullopt;  // too few distinct values
   return knots;
-}
-
-/// The BLA: a linear output-error model (ARX structure: least squares by the recursive estimator,
-/// then refined on the simulation error) of the records. Throws NumericalError where the least
-/// squares broke down.
-template <typename Scalar>
-ARX<Scalar> best_linear_approximation(const Records<Scalar>& records, Eigen::Index na, Eigen::Index nb,
-                                      Eigen::Index nk, int iterations, Eigen::Index ni = 0) {
-  IdentifyOptions least_squares;
-  least_squares.method = Method::EquationError;
-  const ARX<Scalar> arx = estimate_recursively(ARX<Scalar>(na, nb, nk, ni), records, least_squares);
-  return refine_output_error(arx, records, iterations);
 }
 
 }  // namespace detail

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "../blocks/linear_block.hpp"
 #include "../detail/history.hpp"
@@ -121,6 +122,15 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   Eigen::Index ni() const noexcept { return m_ni; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   std::array<Eigen::Index, 8> orders() const noexcept { return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_ni}; }
+
+  /// identify()'s start beside its recursive estimates: the loop open, the records' best linear
+  /// approximation as the linear block. nonlinear_feedback_starts belongs to the estimator, a layer
+  /// above the models (estimator/nonlinear_feedback_start.hpp, in <bonl/estimator.hpp>): found by
+  /// argument-dependent lookup where identify() calls this.
+  template <class RecordList>
+  static std::vector<NonlinearFeedback> identify_starts(const NonlinearFeedback& structure, const RecordList& records) {
+    return nonlinear_feedback_starts(structure, records);
+  }
 
   const Params& theta() const noexcept { return m_theta; }
   template <typename T>

@@ -47,7 +47,7 @@ def make():
         orders=dict(na=[1, 2, 3], nb=[1, 2], nk=[0, 1], r=[1, 3], r1=[3]),
         identify=[dict(operating_point="initial"), dict(operating_point="mean")],
         # The first grid (nb 2, r 1, nd 1-2) chose the edge of na, nh and nd on the held-out estimation
-        # data; this one adds nb 1-3, r 3 and nd 3 (its choice: check 1.49 mm against 1.63 mm).
+        # data; this one adds nb 1-3, r 3 and nd 3.
         family_orders={"NonlinearFeedback": dict(na=[1, 2, 3], nb=[1, 2, 3], nk=[0, 1], r=[1, 3], nh=[2, 4],
                                                  nd=[1, 2, 3], nv=[1], ni=[1])},
         family_identify={"NonlinearFeedback": [{}]},  # the structure's operating point (_friction_drive)

@@ -136,11 +136,6 @@ TEST_CASE("identify recovers the nonlinear-feedback known systems, noise-free an
     const Model model = bonl::identify(structure_of(truth), u, y);
     CHECK(bonl::metrics::nrmse(y_fresh, model.simulate(fresh)) <= 1e-6);
 
-    // Not with the integrator: 5% (and even 1%) of the position's spread is noise of the velocity's own
-    // size on its differences, and the identified model is far off (measured: simulation error 4.5
-    // times the noise on a fresh input of amplitude 1, a diverging run at 1.5). Left open.
-    if (truth.ni() > 0) continue;
-
     // 5% output noise (of the output's standard deviation) on the identification and a fresh record.
     const double sigma = 0.05 * std::sqrt((y.array() - y.mean()).square().mean());
     const Eigen::VectorXd noise = bonl::signals::white_noise(u.size(), sigma, 11);
@@ -152,8 +147,20 @@ TEST_CASE("identify recovers the nonlinear-feedback known systems, noise-free an
     const double noise_rms = std::sqrt(fresh_noise.squaredNorm() / double(fresh.size()));
     INFO("noise RMS " << noise_rms << ", error to the measured " << error_to_measured << ", to the truth "
                       << error_to_truth);
-    CHECK(error_to_measured <= 1.02 * noise_rms);
-    CHECK(error_to_truth <= 0.25 * noise_rms);
+    if (truth.ni() == 0) {
+      CHECK(error_to_measured <= 1.02 * noise_rms);
+      CHECK(error_to_truth <= 0.25 * noise_rms);
+      continue;
+    }
+    // With the integrator the free run adds up every error of the velocity's level, so no estimate
+    // from noisy data simulates a fresh position record to the noise's level: the reference is the
+    // best the criterion itself gives, the refinement started at the truth. 5% of the position's
+    // spread is noise of about the velocity's own size on the differences.
+    const Model reference = bonl::refine_output_error(truth, u, Eigen::VectorXd(y + noise), 400);
+    const double reference_to_truth =
+        std::sqrt((y_fresh - reference.simulate(fresh)).squaredNorm() / double(fresh.size()));
+    INFO("the refinement from the truth: error to the truth " << reference_to_truth);
+    CHECK(error_to_truth <= 1.1 * reference_to_truth);
   }
 }
 
@@ -165,7 +172,8 @@ TEST_CASE("identify's open-loop start is the records' best linear approximation 
     const Eigen::VectorXd y = truth.simulate(u);
     const bonl::Records<double> records{{u, y}};
     const auto starts = bonl::nonlinear_feedback_starts(structure_of(truth), records);
-    REQUIRE(starts.size() == 1);
+    // The open loop, and with the integrator the velocity model on the differences after it.
+    REQUIRE(starts.size() == (truth.ni() == 1 ? 2U : 1U));
     const Model& open = starts.front();
     // The oracle: an output-error ARX identified with the same orders, delay and integrators.
     const bonl::ARXd linear = bonl::refine_output_error(
@@ -180,6 +188,18 @@ TEST_CASE("identify's open-loop start is the records' best linear approximation 
     CHECK(open.knots() == truth.knots());
     // With the loop open it simulates as the linear model does.
     CHECK((open.simulate(u) - linear.simulate(u)).cwiseAbs().maxCoeff() <= 1e-12 * y.cwiseAbs().maxCoeff());
+    if (truth.ni() == 0) continue;
+    // The velocity start: the structure without its integrator, the feedback of its own output,
+    // identified on the first differences; its position run's differences are that model's run.
+    Model velocity(truth.na(), truth.nb(), truth.nk(), truth.r(), truth.nh(), truth.nd(), 0, 0);
+    velocity.set_knots(truth.knots());
+    Eigen::VectorXd dy = y;
+    dy.tail(dy.size() - 1) -= y.head(y.size() - 1);
+    velocity = bonl::identify(velocity, u, dy);
+    const Eigen::VectorXd position = starts.back().simulate(u);
+    Eigen::VectorXd differences = position;
+    differences.tail(differences.size() - 1) -= position.head(position.size() - 1);
+    CHECK((differences - velocity.simulate(u)).cwiseAbs().maxCoeff() <= 1e-9 * dy.cwiseAbs().maxCoeff());
   }
 }
 

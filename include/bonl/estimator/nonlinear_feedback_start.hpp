@@ -6,19 +6,30 @@
 // the refinement nothing to start from. The open loop (the records' best linear approximation, no
 // feedback) simulates like a stable linear model, so the refinement always has a finite start, and
 // Levenberg-Marquardt closes the loop from there.
+//
+// A drive whose position integrates a velocity that the feedback sees (ni = 1, nv = 1) also starts
+// from its velocity: the same structure without the integrator, the feedback of its own output,
+// identified on the records' first differences. Its free-run error does not integrate, so it is not
+// dominated by the drift that any error of the velocity's level adds up to in the position; the
+// position model with the velocity model's parameters simulates the same differences, integrated.
 
+#include <Eigen/Core>
+
+#include <cstddef>
 #include <vector>
 
 #include "../error.hpp"
 #include "best_linear_approximation.hpp"
+#include "identify.hpp"
 #include "record_view.hpp"
 
 namespace bonl {
 
 /// identify()'s start for a NonlinearFeedback model (the model's identify_starts): the records' best
 /// linear approximation as its linear block (its orders, delay and integrators), the feedback's
-/// coefficients 0 and its block D = q^-1. The records are deviations from the operating point. Empty
-/// where the linear least squares broke down.
+/// coefficients 0 and its block D = q^-1; and with ni = 1 and nv = 1 the velocity model identified on
+/// the records' first differences. The records are deviations from the operating point. A start whose
+/// fit broke down numerically is left out.
 template <class Model>
 std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Records<typename Model::Scalar>& records,
                                              int linear_iterations = 100) {
@@ -33,6 +44,28 @@ std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Recor
     open.set_a(linear.a());
     starts.push_back(open);
   } catch (const NumericalError&) {
+  }
+  if (structure.ni() == 1 && structure.nv() == 1) {
+    // The first differences from rest (y(-1) = 0: the records are deviations from the operating point).
+    using VectorX = typename Model::VectorX;
+    std::vector<VectorX> inputs, differences;
+    for (const auto& record : records) {
+      VectorX dy = record.y;
+      dy.tail(dy.size() - 1) -= record.y.head(dy.size() - 1);
+      inputs.emplace_back(record.u);
+      differences.push_back(std::move(dy));
+    }
+    Records<typename Model::Scalar> velocity_records;
+    for (std::size_t i = 0; i < inputs.size(); ++i) velocity_records.emplace_back(inputs[i], differences[i]);
+    Model velocity(structure.na(), structure.nb(), structure.nk(), structure.r(), structure.nh(), structure.nd(), 0, 0);
+    velocity.set_knots(structure.knots());
+    try {
+      velocity = identify(velocity, velocity_records);
+      Model position = structure;
+      position.set_theta(velocity.theta());
+      starts.push_back(position);
+    } catch (const NumericalError&) {
+    }
   }
   return starts;
 }

@@ -25,5 +25,7 @@ metrics = _importlib.import_module(".metrics", __name__)
 plant = _importlib.import_module(".plant", __name__)
 
 from .selection import Selection, grid, named_orders, select  # noqa: E402  (order and structure selection)
+from .data_file import read_columns, write_columns  # noqa: E402  (records from CSV files)
+from .report import plot_fit, summary  # noqa: E402  (a model in words, its fit in a figure)
 
-__all__ = sorted({*_core_names, "__version__", "control", "experiment", "metrics", "plant", "Selection", "grid", "named_orders", "select"})
+__all__ = sorted({*_core_names, "__version__", "control", "experiment", "metrics", "plant", "Selection", "grid", "named_orders", "plot_fit", "read_columns", "select", "summary", "write_columns"})

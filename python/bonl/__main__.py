@@ -6,6 +6,12 @@ demo
     The paper's experiment on the simulated excavator dipper joint: Tables 1 and 2 for both
     estimator methods, and with ``--out DIR`` the paper's Figs. 11 and 12, tables.txt and
     results.json (see :mod:`bonl.demo`).
+identify
+    From a data file (CSV) to a model file: order selection over one family or all of them, the
+    chosen model's summary beside a linear model's, its scores and figure (see
+    :mod:`bonl.identify_command`).
+simulate
+    A model file's free run over a data file's input, written as CSV.
 control
     The tracking experiment: PI, PI plus each identified model's inverse as feedforward, and the
     adaptive P-H-W feedforward while the plant changes (see :mod:`bonl.tracking`).
@@ -14,32 +20,19 @@ control
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 from typing import Callable, Optional, Sequence
 
 
-def _demo_arguments(parser: argparse.ArgumentParser) -> None:
-    from . import demo
+def _lazy(module: str, function: str) -> Callable:
+    """``module.function`` of this package, imported at the first call: ``bonl --help`` and one
+    subcommand do not import every other subcommand's dependencies (matplotlib, the plant)."""
 
-    demo.add_arguments(parser)
+    def call(*args):
+        return getattr(importlib.import_module("." + module, __package__), function)(*args)
 
-
-def _demo_run(args: argparse.Namespace) -> int:
-    from . import demo
-
-    return demo.run(args)
-
-
-def _control_arguments(parser: argparse.ArgumentParser) -> None:
-    from . import tracking
-
-    tracking.add_arguments(parser)
-
-
-def _control_run(args: argparse.Namespace) -> int:
-    from . import tracking
-
-    return tracking.run(args)
+    return call
 
 
 #: The subcommands: (name, one-line help, description, add_arguments(parser), run(args) -> int).
@@ -53,8 +46,27 @@ COMMANDS: Sequence[tuple] = (
         "Table 1 (parameters) and Table 2 (validation MSE of the velocity) for both estimator "
         "methods, and with --out DIR write fig11_velocity.png, fig12_residuals.png, tables.txt and "
         "results.json.",
-        _demo_arguments,
-        _demo_run,
+        _lazy("demo", "add_arguments"),
+        _lazy("demo", "run"),
+    ),
+    (
+        "identify",
+        "identify a model from a data file (CSV) and write its model file",
+        "Select a model on the input and output columns of a data file (bonl.select: the candidates are "
+        "scored on the last quarter of the data, held out), write the chosen model as a model file, and "
+        "print its summary beside the linear (ARX) model selected the same way. --model and --orders "
+        "narrow the candidates (an order with several comma-separated values is a grid); --test-from K "
+        "keeps samples K on for a test; --scores and --figure write the scores (JSON) and the fit.",
+        _lazy("identify_command", "identify_arguments"),
+        _lazy("identify_command", "identify_run"),
+    ),
+    (
+        "simulate",
+        "simulate a model file over a data file's input (free run from rest) and write it as CSV",
+        "Load a bonl model file, simulate it from rest over the input column of a data file and write the "
+        "input and the simulated output as CSV; with --output COL also print the RMS error against it.",
+        _lazy("identify_command", "simulate_arguments"),
+        _lazy("identify_command", "simulate_run"),
     ),
     (
         "control",
@@ -63,8 +75,8 @@ COMMANDS: Sequence[tuple] = (
         "with each identified model's inverse as feedforward, and with the adaptive P-H-W feedforward while "
         "the plant changes (pilot hysteresis x2, bulk modulus -30%); print the tracking RMS of each, with "
         "--json FILE write them ({\"tracking_rms\": {...}}), with --figure FILE plot them (docs/control.md).",
-        _control_arguments,
-        _control_run,
+        _lazy("tracking", "add_arguments"),
+        _lazy("tracking", "run"),
     ),
 )
 

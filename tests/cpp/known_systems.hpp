@@ -108,9 +108,25 @@ inline bonl::NonlinearFeedbackd friction_feedback() {
 /// the friction acts on (s is then the velocity, the output the position).
 inline bonl::NonlinearFeedbackd friction_drive_position() {
   const bonl::NonlinearFeedbackd velocity = friction_feedback();
-  bonl::NonlinearFeedbackd model(2, 1, 1, 3, 2, 2, 1, 1);
+  bonl::NonlinearFeedbackd model(2, 1, 1, 3, 2, 2, 1, 0, 1);
   model.set_theta(velocity.theta());
   model.set_knots(velocity.knots());
+  return model;
+}
+
+/// A nonlinear-feedback system with hysteresis in the loop, a restoring force with memory as in the
+/// Bouc-Wen benchmark: a second-order linear block (poles of radius 0.84), fed back through
+/// D = q^-1 + 0.4 q^-2 a Prandtl-Ishlinskii operator of the output, three plays of thresholds 1, 2
+/// and 3 (the spread rule's for the outputs' half-range of about 4 on random levels of amplitude 1
+/// held 5 samples) with weights -0.06, -0.05 and -0.04, and a cubic -0.002 y^3.
+inline bonl::NonlinearFeedbackd hysteretic_feedback() {
+  bonl::NonlinearFeedbackd model(2, 1, 1, 3, 0, 2, 0, 3);
+  model.set_b(vec({0.2, 0.1}));
+  model.set_a(vec({-1.6, 0.7}));
+  model.set_f(vec({0.0, -0.002}));
+  model.set_thresholds(vec({0.2, 0.5, 1.0}));
+  model.set_w(vec({-0.06, -0.05, -0.04}));
+  model.set_d(vec({1.0, 0.4}));
   return model;
 }
 

@@ -9,7 +9,8 @@
 //               default (the integrators ni, 0) is written only where it differs from it, and a file
 //               without it reads as the default, so files written before it existed still load},
 //    "params": {one entry per block of kDescription.parameters: an array ("b": [b_0..b_nb], ...), or a
-//               number for a one-number block ("c")},
+//               number for a one-number block ("c"); every block is written, and a file may leave out
+//               one with no entries at its orders (files from before the block existed)},
 //    "operating_point": {"u0": .., "y0": ..},
 //    "input_range": [min, max] (the inputs the model was identified on; null for an unbounded end)}
 // Version 1 is version 2 without "operating_point" and "input_range"; it is still read (as the
@@ -322,13 +323,18 @@ Model model_from_document(const Json& document) {
 
   const Json& params = document["params"];
   if (!params.is_object()) fail("params must be an object, got " + show(params));
-  require_keys(params, "params", names_of(description.parameters));
-
   return rethrow_as_json_error([&]() {
     Model model = make_model<Model>(order_values);
+    // A block with no entries at the file's orders may be left out: files written before the block
+    // existed (the nonlinear-feedback model's plays) hold none.
+    const auto empty = [&](std::size_t i) {
+      return description.parameters[i].shape == ParameterShape::Vector && model.parameter(i).size() == 0;
+    };
+    require_keys(params, "params", names_of(description.parameters), empty);
     for (std::size_t i = 0; i < description.parameters.size(); ++i) {
       const ParameterDescription& parameter = description.parameters[i];
       const std::string key = std::string("params.") + parameter.name;
+      if (!params.contains(parameter.name)) continue;
       Vector value;
       if (parameter.shape == ParameterShape::Number) {
         value = Vector::Constant(1, static_cast<Scalar>(read_number<Scalar>(params[parameter.name], key)));

@@ -11,7 +11,12 @@
 // Wiener-Hammerstein model (models/detail/hinge_terms.hpp): with them f can be piecewise linear, a
 // saturation or a friction curve; their knots are structure, not estimated. d_1 = 1 fixes the scale
 // between D and f.
-// Parameters: b_0..b_nb, a_1..a_na, f_2..f_r, g_1..g_nh, d_2..d_nd.
+// Hysteresis in the loop (a bolted joint's restoring force, a cylinder's friction): f may also hold
+// a Prandtl-Ishlinskii operator of s, sum_{i=1..np} w_i play_{r_i}[s] (blocks/play_operators.hpp),
+// whose plays remember the past of s; their thresholds are structure as the knots are, their weights
+// w_i linear parameters. Then x(k-j) = f(s)(k-j) is the operator's value at k-j, and the plays are
+// part of the simulated state, run from rest (or over a measured past) with s.
+// Parameters: b_0..b_nb, a_1..a_na, f_2..f_r, g_1..g_nh, w_1..w_np, d_2..d_nd.
 // Key-term form (f(s(k-1)) separated from D, whose first coefficient is 1):
 //   y(k) = [u lags] . b - [y lags] . a + sum_m f_m s(k-1)^m + sum_l g_l h(s(k-1) - knots_l)
 //          + sum_{j=2..nd} d_j x(k-j),   x(k-j) = f(s(k-j)),
@@ -31,6 +36,7 @@
 #include <vector>
 
 #include "../blocks/linear_block.hpp"
+#include "../blocks/play_operators.hpp"
 #include "../detail/history.hpp"
 #include "../detail/integrators.hpp"
 #include "../detail/stability.hpp"
@@ -43,11 +49,11 @@
 namespace bonl {
 
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
-          int Nh_ = Eigen::Dynamic, int Nd_ = Eigen::Dynamic>
-class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na_, Nb_, R_, Nh_, Nd_>> {
+          int Nh_ = Eigen::Dynamic, int Nd_ = Eigen::Dynamic, int Np_ = Eigen::Dynamic>
+class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na_, Nb_, R_, Nh_, Nd_, Np_>> {
   static constexpr int kLinearParams = detail::add_sizes(detail::poly_size(Nb_), Na_);  // b, a
-  static constexpr int kFeedbackParams =
-      detail::add_sizes(R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1, Nh_);  // f, g
+  static constexpr int kFeedbackParams = detail::add_sizes(
+      detail::add_sizes(R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1, Nh_), Np_);  // f, g, w
 
  public:
   using Scalar = Scalar_;
@@ -58,10 +64,11 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// linear block's inverse (control/inverse_model.hpp).
   static constexpr bool kInvertible = false;
   static constexpr const char* kName = "NonlinearFeedback";
-  static constexpr ModelDescription<8, 6> kDescription{
+  static constexpr ModelDescription<9, 8> kDescription{
       kName,
       "Nonlinear-feedback (Lur'e) model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)), "
-      "f(s) = sum_{m=2..r} f_m s^m + sum_{l=1..nh} g_l h(s - knots_l) (h the hinge, zero between 0 and its knot), "
+      "f(s) = sum_{m=2..r} f_m s^m + sum_{l=1..nh} g_l h(s - knots_l) (h the hinge, zero between 0 and its knot) "
+      "+ sum_{i=1..np} w_i play_{r_i}[s] (play operators, hysteresis with memory), "
       "d_1 = 1, s = y (nv = 0) or y(k) - y(k-1) (nv = 1).",
       {{{"na", 1, detail::kMaxOrder, Na_, "poles of the linear block (na >= 1)"},
         {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
@@ -70,6 +77,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         {"nh", 0, 32, Nh_, "hinges of the feedback nonlinearity, knots where its slope changes (0..32; 0: none)"},
         {"nd", 1, 32, Nd_, "taps of the feedback block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32)"},
         {"nv", 0, 1, Eigen::Dynamic, "what the nonlinearity sees: 0 the output y, 1 its first difference (a velocity)"},
+        {"np", 0, 32, Np_, "play operators of the feedback's hysteresis (0..32; 0: none)", 0},
         detail::kIntegratorsOrder}},
       {{{"b", ParameterShape::Vector, 0, "b_0..b_nb", nullptr, false, {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
@@ -79,18 +87,24 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
          "knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated)",
          nullptr, false, {1, 0, 0, 0}, true},
         {"g", ParameterShape::Vector, 1, "g_1..g_nh, the change of slope outward of each knot", nullptr, false, {}},
+        {"thresholds", ParameterShape::Vector, 1,
+         "r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated)", nullptr, false,
+         {1, 0, 0, 0}, true},
+        {"w", ParameterShape::Vector, 1, "w_1..w_np, the plays' weights", nullptr, false, {}},
         {"d", ParameterShape::Vector, 1, "d_1..d_nd with d_1 = 1",
          "the nonlinear-feedback model is normalised so that d_1 = 1", false, {}}}}};
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
   using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;
+  using Plays = PlayOperators<Scalar, Np_>;
+  using Thresholds = typename Plays::Vector;
 
-  /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of y): set them where the
-  /// feedback's slope changes.
+  /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) and the thresholds to i / (np + 1) (in the
+  /// units of s): set them where the feedback's slope changes and its loops turn.
   NonlinearFeedback(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index nh,
-                    Eigen::Index nd, Eigen::Index nv, Eigen::Index ni = 0)
-      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_nh(nh), m_nd(nd), m_nv(nv), m_ni(ni) {
+                    Eigen::Index nd, Eigen::Index nv, Eigen::Index np = 0, Eigen::Index ni = 0)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_nh(nh), m_nd(nd), m_nv(nv), m_np(np), m_ni(ni) {
     detail::require_order(na, 1, "na");
     detail::require_order(nb, 0, "nb");
     detail::require_order(nk, 0, "nk");
@@ -102,14 +116,18 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     detail::require(nd <= 32, "nd (feedback taps) must be <= 32");
     detail::require(nv == 0 || nv == 1, "nv must be 0 (the output is fed back) or 1 (its first difference), got " +
                                             std::to_string(nv));
+    detail::require_order(np, 0, "np (plays)");
+    detail::require(np <= 32, "np (plays) must be <= 32");
     detail::require_integrators(ni);
     detail::require_matches_template(na, Na_, "na");
     detail::require_matches_template(nb, Nb_, "nb");
     detail::require_matches_template(r, R_, "r");
     detail::require_matches_template(nh, Nh_, "nh");
     detail::require_matches_template(nd, Nd_, "nd");
-    m_theta = Params::Zero(nb + 1 + na + r - 1 + nh + nd - 1);
+    detail::require_matches_template(np, Np_, "np");
+    m_theta = Params::Zero(nb + 1 + na + r - 1 + nh + np + nd - 1);
     m_knots = detail::HingeTerms<Scalar, Nh_>::default_knots(nh);
+    m_thresholds = Plays::spread_thresholds(np);
   }
 
   Eigen::Index na() const noexcept { return m_na; }
@@ -119,9 +137,12 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   Eigen::Index nh() const noexcept { return m_nh; }
   Eigen::Index nd() const noexcept { return m_nd; }
   Eigen::Index nv() const noexcept { return m_nv; }
+  Eigen::Index np() const noexcept { return m_np; }
   Eigen::Index ni() const noexcept { return m_ni; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
-  std::array<Eigen::Index, 8> orders() const noexcept { return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_ni}; }
+  std::array<Eigen::Index, 9> orders() const noexcept {
+    return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_np, m_ni};
+  }
 
   /// identify()'s start beside its recursive estimates: the loop open, the records' best linear
   /// approximation as the linear block. nonlinear_feedback_starts belongs to the estimator, a layer
@@ -145,6 +166,10 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// knots_1..knots_nh, strictly increasing, none at 0.
   const Knots& knots() const noexcept { return m_knots; }
   VectorX g() const { return m_theta.segment(first_g(), m_nh); }
+  /// r_1..r_np, strictly increasing, > 0.
+  const Thresholds& thresholds() const noexcept { return m_thresholds; }
+  /// w_1..w_np.
+  VectorX w() const { return m_theta.segment(first_w(), m_np); }
   /// d_1..d_nd with d_1 = 1.
   VectorX d() const {
     VectorX out(m_nd);
@@ -174,15 +199,25 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   void set_g(const Eigen::MatrixBase<T>& g) {
     detail::assign_checked(m_theta.segment(first_g(), m_nh), g, "g");
   }
+  /// Where the plays' loops turn: strictly increasing, > 0 (in the units of s).
+  template <typename T>
+  void set_thresholds(const Eigen::MatrixBase<T>& thresholds) {
+    Plays::require_valid(thresholds, m_np);
+    m_thresholds = thresholds;
+  }
+  template <typename T>
+  void set_w(const Eigen::MatrixBase<T>& w) {
+    detail::assign_checked(m_theta.segment(first_w(), m_np), w, "w");
+  }
   template <typename T>
   void set_d(const Eigen::MatrixBase<T>& d) {
     detail::require_size(d, m_nd, "d");
     detail::require_finite(d, "d");
-    detail::require(d[0] == 1, std::string("d[0] (d_1) must be 1: ") + kDescription.parameters[5].normalised);
+    detail::require(d[0] == 1, std::string("d[0] (d_1) must be 1: ") + kDescription.parameters[7].normalised);
     m_theta.segment(first_d(), m_nd - 1) = d.tail(m_nd - 1);
   }
 
-  /// The parameter block kDescription.parameters[i]: b, a, f, knots, g, d.
+  /// The parameter block kDescription.parameters[i]: b, a, f, knots, g, thresholds, w, d.
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b();
@@ -190,7 +225,9 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       case 2: return f();
       case 3: return m_knots;
       case 4: return g();
-      case 5: return d();
+      case 5: return m_thresholds;
+      case 6: return w();
+      case 7: return d();
       default: detail::no_such_parameter(kName, i);
     }
   }
@@ -201,7 +238,9 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       case 2: return set_f(value);
       case 3: return set_knots(value);
       case 4: return set_g(value);
-      case 5: return set_d(value);
+      case 5: return set_thresholds(value);
+      case 6: return set_w(value);
+      case 7: return set_d(value);
       default: detail::no_such_parameter(kName, i);
     }
   }
@@ -211,6 +250,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     const Feedback feedback(*this);
+    PlayHistory plays(*this);
     detail::History<Scalar> u_lags(m_nk + m_nb + 1);
     detail::History<Scalar> y_lags(lags());
     detail::History<Scalar> z_lags(m_na);  // the denominator's past: y differenced ni times
@@ -218,10 +258,13 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     y.resize(u.size());
     for (Eigen::Index k = 0; k < u.size(); ++k) {
       u_lags.push(u[k]);
+      plays.step(feedback.s(y_lags, 0));
       Scalar out = Scalar(0);
       for (Eigen::Index i = 0; i <= m_nb; ++i) out += m_theta[i] * u_lags[m_nk + i];
       for (Eigen::Index j = 0; j < m_na; ++j) out -= m_theta[first_a() + j] * z_lags[j];
-      for (Eigen::Index j = 0; j < m_nd; ++j) out += tap(m_theta, j) * feedback.output(m_theta, feedback.s(y_lags, j));
+      for (Eigen::Index j = 0; j < m_nd; ++j) {
+        out += tap(m_theta, j) * (feedback.output(m_theta, feedback.s(y_lags, j)) + plays.output(m_theta, j));
+      }
       if (m_ni > 0) out += integrators.carried();
       y[k] = out;
       if (!std::isfinite(out)) return false;
@@ -282,6 +325,43 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     Eigen::Index m_first_f, m_r, m_nv;
   };
 
+  /// The feedback's plays and their values at the taps: step(s(k-1)) moves them, then past(j) is
+  /// P(k-1-j), j = 0..nd-1 (zero before the record: rest), and output(theta, j) sum_i w_i P_i(k-1-j).
+  class PlayHistory {
+   public:
+    using Past = Eigen::Matrix<Scalar, Np_, Nd_>;
+    explicit PlayHistory(const NonlinearFeedback& model)
+        : m_plays(model.thresholds()), m_past(Past::Zero(model.np(), model.nd())), m_first_w(model.first_w()) {}
+    void reset() noexcept {
+      m_plays.reset();
+      m_past.setZero();
+    }
+    /// Moves the plays with s(k-1) and the history one tap back.
+    void step(Scalar s) noexcept {
+      if (m_past.rows() == 0) return;
+      for (Eigen::Index j = m_past.cols() - 1; j > 0; --j) m_past.col(j) = m_past.col(j - 1);
+      m_past.col(0) = m_plays.step(s);
+    }
+    template <typename Theta>
+    Scalar output(const Theta& theta, Eigen::Index j) const noexcept {
+      Scalar out = Scalar(0);
+      for (Eigen::Index i = 0; i < m_past.rows(); ++i) out += theta[m_first_w + i] * m_past(i, j);
+      return out;
+    }
+    /// weight * P(k-1-j) added into out's w entries.
+    template <typename Out>
+    void add_regressor(Eigen::Index j, Scalar weight, Out& out) const noexcept {
+      for (Eigen::Index i = 0; i < m_past.rows(); ++i) out[m_first_w + i] += weight * m_past(i, j);
+    }
+    Eigen::Index size() const noexcept { return m_past.rows(); }
+    /// P_i(k-1), the plays' values after the last step (before the first: 0, rest).
+    Scalar value(Eigen::Index i) const noexcept { return m_past(i, 0); }
+   private:
+    Plays m_plays;
+    Past m_past;
+    Eigen::Index m_first_w;
+  };
+
  public:
   /// Key-term form: regressor [u(k-nk..k-nk-nb), -y(k-1..k-na), s(k-1)^2..s(k-1)^r,
   /// h(s(k-1) - knots_1..nh), x(k-2..k-nd)], x(k-j) = f(s(k-j)) with the step's theta; target y(k).
@@ -294,13 +374,14 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_y(model.lags()), m_z(model.na()),
           m_integrators(model.ni()), m_na(model.na()),
           m_nb(model.nb()), m_nk(model.nk()), m_nd(model.nd()), m_first_f(model.first_f()),
-          m_feedback_size(model.r() - 1 + model.nh()), m_first_d(model.first_d()),
+          m_feedback_size(model.r() - 1 + model.nh() + model.np()), m_first_d(model.first_d()), m_plays(model),
           m_phi(Params::Zero(model.num_params())) {}
     void reset() noexcept {
       m_u.clear();
       m_y.clear();
       m_z.clear();
       m_integrators.clear();
+      m_plays.reset();
     }
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       m_u.push(u);
@@ -308,14 +389,18 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       for (Eigen::Index j = 0; j < m_na; ++j) m_phi[m_nb + 1 + j] = -m_z[j];
       m_phi.segment(m_first_f, m_feedback_size).setZero();
       const Scalar s1 = m_feedback.s(m_y, 0);
+      m_plays.step(s1);
       m_feedback.add_regressor(s1, Scalar(1), m_phi);
-      for (Eigen::Index j = 1; j < m_nd; ++j) m_phi[m_first_d + j - 1] = m_feedback.output(theta, m_feedback.s(m_y, j));
+      m_plays.add_regressor(0, Scalar(1), m_phi);
+      for (Eigen::Index j = 1; j < m_nd; ++j) {
+        m_phi[m_first_d + j - 1] = m_feedback.output(theta, m_feedback.s(m_y, j)) + m_plays.output(theta, j);
+      }
       const Scalar carried = m_integrators.carried();
       const Scalar prediction = m_phi.dot(theta) + carried;
       const Scalar lag = std::isnan(y) ? prediction : y;
       m_y.push(lag);
       m_z.push(m_integrators.push(lag));
-      return {m_phi, y - carried, prediction, m_feedback.output(theta, s1), true};
+      return {m_phi, y - carried, prediction, m_feedback.output(theta, s1) + m_plays.output(theta, 0), true};
     }
 
    private:
@@ -324,6 +409,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     detail::History<Scalar> m_z;  // the denominator's past: y differenced ni times
     detail::IntegratorLags<Scalar> m_integrators;
     Eigen::Index m_na, m_nb, m_nk, m_nd, m_first_f, m_feedback_size, m_first_d;
+    PlayHistory m_plays;  // the plays of the measured s
     Params m_phi;
   };
 
@@ -339,8 +425,11 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     explicit OutputErrorTerms(const NonlinearFeedback& model, Eigen::Index /*hold*/ = 0)
         : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()),
           m_nd(model.nd()), m_nv(model.nv()), m_first_f(model.first_f()),
-          m_feedback_size(model.r() - 1 + model.nh()), m_first_d(model.first_d()),
-          m_ni(model.ni()), m_y(VectorX::Zero(model.lags())),
+          m_feedback_size(model.r() - 1 + model.nh() + model.np()), m_first_d(model.first_d()),
+          m_first_w(model.first_w()), m_ni(model.ni()), m_plays(model),
+          m_dplays(PlaySensitivities::Zero(model.num_params(), model.np())),
+          m_dplayed(SensitivityLags::Zero(model.num_params(), model.np() > 0 ? model.nd() : 0)),
+          m_before(Thresholds::Zero(model.np())), m_y(VectorX::Zero(model.lags())),
           m_dy(SensitivityLags::Zero(model.num_params(), model.lags())), m_z(VectorX::Zero(model.na())),
           m_dz(SensitivityLags::Zero(model.num_params(), model.na())),
           m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())), m_psi(Params::Zero(model.num_params())) {}
@@ -350,6 +439,9 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       m_dy.setZero();
       m_z.setZero();
       m_dz.setZero();
+      m_plays.reset();
+      m_dplays.setZero();
+      m_dplayed.setZero();
     }
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       m_u.push(u);
@@ -363,15 +455,17 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         y -= theta[m_nb + 1 + j] * m_z[j];
       }
       m_psi.segment(m_first_f, m_feedback_size).setZero();
+      step_plays(theta);
       Scalar x1 = Scalar(0);
       for (Eigen::Index j = 0; j < m_nd; ++j) {
         const Scalar dj = j == 0 ? Scalar(1) : theta[m_first_d + j - 1];
         const Scalar s = m_feedback.s(m_y, j);
-        const Scalar x = m_feedback.output(theta, s);
+        const Scalar x = m_feedback.output(theta, s) + m_plays.output(theta, j);
         if (j == 0) x1 = x;
         if (j > 0) m_psi[m_first_d + j - 1] = x;
         y += dj * x;
         m_feedback.add_regressor(s, dj, m_psi);
+        m_plays.add_regressor(j, dj, m_psi);
       }
       // Through the loop: the denominator's past and the feedback's slope at each past s.
       for (Eigen::Index j = 0; j < m_na; ++j) m_psi -= theta[m_nb + 1 + j] * m_dz.col(j);
@@ -385,6 +479,9 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         if (gain == Scalar(0)) continue;
         m_psi += gain * m_dy.col(j);
         if (m_nv == 1) m_psi -= gain * m_dy.col(j + 1);
+      }
+      for (Eigen::Index j = 0; j < m_dplayed.cols(); ++j) {
+        m_psi += (j == 0 ? Scalar(1) : theta[m_first_d + j - 1]) * m_dplayed.col(j);
       }
       m_output = y;
       return {y, m_psi, x1};
@@ -419,10 +516,35 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
 
    private:
     using SensitivityLags = Eigen::Matrix<Scalar, kNumParams, Eigen::Dynamic>;
+    using PlaySensitivities = Eigen::Matrix<Scalar, kNumParams, Np_>;
+
+    /// Moves the plays with s(k-1) and their sensitivities: a play that moved follows s, so its
+    /// sensitivity is ds(k-1); one that held keeps its own. m_dplayed.col(j) is then
+    /// sum_i w_i dP_i(k-1-j), the plays' part of the feedback's sensitivity at tap j + 1.
+    void step_plays(const Params& theta) noexcept {
+      if constexpr (Np_ == 0) {  // no plays at compile time: nothing to move (nor to compile)
+        static_cast<void>(theta);
+      } else {
+        if (m_plays.size() == 0) return;
+        for (Eigen::Index i = 0; i < m_plays.size(); ++i) m_before[i] = m_plays.value(i);
+        m_plays.step(m_feedback.s(m_y, 0));
+        for (Eigen::Index i = 0; i < m_plays.size(); ++i) {
+          if (m_plays.value(i) == m_before[i]) continue;
+          m_dplays.col(i) = m_dy.col(0);
+          if (m_nv == 1) m_dplays.col(i) -= m_dy.col(1);
+        }
+        for (Eigen::Index j = m_dplayed.cols() - 1; j > 0; --j) m_dplayed.col(j) = m_dplayed.col(j - 1);
+        m_dplayed.col(0).noalias() = m_dplays * theta.segment(m_first_w, m_plays.size());
+      }
+    }
 
     Feedback m_feedback;
     detail::History<Scalar> m_u;
-    Eigen::Index m_na, m_nb, m_nk, m_nd, m_nv, m_first_f, m_feedback_size, m_first_d, m_ni;
+    Eigen::Index m_na, m_nb, m_nk, m_nd, m_nv, m_first_f, m_feedback_size, m_first_d, m_first_w, m_ni;
+    PlayHistory m_plays;            // the plays of the simulated s
+    PlaySensitivities m_dplays;     // dP_i(k-1) / dtheta, one column per play
+    SensitivityLags m_dplayed;      // sum_i w_i dP_i(k-1-j) / dtheta, j = 0..nd-1
+    Thresholds m_before;            // the plays' values before the step
     VectorX m_y;            // y(k-1), y(k-2), ...: the simulated outputs, newest first
     SensitivityLags m_dy;   // their sensitivities, one column each
     VectorX m_z;            // z(k-1..k-na): the denominator's past, y differenced ni times
@@ -436,7 +558,8 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   Eigen::Index first_a() const noexcept { return m_nb + 1; }
   Eigen::Index first_f() const noexcept { return m_nb + 1 + m_na; }
   Eigen::Index first_g() const noexcept { return first_f() + m_r - 1; }
-  Eigen::Index first_d() const noexcept { return first_g() + m_nh; }
+  Eigen::Index first_w() const noexcept { return first_g() + m_nh; }
+  Eigen::Index first_d() const noexcept { return first_w() + m_np; }
   /// How many past outputs a step reads besides the denominator's (kept apart, differenced): the
   /// feedback's nd (and one more for a first difference) and the integrators' ni.
   Eigen::Index lags() const noexcept { return std::max(m_nd + m_nv, m_ni); }
@@ -445,7 +568,8 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
 
   Params m_theta;
   Knots m_knots;
-  Eigen::Index m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_ni;
+  Thresholds m_thresholds;
+  Eigen::Index m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_np, m_ni;
 };
 
 }  // namespace bonl

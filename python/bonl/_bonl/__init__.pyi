@@ -1251,7 +1251,7 @@ class WienerHammerstein:
         ...
 class NonlinearFeedback:
     """
-    Nonlinear-feedback (Lur'e) model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)), f(s) = sum_{m=2..r} f_m s^m + sum_{l=1..nh} g_l h(s - knots_l) (h the hinge, zero between 0 and its knot), d_1 = 1, s = y (nv = 0) or y(k) - y(k-1) (nv = 1).
+    Nonlinear-feedback (Lur'e) model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)), f(s) = sum_{m=2..r} f_m s^m + sum_{l=1..nh} g_l h(s - knots_l) (h the hinge, zero between 0 and its knot) + sum_{i=1..np} w_i play_{r_i}[s] (play operators, hysteresis with memory), d_1 = 1, s = y (nv = 0) or y(k) - y(k-1) (nv = 1).
     
     Parameters
     ----------
@@ -1269,6 +1269,8 @@ class NonlinearFeedback:
         taps of the feedback block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32).
     nv : int
         what the nonlinearity sees: 0 the output y, 1 its first difference (a velocity).
+    np : int, optional
+        play operators of the feedback's hysteresis (0..32; 0: none); default 0.
     ni : int, optional
         integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
     b : array_like, optional
@@ -1281,19 +1283,23 @@ class NonlinearFeedback:
         knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated).
     g : array_like, optional
         g_1..g_nh, the change of slope outward of each knot.
+    thresholds : array_like, optional
+        r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated).
+    w : array_like, optional
+        w_1..w_np, the plays' weights.
     d : array_like, optional
         d_1..d_nd with d_1 = 1.
     """
-    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'nh', 'nd', 'nv', 'ni')
-    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
-    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0, 2, 0, 0)
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'nh', 'nd', 'nv', 'np', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'np': 0, 'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 0, 2, 0, 0, 0)
     def __copy__(self) -> NonlinearFeedback:
         ...
     def __deepcopy__(self, memo: dict) -> NonlinearFeedback:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, nd: typing.SupportsInt | typing.SupportsIndex, nv: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, d: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, nd: typing.SupportsInt | typing.SupportsIndex, nv: typing.SupportsInt | typing.SupportsIndex, np: typing.SupportsInt | typing.SupportsIndex = 0, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, thresholds: typing.Any = None, w: typing.Any = None, d: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -1444,6 +1450,11 @@ class NonlinearFeedback:
         int: pure delay of the input in samples.
         """
     @property
+    def np(self) -> int:
+        """
+        int: play operators of the feedback's hysteresis (0..32; 0: none).
+        """
+    @property
     def num_params(self) -> int:
         """
         int: number of identified parameters.
@@ -1488,6 +1499,22 @@ class NonlinearFeedback:
         """
     @theta.setter
     def theta(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def thresholds(self) -> typing.Any:
+        """
+        numpy.ndarray: r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated).
+        """
+    @thresholds.setter
+    def thresholds(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def w(self) -> typing.Any:
+        """
+        numpy.ndarray: w_1..w_np, the plays' weights.
+        """
+    @w.setter
+    def w(self, arg1: typing.Any) -> None:
         ...
 class UpdateStatus:
     """

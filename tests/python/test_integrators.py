@@ -12,7 +12,7 @@ import bonl
 @pytest.mark.parametrize("model_class", bonl.MODELS, ids=lambda c: c.__name__)
 def test_every_model_takes_ni_last_with_default_zero(model_class):
     assert model_class.ORDERS[-1] == "ni"
-    assert model_class.ORDER_DEFAULTS == {"ni": 0}
+    assert model_class.ORDER_DEFAULTS["ni"] == 0  # (the nonlinear-feedback model also defaults its plays, np = 0)
     required = model_class.PAPER_ORDERS[:-1]
     assert model_class(*required).ni == 0
     with_one = model_class(*required, ni=1)

@@ -35,12 +35,19 @@ from .selection import grid, named_orders, select
 
 __all__ = ["DEFAULT_GRID", "candidates", "identify_arguments", "identify_run", "simulate_arguments", "simulate_run"]
 
-#: The orders tried where the command line gives none, by name; each family takes the ones it has.
+#: The orders tried where the command line gives none, by name; each family takes the ones it has
+#: (an order not named here takes its model's default).
 #: Small orders, so that every family's grid runs in about a minute on a few thousand samples.
 DEFAULT_GRID: Dict[str, List[int]] = {
     "na": [1, 2, 3], "nb": [1, 2], "nk": [0, 1], "r": [3], "r1": [3], "ni": [0],
-    "na1": [1, 2], "nb1": [1], "na2": [1, 2], "nb2": [1], "nh": [0], "nd": [1, 2], "nv": [0],
+    "na1": [1, 2], "nb1": [1], "na2": [1, 2], "nb2": [1], "nh": [0], "nd": [1, 2], "nv": [0], "np": [0],
 }
+
+
+def _default_orders(model_class: type) -> Dict[str, List[int]]:
+    """DEFAULT_GRID's values of the orders ``model_class`` has; an order it does not name (one with a
+    default, added to a model later) takes the model's default in :func:`bonl.grid`."""
+    return {name: DEFAULT_GRID[name] for name in model_class.ORDERS if name in DEFAULT_GRID}
 
 
 def _model_class(name: str) -> type:
@@ -91,14 +98,13 @@ def candidates(model: Optional[str] = None, orders: Optional[Dict[str, List[int]
     if model is None:
         if orders:
             raise ValueError("bonl identify: --orders needs --model (which family the orders are of)")
-        return [structure for model_class in _bonl.MODELS
-                for structure in grid(model_class, **{n: DEFAULT_GRID[n] for n in model_class.ORDERS})]
+        return [structure for model_class in _bonl.MODELS for structure in grid(model_class, **_default_orders(model_class))]
     model_class = _model_class(model)
     unknown = sorted(set(orders) - set(model_class.ORDERS))
     if unknown:
         raise ValueError(f"bonl identify: {model} has no order {', '.join(unknown)}; its orders are "
                          + ", ".join(model_class.ORDERS))
-    return grid(model_class, **{n: orders.get(n, DEFAULT_GRID[n]) for n in model_class.ORDERS})
+    return grid(model_class, **{**_default_orders(model_class), **orders})
 
 
 def identify_arguments(parser: argparse.ArgumentParser) -> None:

@@ -508,6 +508,7 @@ TEST_CASE("PlayOperators: bad thresholds throw", "[blocks][play]") {
   CHECK_THROWS_WITH(bonl::PlayOperators<double>(vec({0.0, 0.1})), Catch::Matchers::Contains("must be > 0"));
   CHECK_THROWS_WITH(bonl::PlayOperators<double>(vec({0.1, kNaN})), Catch::Matchers::Contains("thresholds"));
   CHECK_THROWS_WITH(bonl::PlayOperators<double>(vec({0.1, kInf})), Catch::Matchers::Contains("thresholds"));
+  CHECK_THROWS_WITH((bonl::PlayOperators<double, 2>(vec({0.1, 0.2, 0.3}))), Catch::Matchers::Contains("thresholds"));
 }
 
 TEST_CASE("LinearBlock: hand-computed impulse response", "[blocks][linear]") {

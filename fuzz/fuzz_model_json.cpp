@@ -209,6 +209,13 @@ void check_variants(const std::string& text, const M& model) {
   // float: loads exactly when every parameter fits in a float; then the parameters are rounded.
   bool fits = true;
   for (Eigen::Index i = 0; i < model.theta().size(); ++i) fits = fits && std::abs(model.theta()[i]) <= FLT_MAX;
+  // A structure block that must be strictly increasing without a 0 (knots, thresholds) must stay so in
+  // float: two close values may round to one, a tiny one to 0.
+  for (std::size_t i = 0; i < M::kDescription.parameters.size(); ++i) {
+    if (!M::kDescription.parameters[i].increasing) continue;
+    const Eigen::VectorXf rounded_block = model.parameter(i).template cast<float>();
+    fits = fits && rounded_block.allFinite() && bonl::detail::first_not_increasing_or_zero(rounded_block) < 0;
+  }
   const auto single = typed_read<Float>(text);
   FUZZ_CHECK(single.has_value() == fits);
   if (single) {

@@ -10,6 +10,7 @@
 #include "estimator/method.hpp"
 #include "estimator/nonlinear_feedback_start.hpp"
 #include "estimator/output_error.hpp"
+#include "estimator/play_thresholds.hpp"
 #include "estimator/record_view.hpp"
 #include "estimator/recursive_estimator.hpp"
 #include "estimator/rls.hpp"

@@ -1,8 +1,9 @@
 #pragma once
-// The models: the four of the paper, the Wiener model, the Wiener-Hammerstein model and the
-// nonlinear-feedback (Lur'e) model. Each one simulates free-run from rest (simulate), predicts one
-// step ahead from measured data (predict), exposes its parameters as the eq. (19) vector (theta)
-// and by name, and carries its key-term-separated regressor (KeyTerms) for bonl::Estimator.
+// The models: the four of the paper, the Wiener model, the Wiener-Hammerstein model, the
+// nonlinear-feedback (Lur'e) model and the Prandtl-Ishlinskii Hammerstein model (input hysteresis).
+// Each one simulates free-run from rest (simulate), predicts one step ahead from measured data
+// (predict), exposes its parameters as the eq. (19) vector (theta) and by name, and carries its
+// key-term-separated regressor (KeyTerms) for bonl::Estimator.
 //
 // Model concept (what Estimator<Model> needs):
 //   Scalar, kNumParams (or Eigen::Dynamic), Params, VectorX, kHasInternalVariables, kName;
@@ -26,6 +27,7 @@
 #include "models/model_steps.hpp"
 #include "models/nonlinear_feedback.hpp"
 #include "models/poles.hpp"
+#include "models/prandtl_ishlinskii_hammerstein.hpp"
 #include "models/pseudo_hammerstein_wiener.hpp"
 #include "models/rescale.hpp"
 #include "models/wiener.hpp"
@@ -41,18 +43,20 @@ using PseudoHammersteinWienerd = PseudoHammersteinWiener<double>;
 using Wienerd = Wiener<double>;
 using WienerHammersteind = WienerHammerstein<double>;
 using NonlinearFeedbackd = NonlinearFeedback<double>;
+using PrandtlIshlinskiiHammersteind = PrandtlIshlinskiiHammerstein<double>;
 
 /// Every model, at run-time orders in double: what a model file can hold, what Python binds, what
 /// the property suites run over. A new model is one entry here.
 using Models =
     ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd, WienerHammersteind,
-              NonlinearFeedbackd>;
+              NonlinearFeedbackd, PrandtlIshlinskiiHammersteind>;
 
 /// The orders of the fixed-order variants (WithOrders), by name: the paper's (section 5), na = 3,
 /// nb = 2, r = r1 = 3 and nk = 8 (a run-time order: the structures of the benchmarks and of the
 /// tests' known systems); both blocks of the Wiener-Hammerstein model as the paper's linear block; no
 /// hinges (nh = 0) and two feedback taps (nd = 2) for the models after the paper. An order not named
-/// here is at its minimum.
+/// here is at its minimum: the plays np, none in the nonlinear-feedback model, one in the
+/// Prandtl-Ishlinskii Hammerstein model.
 struct PaperOrders {
   static constexpr std::array<OrderValue, 11> kOrders{{{"na", 3}, {"nb", 2}, {"nk", 8}, {"r", 3}, {"r1", 3}, {"na1", 3},
                                                        {"nb1", 2}, {"na2", 3}, {"nb2", 2}, {"nh", 0}, {"nd", 2}}};

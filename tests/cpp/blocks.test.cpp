@@ -1,10 +1,12 @@
 // Tests of the building blocks in include/bonl/blocks: the backlash (paper eqs. 10-12) and its
 // switching functions (eqs. 30-31), the general backlash of Fig. 9, the two-segment input
-// polynomial (eqs. 3-5), the output polynomial (eq. 9) and the linear block (eqs. 6-8).
+// polynomial (eqs. 3-5), the output polynomial (eq. 9), the linear block (eqs. 6-8) and the play
+// operators of a Prandtl-Ishlinskii operator.
 // Every expected value is computed here, by hand or from the defining formula.
 
 #include "test_support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -476,6 +478,39 @@ TEST_CASE("OutputPolynomial: invert", "[blocks][output]") {
 
 // na = 1, a = [-0.5], nb = 1, b = [1, 0.5], nk = 2: x(k) = 0.5 x(k-1) + w(k-2) + 0.5 w(k-3).
 // For a unit impulse w(0) = 1: x = 0, 0, 1, 0.5 + 0.5 = 1, 0.5, 0.25, 0.125, 0.0625 (exact in binary).
+TEST_CASE("PlayOperators: each play is min(max(P(k-1), v - r), v + r) from rest; the data rule", "[blocks][play]") {
+  bonl::PlayOperators<double> plays(vec({0.1, 0.4, 1.0}));
+  const Eigen::VectorXd v = bonl::signals::random_levels(300, 3, 1.2, 21);
+  Eigen::Vector3d expected = Eigen::Vector3d::Zero();
+  for (Eigen::Index k = 0; k < v.size(); ++k) {
+    const Eigen::VectorXd& state = plays.step(v[k]);
+    for (int i = 0; i < 3; ++i) {
+      const double r = plays.thresholds()[i];
+      expected[i] = std::min(std::max(expected[i], v[k] - r), v[k] + r);
+    }
+    REQUIRE((state - expected).cwiseAbs().maxCoeff() == 0.0);
+    CHECK(plays.output(vec({1.0, -2.0, 0.5})) == expected[0] - 2.0 * expected[1] + 0.5 * expected[2]);
+  }
+  plays.reset();
+  CHECK(plays.state().isZero(0.0));
+  // Fixed size: the same values.
+  bonl::PlayOperators<double, 3> fixed(Eigen::Vector3d(0.1, 0.4, 1.0));
+  bonl::PlayOperators<double> dynamic(vec({0.1, 0.4, 1.0}));
+  for (Eigen::Index k = 0; k < v.size(); ++k) CHECK(fixed.step(v[k]) == Eigen::Vector3d(dynamic.step(v[k])));
+  // The data rule: i / (np + 1) of the half-range.
+  CHECK(bonl::PlayOperators<double>::spread_thresholds(3, 2.0).isApprox(vec({0.5, 1.0, 1.5}), 1e-15));
+  CHECK(bonl::PlayOperators<double>::spread_thresholds(1, 0.0) == vec({0.5}));  // a constant input: half-range 1
+}
+
+TEST_CASE("PlayOperators: bad thresholds throw", "[blocks][play]") {
+  CHECK_THROWS_WITH(bonl::PlayOperators<double>(vec({0.5, 0.1})),
+                    "bonl: thresholds must be strictly increasing, got 0.5 before 0.1 at index 1");
+  CHECK_THROWS_WITH(bonl::PlayOperators<double>(vec({0.0, 0.1})), Catch::Matchers::Contains("must be > 0"));
+  CHECK_THROWS_WITH(bonl::PlayOperators<double>(vec({0.1, kNaN})), Catch::Matchers::Contains("thresholds"));
+  CHECK_THROWS_WITH(bonl::PlayOperators<double>(vec({0.1, kInf})), Catch::Matchers::Contains("thresholds"));
+  CHECK_THROWS_WITH((bonl::PlayOperators<double, 2>(vec({0.1, 0.2, 0.3}))), Catch::Matchers::Contains("thresholds"));
+}
+
 TEST_CASE("LinearBlock: hand-computed impulse response", "[blocks][linear]") {
   bonl::LinearBlock<double> block(1, 1, 2);
   REQUIRE(block.na() == 1);

@@ -19,6 +19,8 @@ static_assert(std::is_same_v<bonl::WithOrders<bonl::WienerHammersteind, bonl::Pa
                              bonl::WienerHammerstein<double, 3, 2, 3, 0, 3, 2>>);
 static_assert(std::is_same_v<bonl::WithOrders<bonl::NonlinearFeedbackd, bonl::PaperOrders>,
                              bonl::NonlinearFeedback<double, 3, 2, 3, 0, 2, 0>>);
+static_assert(std::is_same_v<bonl::WithOrders<bonl::PrandtlIshlinskiiHammersteind, bonl::PaperOrders>,
+                             bonl::PrandtlIshlinskiiHammerstein<double, 3, 2, 3, 1>>);
 static_assert(std::is_same_v<bonl::WithScalar<bonl::ARXd, float>, bonl::ARX<float>>);
 static_assert(std::is_same_v<bonl::WithScalar<bonl::PaperWiener, float>, bonl::Wiener<float, 3, 2, 3>>);
 static_assert(bonl::PaperOrderModels::size == bonl::Models::size);
@@ -74,15 +76,16 @@ TEMPLATE_LIST_TEST_CASE("a fixed-order model takes the table's orders, and its o
   std::array<Eigen::Index, orders.size()> values{};
   for (std::size_t i = 0; i < orders.size(); ++i) {
     INFO(TestType::kName << " " << orders[i].name);
-    // The table by hand: the paper's orders (both W-H blocks as its one), no hinges, two feedback taps,
-    // no plays (np is at its minimum, not in the table).
+    // The table by hand: the paper's orders (both W-H blocks as its one), no hinges, two feedback taps;
+    // the plays at their minimum (np is not in the table: none in the nonlinear-feedback model, one in
+    // the Prandtl-Ishlinskii Hammerstein model).
     const std::string name = orders[i].name;
     const Eigen::Index expected = name == "na" || name == "na1" || name == "na2" ? 3
                                   : name == "nb" || name == "nb1" || name == "nb2" ? 2
                                   : name == "r" || name == "r1"                   ? 3
                                   : name == "nh"                                  ? 0
                                   : name == "nd"                                  ? 2
-                                  : name == "np"                                  ? 0
+                                  : name == "np"                                  ? orders[i].minimum
                                                                                   : -1;
     // The others (the delay nk, ...) never are template parameters.
     CHECK(orders[i].fixed == (expected < 0 ? Eigen::Dynamic : expected));

@@ -6,7 +6,9 @@
 #include <bonl/bonl.hpp>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 
 #include "compiled_once.hpp"
@@ -37,6 +39,36 @@ inline Eigen::VectorXd validation_input(Input input) {
   if (input == Input::RandomLevels) return bonl::signals::random_levels(5000, 5, 1.0, 2);
   const Eigen::VectorXd phases = bonl::signals::random_levels(5, 1, 3.14159, 3);
   return bonl::signals::multisine(5000, 0.01, bonl::signals::paper_tones(), 0.4, phases);
+}
+
+/// Random levels held 5 samples, 4000 of them, of the given amplitude: the identification input of
+/// the extrapolation tests (amplitude 1) and their fresh input of a larger amplitude (1.5).
+inline Eigen::VectorXd levels(double amplitude, std::uint64_t seed) {
+  return bonl::signals::random_levels(4000, 5, amplitude, seed);
+}
+
+/// The structure of a known system: its orders and structure parameters (knots, thresholds), theta zero.
+template <class Model>
+Model structure_of(const Model& truth) {
+  Model structure = truth;
+  structure.set_theta(Model::Params::Zero(truth.num_params()));
+  return structure;
+}
+
+/// The largest error of a model's key terms run with `method` over (u, y) at the model's own theta:
+/// regressor . theta against the target, and the prediction against y. Zero up to round-off where y
+/// is the model's own noise-free output.
+template <class Model>
+double worst_key_term_error(const Model& model, const Eigen::VectorXd& u, const Eigen::VectorXd& y,
+                            bonl::KeyTermMethod method) {
+  typename Model::KeyTerms terms(model, method);
+  double worst = 0.0;
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    const auto step = terms.step(model.theta(), u[k], y[k]);
+    worst = std::max(worst, std::abs(step.regressor.dot(model.theta()) - step.target));
+    worst = std::max(worst, std::abs(step.prediction - y[k]));
+  }
+  return worst;
 }
 
 inline double standard_deviation(const Eigen::VectorXd& y) {

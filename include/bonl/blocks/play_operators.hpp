@@ -27,10 +27,10 @@ class PlayOperators {
   using Scalar = Scalar_;
   using Vector = Eigen::Matrix<Scalar, Np_, 1>;
 
-  /// The plays of `thresholds` (require_valid), at rest.
+  /// The plays of `thresholds` (require_valid; Np of them where Np is fixed), at rest.
   template <typename T>
   explicit PlayOperators(const Eigen::MatrixBase<T>& thresholds) {
-    require_valid(thresholds, thresholds.size());
+    require_valid(thresholds, Np_ == Eigen::Dynamic ? thresholds.size() : Eigen::Index(Np_));
     m_thresholds = thresholds;
     m_state = Vector::Zero(thresholds.size());
   }

@@ -11,7 +11,7 @@ from . import metrics
 from . import plant
 from . import experiment
 from . import control
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     pass
 class ARX:
@@ -1516,6 +1516,222 @@ class NonlinearFeedback:
     @w.setter
     def w(self, arg1: typing.Any) -> None:
         ...
+class PrandtlIshlinskiiHammerstein:
+    """
+    Prandtl-Ishlinskii Hammerstein model: input hysteresis w = sum_{l=0..r} f_l u^l + sum_{i=1..np} g_i play_{r_i}[u] (play_r[u](k) = min(max(P(k-1), u(k) - r), u(k) + r), P = 0 at rest; thresholds r_i structure), then the linear block (b_0 = 1): x(k) = -sum a_j x(k-j) + sum b_i w(k-nk-i), y = x.
+    
+    Parameters
+    ----------
+    na : int
+        poles of the linear block (na >= 1).
+    nb : int
+        B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
+    nk : int
+        pure delay in samples.
+    r : int
+        degree of the input polynomials (r >= 1).
+    np : int
+        play operators of the input hysteresis (1..32).
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
+    b : array_like, optional
+        b_0..b_nb with b_0 = 1.
+    a : array_like, optional
+        a_1..a_na.
+    f : array_like, optional
+        f_0..f_r, the input polynomial.
+    thresholds : array_like, optional
+        r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated).
+    g : array_like, optional
+        g_1..g_np, the plays' weights.
+    """
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'r', 'np', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 3, 1, 0)
+    def __copy__(self) -> PrandtlIshlinskiiHammerstein:
+        ...
+    def __deepcopy__(self, memo: dict) -> PrandtlIshlinskiiHammerstein:
+        ...
+    def __getstate__(self) -> str:
+        ...
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, np: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, thresholds: typing.Any = None, g: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: str) -> None:
+        ...
+    def extrapolated_samples(self, u: typing.Any) -> int:
+        """
+        int: how many samples of u lie outside input_range (0: no extrapolation).
+        """
+    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        One-step-ahead prediction from measured data.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        y : array_like, shape (n,)
+            Measured output; y[k] is used to predict y[k + 1].
+        initial : (u_past, y_past), optional
+            The measured samples just before u and y (None: from rest at the operating point).
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
+            measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
+            backlash memory is the measured y[k - 1]).
+        """
+    def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> PrandtlIshlinskiiHammerstein:
+        """
+        The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        """
+    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Free-run simulation, from rest or after a measured past.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        initial : (u_past, y_past), optional
+            The measured samples just before u. They set the model's state (its internal variables are what
+            the measured past says, as predict() takes them); then the model runs on u alone. The
+            benchmarks' state-initialisation window of m samples is
+            ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The model's output, driven by u alone after the initial state.
+        
+        Raises
+        ------
+        ValueError
+            If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
+        bonl.NumericalError
+            If the simulation leaves the finite numbers (an unstable model).
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
+        """
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        """
+    @property
+    def a(self) -> typing.Any:
+        """
+        numpy.ndarray: a_1..a_na.
+        """
+    @a.setter
+    def a(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def b(self) -> typing.Any:
+        """
+        numpy.ndarray: b_0..b_nb with b_0 = 1.
+        """
+    @b.setter
+    def b(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def f(self) -> typing.Any:
+        """
+        numpy.ndarray: f_0..f_r, the input polynomial.
+        """
+    @f.setter
+    def f(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def g(self) -> typing.Any:
+        """
+        numpy.ndarray: g_1..g_np, the plays' weights.
+        """
+    @g.setter
+    def g(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def input_range(self) -> tuple[float, float]:
+        """
+        tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
+        """
+    @input_range.setter
+    def input_range(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def na(self) -> int:
+        """
+        int: poles of the linear block (na >= 1).
+        """
+    @property
+    def nb(self) -> int:
+        """
+        int: B has nb + 1 coefficients b_0..b_nb, b_0 = 1.
+        """
+    @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: pure delay in samples.
+        """
+    @property
+    def np(self) -> int:
+        """
+        int: play operators of the input hysteresis (1..32).
+        """
+    @property
+    def num_params(self) -> int:
+        """
+        int: number of identified parameters.
+        """
+    @property
+    def operating_point(self) -> tuple[float, float]:
+        """
+        tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
+        """
+    @operating_point.setter
+    def operating_point(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def orders(self) -> tuple:
+        """
+        tuple of int: the orders, as ORDERS names them.
+        """
+    @property
+    def params(self) -> dict:
+        """
+        dict: every parameter block by name, as the keyword arguments of the constructor take them.
+        """
+    @property
+    def pole_radius(self) -> float:
+        """
+        float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
+        """
+    @property
+    def r(self) -> int:
+        """
+        int: degree of the input polynomials (r >= 1).
+        """
+    @property
+    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        numpy.ndarray: the parameter vector in the order of eq. (19).
+        """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def thresholds(self) -> typing.Any:
+        """
+        numpy.ndarray: r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated).
+        """
+    @thresholds.setter
+    def thresholds(self, arg1: typing.Any) -> None:
+        ...
 class UpdateStatus:
     """
     What one online update did.
@@ -1659,6 +1875,9 @@ class Estimator:
         ...
     @typing.overload
     def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     def recover(self) -> None:
         """
@@ -2202,6 +2421,66 @@ def identify(model: NonlinearFeedback, u: typing.Any, y: typing.Any = None, *, p
     bonl.NumericalError
         The estimator broke down numerically.
     """
+@typing.overload
+def identify(model: PrandtlIshlinskiiHammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> PrandtlIshlinskiiHammerstein:
+    """
+    Identify a model's parameters from an input/output record, or from several.
+    
+    Parameters
+    ----------
+    model : one of bonl.MODELS
+        Gives the structure (orders); its parameter values are not used.
+    u, y : array_like, shape (n,)
+        Input and measured output. For several records (experiments of the same system), give them as
+        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
+        Each record is simulated from rest; no history is carried across records.
+    passes : int, default 1
+        Passes of the recursive estimator over the record(s) (the paper's step 5).
+    method : {'output_error', 'equation_error', 'paper'}
+        The recursive stage. 'output_error' (default): recursive prediction-error method on the
+        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
+        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
+        recursive estimate is then refined by minimising the free-run simulation error.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
+    c0 : float, default 0.01
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
+    refine_iterations : int, default 100
+        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
+        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+    normalise : bool, default True
+        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+        the model in the data's units, so that the settings mean the same whatever the units. The recursive
+        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+        estimator's, in the data's units.
+    operating_point : {None, 'mean', 'initial'}
+        The identified model's operating point (u0, y0): None (default) keeps the structure's
+        (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+        first sample of the first record (the record starts at rest there).
+    
+    Returns
+    -------
+    model
+        A new model of the same type with the identified parameters, that operating point and the
+        records' input range (Model.input_range).
+    
+    Warns
+    -----
+    bonl.StabilityWarning
+        The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+        where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    
+    Raises
+    ------
+    ValueError
+        Bad orders, settings, lengths or non-finite samples.
+    bonl.NumericalError
+        The estimator broke down numerically.
+    """
 def load_model(text: str) -> typing.Any:
     """
     Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
@@ -2220,5 +2499,5 @@ def load_model(text: str) -> typing.Any:
     ValueError
         The text is not valid JSON or not a valid bonl model (the message names the problem).
     """
-MODELS: tuple = (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, Wiener, WienerHammerstein, NonlinearFeedback)
+MODELS: tuple = (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, Wiener, WienerHammerstein, NonlinearFeedback, PrandtlIshlinskiiHammerstein)
 __version__: str = '0.1.0'

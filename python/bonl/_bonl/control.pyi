@@ -167,6 +167,9 @@ class InverseModel:
     @typing.overload
     def __init__(self, model: bonl._bonl.NonlinearFeedback, **kwargs) -> None:
         ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, **kwargs) -> None:
+        ...
     def commands(self, reference: typing.Any) -> InverseRun:
         """
         The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
@@ -278,6 +281,9 @@ class AdaptiveInverse:
         ...
     @typing.overload
     def __init__(self, model: bonl._bonl.NonlinearFeedback, **kwargs) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, **kwargs) -> None:
         ...
     def rederive(self) -> bool:
         """

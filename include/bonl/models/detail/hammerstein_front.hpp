@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <utility>
 
 #include "../../blocks/linear_block.hpp"
@@ -39,6 +40,24 @@ inline constexpr std::array<ParameterDescription, 4> kFrontParameters{
      {"f", ParameterShape::Vector, 0, "f_0..f_r, the input polynomial for u >= 0", nullptr, false, {1, 0, 0, -1}},
      {"p", ParameterShape::Vector, 0, "p_0..p_r, its change for u < 0 (p_l = g_l - f_l)", nullptr, false,
       {1, 0, 0, -1}}}};
+
+/// b_0..b_nb of a block model's linear block from theta's b_1..b_nb (`tail`): b_0 = 1, the normalisation.
+template <typename VectorX, typename Tail>
+VectorX normalised_b(const Tail& tail) {
+  VectorX b(tail.size() + 1);
+  b[0] = 1;
+  b.tail(tail.size()) = tail;
+  return b;
+}
+/// A block model's set_b: b (nb + 1 entries, finite, b_0 = 1) checked, then b_1..b_nb into `into`
+/// (theta's nb entries); otherwise std::invalid_argument and `into` untouched.
+template <typename B, typename Into>
+void assign_normalised_b(const Eigen::MatrixBase<B>& b, Into&& into) {
+  require_size(b, into.size() + 1, "b");
+  require_finite(b, "b");
+  require(b[0] == 1, std::string("b[0] (b_0) must be 1: the ") + kFrontNormalisation);
+  into = b.tail(into.size());
+}
 
 /// Parameter count of the front: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na.
 constexpr int front_params(int na, int nb, int r) {
@@ -76,12 +95,7 @@ class HammersteinFront {
   VectorX f() const { return m_theta.segment(0, m_r + 1); }
   VectorX p() const { return m_theta.segment(m_r + 1, m_r + 1); }
   /// b_0..b_nb; b_0 is 1 (the key-term normalisation).
-  VectorX b() const {
-    VectorX b(m_nb + 1);
-    b[0] = Scalar(1);
-    b.tail(m_nb) = m_theta.segment(2 * (m_r + 1), m_nb);
-    return b;
-  }
+  VectorX b() const { return normalised_b<VectorX>(m_theta.segment(2 * (m_r + 1), m_nb)); }
   VectorX a() const { return m_theta.segment(2 * (m_r + 1) + m_nb, m_na); }
 
   template <typename T>
@@ -95,10 +109,7 @@ class HammersteinFront {
   /// b_0..b_nb with b_0 = 1.
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
-    require_size(b, m_nb + 1, "b");
-    require_finite(b, "b");
-    require(b[0] == Scalar(1), "b[0] (b_0) must be 1: the block models are normalised so that b_0 = 1");
-    m_theta.segment(2 * (m_r + 1), m_nb) = b.tail(m_nb);
+    assign_normalised_b(b, m_theta.segment(2 * (m_r + 1), m_nb));
   }
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {

@@ -1,0 +1,360 @@
+#pragma once
+// Prandtl-Ishlinskii Hammerstein model: input hysteresis (a valve's pilot stage), then the linear block
+//   w(k) = sum_{l=0..r} f_l u(k)^l + sum_{i=1..np} g_i play_{r_i}[u](k),
+//   x(k) = -sum_{j=1..na} a_j x(k-j) + sum_{i=0..nb} b_i w(k-nk-i),   b_0 = 1,   y = x,
+// with u the deviation from the operating point and the plays those of blocks/play_operators.hpp, at
+// rest (0) before the record. The thresholds r_1 < ... < r_np are structure, not estimated, as the
+// Wiener-Hammerstein model's knots are: the model's own (the defaults r_i = i / (np + 1), set_thresholds(),
+// a model file), or placed from the data by identify() (identify_starts below). For fixed thresholds w
+// is linear in [f, g], so the key-term form is the Hammerstein model's with a longer basis:
+//   x(k) = [basis(k-nk)] . [f, g] + sum_{i=1..nb} b_i w(k-nk-i) - sum_j a_j x(k-j),
+//   basis(k) = [1, u(k), ..., u(k)^r, P_1(k), ..., P_np(k)].
+// The plays depend on u alone, so their memory is the input's past: run from rest over the record,
+// or over the measured past before a simulation from it (simulate(u, u_past, y_past)).
+// Parameters: f_0..f_r, g_1..g_np, b_1..b_nb, a_1..a_na.
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "../blocks/linear_block.hpp"
+#include "../blocks/play_operators.hpp"
+#include "../detail/history.hpp"
+#include "../detail/integrators.hpp"
+#include "../detail/stability.hpp"
+#include "../detail/validate.hpp"
+#include "detail/hammerstein_front.hpp"
+#include "detail/model_runs.hpp"
+#include "detail/simulated_lags.hpp"
+#include "model_description.hpp"
+#include "model_steps.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
+          int Np_ = Eigen::Dynamic>
+class PrandtlIshlinskiiHammerstein
+    : public detail::ModelRuns<PrandtlIshlinskiiHammerstein<Scalar_, Na_, Nb_, R_, Np_>> {
+  static constexpr int kBasis = detail::add_sizes(detail::poly_size(R_), Np_);  // f, g
+
+ public:
+  using Scalar = Scalar_;
+  static constexpr int kNumParams = detail::add_sizes(kBasis, detail::add_sizes(Nb_, Na_));
+  static constexpr bool kHasInternalVariables = true;
+  /// No inverse for control yet: the input block's inverse is not a polynomial's (Newton on a
+  /// monotone map) but that of a rate-independent operator with memory. For f = (0, f_1) and
+  /// positive weights it is the inverse PI operator (thresholds and weights transformed, Kuhnen
+  /// 2003), but with the polynomial terms and weights of either sign it is a search over the plays'
+  /// next states that control/inverse_model.hpp does not do.
+  static constexpr bool kInvertible = false;
+  static constexpr const char* kName = "PrandtlIshlinskiiHammerstein";
+  static constexpr ModelDescription<6, 5> kDescription{
+      kName,
+      "Prandtl-Ishlinskii Hammerstein model: input hysteresis w = sum_{l=0..r} f_l u^l + sum_{i=1..np} g_i "
+      "play_{r_i}[u] (play_r[u](k) = min(max(P(k-1), u(k) - r), u(k) + r), P = 0 at rest; thresholds r_i "
+      "structure), then the linear block (b_0 = 1): x(k) = -sum a_j x(k-j) + sum b_i w(k-nk-i), y = x.",
+      detail::concat(detail::front_orders<Na_, Nb_, R_>(),
+                     std::array<OrderDescription, 2>{
+                         {{"np", 1, 32, Np_, "play operators of the input hysteresis (1..32)"},
+                          detail::kIntegratorsOrder}}),
+      {{detail::kFrontParameters[0], detail::kFrontParameters[1],
+        {"f", ParameterShape::Vector, 0, "f_0..f_r, the input polynomial", nullptr, false, {1, 0, 0, -1}},
+        {"thresholds", ParameterShape::Vector, 1,
+         "r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated)", nullptr, false,
+         {0, 0, 1, 0}, true},
+        {"g", ParameterShape::Vector, 1, "g_1..g_np, the plays' weights", nullptr, false, {1, 0, -1, 0}}}}};
+  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Linear = LinearBlock<Scalar, Na_, Nb_>;
+  using Plays = PlayOperators<Scalar, Np_>;
+  using Thresholds = typename Plays::Vector;
+
+  /// The thresholds default to r_i = i / (np + 1) (in the units of u, from the operating point): set
+  /// them where the hysteresis turns, or let identify() place them from the data.
+  PrandtlIshlinskiiHammerstein(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index np,
+                               Eigen::Index ni = 0)
+      : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_np(np), m_ni(ni) {
+    detail::require_order(na, 1, "na");
+    detail::require_order(nb, 0, "nb");
+    detail::require_order(nk, 0, "nk");
+    detail::require_order(r, 1, "r");
+    detail::require_order(np, 1, "np (play operators)");  // none: the polynomial Hammerstein model
+    detail::require(np <= 32, "np (play operators) must be <= 32");
+    detail::require_integrators(ni);
+    detail::require_matches_template(na, Na_, "na");
+    detail::require_matches_template(nb, Nb_, "nb");
+    detail::require_matches_template(r, R_, "r");
+    detail::require_matches_template(np, Np_, "np");
+    m_theta = Params::Zero(basis_size() + nb + na);
+    m_thresholds = Plays::spread_thresholds(np);
+  }
+
+  Eigen::Index na() const noexcept { return m_na; }
+  Eigen::Index nb() const noexcept { return m_nb; }
+  Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index r() const noexcept { return m_r; }
+  Eigen::Index np() const noexcept { return m_np; }
+  Eigen::Index ni() const noexcept { return m_ni; }
+  Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  std::array<Eigen::Index, 6> orders() const noexcept { return {m_na, m_nb, m_nk, m_r, m_np, m_ni}; }
+
+  const Params& theta() const noexcept { return m_theta; }
+  template <typename T>
+  void set_theta(const Eigen::MatrixBase<T>& theta) {
+    detail::assign_checked(m_theta, theta, "theta");
+  }
+
+  VectorX f() const { return m_theta.head(m_r + 1); }
+  const Thresholds& thresholds() const noexcept { return m_thresholds; }
+  VectorX g() const { return m_theta.segment(m_r + 1, m_np); }
+  /// b_0..b_nb; b_0 is 1 (the key-term normalisation).
+  VectorX b() const { return detail::normalised_b<VectorX>(m_theta.segment(basis_size(), m_nb)); }
+  VectorX a() const { return m_theta.segment(basis_size() + m_nb, m_na); }
+
+  template <typename T>
+  void set_f(const Eigen::MatrixBase<T>& f) {
+    detail::assign_checked(m_theta.head(m_r + 1), f, "f");
+  }
+  /// The plays' thresholds: np of them, finite, > 0, strictly increasing (PlayOperators::require_valid).
+  template <typename T>
+  void set_thresholds(const Eigen::MatrixBase<T>& thresholds) {
+    Plays::require_valid(thresholds, m_np);
+    m_thresholds = thresholds;
+  }
+  template <typename T>
+  void set_g(const Eigen::MatrixBase<T>& g) {
+    detail::assign_checked(m_theta.segment(m_r + 1, m_np), g, "g");
+  }
+  /// b_0..b_nb with b_0 = 1.
+  template <typename T>
+  void set_b(const Eigen::MatrixBase<T>& b) {
+    detail::assign_normalised_b(b, m_theta.segment(basis_size(), m_nb));
+  }
+  template <typename T>
+  void set_a(const Eigen::MatrixBase<T>& a) {
+    detail::assign_checked(m_theta.segment(basis_size() + m_nb, m_na), a, "a");
+  }
+
+  /// The parameter block kDescription.parameters[i]: b, a, f, thresholds, g.
+  VectorX parameter(std::size_t i) const {
+    switch (i) {
+      case 0: return b();
+      case 1: return a();
+      case 2: return f();
+      case 3: return m_thresholds;
+      case 4: return g();
+      default: detail::no_such_parameter(kName, i);
+    }
+  }
+  void set_parameter(std::size_t i, const VectorX& value) {
+    switch (i) {
+      case 0: return set_b(value);
+      case 1: return set_a(value);
+      case 2: return set_f(value);
+      case 3: return set_thresholds(value);
+      case 4: return set_g(value);
+      default: detail::no_such_parameter(kName, i);
+    }
+  }
+
+  /// identify()'s start beside its recursive estimates: the structure with its thresholds placed by
+  /// the data rule (PlayOperators::spread_thresholds over the records' inputs), estimated from there.
+  /// prandtl_ishlinskii_starts belongs to the estimator, a layer above the models
+  /// (estimator/play_thresholds.hpp, in <bonl/estimator.hpp>): found by argument-dependent lookup.
+  template <class RecordList>
+  static std::vector<PrandtlIshlinskiiHammerstein> identify_starts(const PrandtlIshlinskiiHammerstein& structure,
+                                                                   const RecordList& records) {
+    return prandtl_ishlinskii_starts(structure, records);
+  }
+
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  template <typename U>
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+    const VectorX fv = f();
+    const VectorX gv = g();
+    Plays plays(m_thresholds);
+    const auto input = [&fv, &gv, &plays](Scalar v) {
+      plays.step(v);
+      Scalar w = Scalar(0);
+      for (Eigen::Index l = fv.size() - 1; l >= 0; --l) w = w * v + fv[l];
+      return w + plays.output(gv);
+    };
+    return detail::free_run(this->linear_block(), u, y, input, detail::Identity{});
+  }
+
+  /// Where the recursive estimator starts (all zero).
+  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
+  /// Projects an estimate onto the model's valid set: every theta is valid.
+  void constrain(Params& /*theta*/) const noexcept {}
+
+ private:
+  using Column = Eigen::Matrix<Scalar, kBasis, 1>;
+
+  /// The input block's regressors over the lags the linear block needs: column i is basis(k-nk-i),
+  /// i = 0..nb, zero before the record (the model at rest: no w there, not even f_0). The plays run
+  /// on the delayed input u(k-nk), which is the same as delaying their outputs (they start at rest).
+  /// Sized at construction; a push never allocates.
+  class BasisLags {
+   public:
+    explicit BasisLags(const PrandtlIshlinskiiHammerstein& model)
+        : m_plays(model.thresholds()), m_u(model.nk() + 1), m_r(model.r()), m_nk(model.nk()),
+          m_columns(Eigen::Matrix<Scalar, kBasis, detail::poly_size(Nb_)>::Zero(model.basis_size(), model.nb() + 1)),
+          m_column(Column::Zero(model.basis_size())) {}
+    void reset() noexcept {
+      m_plays.reset();
+      m_u.clear();
+      m_columns.setZero();
+      m_k = 0;
+    }
+    /// Pushes u(k): column 0 becomes basis(k-nk).
+    void push(Scalar u) noexcept {
+      m_u.push(u);
+      m_column.setZero();
+      if (m_k >= m_nk) {
+        const Scalar v = m_u[m_nk];
+        Scalar power = Scalar(1);
+        for (Eigen::Index l = 0; l <= m_r; ++l, power *= v) m_column[l] = power;
+        m_column.tail(m_plays.size()) = m_plays.step(v);
+      } else {
+        ++m_k;  // only "before or after the record start" matters
+      }
+      for (Eigen::Index i = m_columns.cols() - 1; i > 0; --i) m_columns.col(i) = m_columns.col(i - 1);
+      m_columns.col(0) = m_column;
+    }
+    auto column(Eigen::Index i) const noexcept { return m_columns.col(i); }
+    Eigen::Index size() const noexcept { return m_columns.rows(); }
+
+   private:
+    Plays m_plays;
+    detail::History<Scalar> m_u;  // u(k..k-nk): nk is a run-time order
+    Eigen::Index m_r, m_nk;
+    Eigen::Matrix<Scalar, kBasis, detail::poly_size(Nb_)> m_columns;
+    Column m_column;
+    Eigen::Index m_k = 0;
+  };
+
+ public:
+  /// Key-term form: y(k) = [basis(k-nk), w(k-nk-1..k-nk-nb), -x(k-1..k-na)] . theta. The past x are
+  /// the measured y for the equation-error method (the model's prediction where y is NaN) and the
+  /// model's own run for the paper's; the past w are recomputed with the step's theta (equation
+  /// error) or kept as estimated when they entered (the paper's eq. 24). With integrators the target
+  /// is y(k) less their part, known from the past x.
+  class KeyTerms {
+   public:
+    KeyTerms(const PrandtlIshlinskiiHammerstein& model, KeyTermMethod method)
+        : m_basis(model), m_w(model.nb()), m_z(model.na()), m_integrators(model.ni()), m_method(method),
+          m_nb(model.nb()), m_na(model.na()), m_phi(Params::Zero(model.num_params())) {}
+    void reset() noexcept {
+      m_basis.reset();
+      m_w.clear();
+      m_z.clear();
+      m_integrators.clear();
+      m_pending = false;
+    }
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      const Eigen::Index n = m_basis.size();
+      const auto weights = theta.template head<kBasis>(n);
+      if (m_pending) {  // the paper's method: the previous sample's x and w with the updated theta
+        const Scalar x = m_phi.dot(theta) + m_integrators.carried();
+        m_z.push(m_integrators.push(x));
+        m_w.push(m_basis.column(0).dot(weights));
+        m_pending = false;
+      }
+      m_basis.push(u);
+      m_phi.template head<kBasis>(n) = m_basis.column(0);
+      Scalar x = m_basis.column(0).dot(weights);
+      const bool paper = m_method == KeyTermMethod::Paper;
+      for (Eigen::Index i = 1; i <= m_nb; ++i) {
+        const Scalar w = paper ? m_w[i - 1] : m_basis.column(i).dot(weights);
+        m_phi[n + i - 1] = w;
+        x += theta[n + i - 1] * w;
+      }
+      for (Eigen::Index j = 0; j < m_na; ++j) {
+        m_phi[n + m_nb + j] = -m_z[j];
+        x -= theta[n + m_nb + j] * m_z[j];
+      }
+      const Scalar carried = m_integrators.carried();
+      x += carried;
+      if (paper) {
+        m_pending = true;
+      } else {
+        m_z.push(m_integrators.push(std::isnan(y) ? x : y));
+      }
+      return {m_phi, y - carried, x, x, true};
+    }
+
+   private:
+    BasisLags m_basis;
+    detail::History<Scalar> m_w;        // the paper's method: w(k-nk-1..k-nk-nb) as estimated
+    detail::History<Scalar, Na_> m_z;   // x(k-1..k-na), differenced where there are integrators
+    detail::IntegratorLags<Scalar> m_integrators;
+    KeyTermMethod m_method;
+    Eigen::Index m_nb, m_na;
+    Params m_phi;
+    bool m_pending = false;
+  };
+
+  /// The output-error method's view: one step of the free run with the current estimate and the
+  /// sensitivity of x(k) to theta:
+  ///   d x / d [f, g] = sum_{i=0..nb} b_i basis(k-nk-i),  d x / d b_i = w(k-nk-i),  d x / d a_j = -x(k-j),
+  /// each filtered by 1 / A (SimulatedLags). The thresholds are not parameters, so the plays' values
+  /// are exact for any estimate (w has no memory that depends on theta).
+  class OutputErrorTerms {
+   public:
+    explicit OutputErrorTerms(const PrandtlIshlinskiiHammerstein& model, Eigen::Index /*hold*/ = 0)
+        : m_basis(model), m_lags(model.na(), model.num_params(), model.ni()), m_nb(model.nb()), m_na(model.na()),
+          m_psi(Params::Zero(model.num_params())), m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())) {}
+    void reset() noexcept {
+      m_basis.reset();
+      m_lags.reset();
+      m_x = Scalar(0);
+    }
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
+      const Eigen::Index n = m_basis.size();
+      const auto weights = theta.template head<kBasis>(n);
+      m_basis.push(u);
+      auto d_weights = m_psi.template head<kBasis>(n);
+      d_weights = m_basis.column(0);
+      Scalar x = m_basis.column(0).dot(weights);
+      for (Eigen::Index i = 1; i <= m_nb; ++i) {
+        const Scalar b = theta[n + i - 1];
+        const Scalar w = m_basis.column(i).dot(weights);
+        d_weights += b * m_basis.column(i);
+        m_psi[n + i - 1] = w;
+        x += b * w;
+      }
+      x += m_lags.apply(theta.template segment<Na_>(n + m_nb, m_na), m_psi, n + m_nb);
+      m_x = x;
+      return {x, m_psi, x};
+    }
+    void accept() noexcept { m_lags.push(m_x, m_psi); }
+    void accept(const Params& delta) noexcept {
+      accept();
+      m_lags.correct(delta);
+    }
+    bool stable(const Params& theta, Scalar radius) noexcept {
+      return detail::roots_inside(theta.template segment<Na_>(m_basis.size() + m_nb, m_na), radius, m_work);
+    }
+
+   private:
+    BasisLags m_basis;
+    detail::SimulatedLags<Scalar, Na_, kNumParams> m_lags;
+    Eigen::Index m_nb, m_na;
+    Params m_psi;
+    Eigen::Matrix<Scalar, Na_, 1> m_work;  // for the stability test
+    Scalar m_x = Scalar(0);
+  };
+
+ private:
+  Eigen::Index basis_size() const noexcept { return m_r + 1 + m_np; }
+
+  Params m_theta;
+  Thresholds m_thresholds;
+  Eigen::Index m_na, m_nb, m_nk, m_r, m_np, m_ni;
+};
+
+}  // namespace bonl

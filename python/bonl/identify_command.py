@@ -36,18 +36,20 @@ from .selection import grid, named_orders, select
 __all__ = ["DEFAULT_GRID", "candidates", "identify_arguments", "identify_run", "simulate_arguments", "simulate_run"]
 
 #: The orders tried where the command line gives none, by name; each family takes the ones it has
-#: (an order not named here takes its model's default).
+#: (an order not named here takes its value at the model's PAPER_ORDERS).
 #: Small orders, so that every family's grid runs in about a minute on a few thousand samples.
 DEFAULT_GRID: Dict[str, List[int]] = {
     "na": [1, 2, 3], "nb": [1, 2], "nk": [0, 1], "r": [3], "r1": [3], "ni": [0],
-    "na1": [1, 2], "nb1": [1], "na2": [1, 2], "nb2": [1], "nh": [0], "nd": [1, 2], "nv": [0], "np": [0],
+    "na1": [1, 2], "nb1": [1], "na2": [1, 2], "nb2": [1], "nh": [0], "nd": [1, 2], "nv": [0],
 }
 
 
 def _default_orders(model_class: type) -> Dict[str, List[int]]:
-    """DEFAULT_GRID's values of the orders ``model_class`` has; an order it does not name (one with a
-    default, added to a model later) takes the model's default in :func:`bonl.grid`."""
-    return {name: DEFAULT_GRID[name] for name in model_class.ORDERS if name in DEFAULT_GRID}
+    """DEFAULT_GRID's values of the orders ``model_class`` has; an order it does not name takes the
+    model's value at the paper's orders (``PAPER_ORDERS``: its default, or its minimum where the paper
+    has none, as the plays' count np, 0 or 1 by model), so that a model's new order needs no entry."""
+    paper = dict(zip(model_class.ORDERS, model_class.PAPER_ORDERS))
+    return {name: DEFAULT_GRID.get(name, [paper[name]]) for name in model_class.ORDERS}
 
 
 def _model_class(name: str) -> type:

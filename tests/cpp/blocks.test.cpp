@@ -478,7 +478,7 @@ TEST_CASE("OutputPolynomial: invert", "[blocks][output]") {
 
 // na = 1, a = [-0.5], nb = 1, b = [1, 0.5], nk = 2: x(k) = 0.5 x(k-1) + w(k-2) + 0.5 w(k-3).
 // For a unit impulse w(0) = 1: x = 0, 0, 1, 0.5 + 0.5 = 1, 0.5, 0.25, 0.125, 0.0625 (exact in binary).
-TEST_CASE("PlayOperators: each play is min(max(P(k-1), v - r), v + r) from rest; the data rule", "[blocks][play]") {
+TEST_CASE("PlayOperators: each play is min(max(P(k-1), v - r), v + r) from rest, and the data rule", "[blocks][play]") {
   bonl::PlayOperators<double> plays(vec({0.1, 0.4, 1.0}));
   const Eigen::VectorXd v = bonl::signals::random_levels(300, 3, 1.2, 21);
   Eigen::Vector3d expected = Eigen::Vector3d::Zero();

@@ -104,7 +104,7 @@ def machine(compiler: str, context: dict) -> dict:
 
 
 def summary(flat: dict) -> str:
-    """The headline figures of a full run, for the pages that quote it (README.md, docs/performance.md,
+    """The headline figures of a full run, for the pages that quote it (docs/performance.md,
     between <!-- bench_summary --> markers): made from the flat results alone, so that a test can
     render it again from the committed bench/RESULTS.json."""
     models = list(dict.fromkeys(key.split("_update_fixed_double_")[0] for key in flat

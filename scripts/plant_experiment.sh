@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The paper's experiment's published figures: runs bonl_demo (as scripts/demo.sh does) and writes
 # docs/results/plant_experiment.json (every MSE and parameter) and plant_experiment_summary.md (the
-# README's table), then splices the table into the README between its markers.
+# README's table), then splices the table into README.md and docs/explanation/paper_experiment.md between its markers.
 # tests/python/test_published_figures.py recomputes the figures and checks both.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -16,8 +16,8 @@ mkdir -p docs/results
 step "run bonl_demo"
 ./build/demo/examples/demo/bonl_demo --json docs/results/plant_experiment.json \
   --markdown docs/results/plant_experiment_summary.md > /dev/null
-bonl_splice_summary plant_experiment_summary docs/results/plant_experiment_summary.md README.md
-step "wrote docs/results/plant_experiment.json and plant_experiment_summary.md, updated README.md"
+bonl_splice_summary plant_experiment_summary docs/results/plant_experiment_summary.md README.md docs/explanation/paper_experiment.md
+step "wrote docs/results/plant_experiment.json and plant_experiment_summary.md, updated README.md and docs/explanation/paper_experiment.md"
 
 # The same experiment with the joint angle as the output, without and with an integrator (docs/plant.md).
 # Needs `pip install .` (scripts/test.sh makes build/venv).

@@ -11,7 +11,7 @@
 // files (bonl JSON) and the simulated outputs (CSV) into --out, the table into --json, the chosen
 // structures with their scores into --selection (docs/results/measured_data.json, which a test
 // re-identifies) and the tables with the published figures beside them into --markdown
-// (docs/results/measured_data_summary.md, quoted by the README and docs/measured_data.md).
+// (docs/results/measured_data_summary.md, quoted by docs/measured_data.md).
 
 #include <bonl/bonl.hpp>
 #include <bonl/io.hpp>

@@ -78,7 +78,7 @@ TEST_CASE("the default experiment: records, end stops, and the paper's ranking",
   CHECK_THROWS_WITH(result.method(Method::EquationError), Catch::Matchers::Contains("equation_error was not run"));
   // The paper's ranking P-H-W < Hammerstein < ARX holds for the default method. With the paper's
   // own estimator, Hammerstein < ARX holds but its P-H-W does not beat its Hammerstein on this
-  // validation record (README, "The experiment": eq. (27) feeds the gap samples the output's
+  // validation record (docs/explanation/paper_experiment.md: eq. (27) feeds the gap samples the output's
   // increments), so only what holds is asserted for it, and the shortfall is printed.
   using bonl::PaperARX;
   using bonl::PaperHammerstein;

@@ -14,16 +14,17 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 QUOTES = [
     ("online_accuracy_summary", ROOT / "docs" / "results" / "online_accuracy_summary.md",
-     [ROOT / "README.md", ROOT / "docs" / "algorithm.md"]),
-    ("plant_experiment_summary", ROOT / "docs" / "results" / "plant_experiment_summary.md", [ROOT / "README.md"]),
+     [ROOT / "docs" / "explanation" / "estimation_methods.md", ROOT / "docs" / "algorithm.md"]),
+    ("plant_experiment_summary", ROOT / "docs" / "results" / "plant_experiment_summary.md",
+     [ROOT / "README.md", ROOT / "docs" / "explanation" / "paper_experiment.md"]),
     ("measured_data_summary", ROOT / "docs" / "results" / "measured_data_summary.md",
-     [ROOT / "README.md", ROOT / "docs" / "measured_data.md"]),
+     [ROOT / "docs" / "measured_data.md"]),
     ("tracking_summary", ROOT / "docs" / "results" / "tracking_summary.md",
-     [ROOT / "README.md", ROOT / "docs" / "control.md"]),
+     [ROOT / "docs" / "control.md"]),
     ("benchmarks_summary", ROOT / "docs" / "results" / "benchmarks_summary.md", [ROOT / "docs" / "benchmarks.md"]),
     ("joint_angle_summary", ROOT / "docs" / "results" / "joint_angle_summary.md", [ROOT / "docs" / "plant.md"]),
     ("bench_summary", ROOT / "docs" / "results" / "bench_summary.md",
-     [ROOT / "README.md", ROOT / "docs" / "performance.md"]),
+     [ROOT / "docs" / "performance.md"]),
 ]
 
 

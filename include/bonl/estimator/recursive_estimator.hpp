@@ -36,7 +36,7 @@ struct EstimatorOptions {
   /// every `internal_refresh` samples, not from the running estimate (see Estimator::update).
   Eigen::Index internal_refresh = 100;
 
-  // Numerical safeguards (see "Reliability" in the README and docs/reliability.md).
+  // Numerical safeguards (docs/reference/numerical_safeguards.md and docs/reliability.md).
   /// trace(P) is kept at or below trace_ceiling * trace(P(0)) = trace_ceiling * n * p0 by reducing
   /// the forgetting where it would grow P beyond that (no covariance wind-up under poor excitation).
   /// Must be >= 1; infinity turns it off (the paper's algorithm exactly as written). Unset, the

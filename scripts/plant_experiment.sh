@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The paper's experiment's published figures: runs bonl_demo (as scripts/demo.sh does) and writes
 # docs/results/plant_experiment.json (every MSE and parameter) and plant_experiment_summary.md (the
-# README's table), then splices the table into README.md and docs/explanation/paper_experiment.md between its markers.
+# README's table), and the sweep (docs/sweep.csv, docs/sweep.svg, docs/results/sweep_summary.md), then
+# splices the tables into README.md and docs/explanation/paper_experiment.md between their markers.
 # tests/python/test_published_figures.py recomputes the figures and checks both.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -18,6 +19,12 @@ step "run bonl_demo"
   --markdown docs/results/plant_experiment_summary.md > /dev/null
 bonl_splice_summary plant_experiment_summary docs/results/plant_experiment_summary.md README.md docs/explanation/paper_experiment.md
 step "wrote docs/results/plant_experiment.json and plant_experiment_summary.md, updated README.md and docs/explanation/paper_experiment.md"
+
+# The sweep of the pilot hysteresis and the pin backlash: the figure, its data and its table.
+step "run bonl_demo --sweep docs"
+./build/demo/examples/demo/bonl_demo --sweep docs --markdown docs/results/sweep_summary.md > /dev/null
+bonl_splice_summary sweep_summary docs/results/sweep_summary.md docs/explanation/paper_experiment.md
+step "wrote docs/sweep.csv, docs/sweep.svg and docs/results/sweep_summary.md, updated docs/explanation/paper_experiment.md"
 
 # The same experiment with the joint angle as the output, without and with an integrator (docs/plant.md).
 # Needs `pip install .` (scripts/test.sh makes build/venv).

@@ -40,7 +40,8 @@ const char* kUsage =
     "  --json FILE  {\"mse\": {model name: mse}, \"params\": {...}, \"methods\": {...},\n"
     "               \"online\": {\"output_error\": {model name: mse}, \"paper\": {...}}}\n"
     "  --csv FILE   time, input, measured and predicted validation velocities\n"
-    "  --markdown FILE  the validation MSE table of the README (docs/results/plant_experiment_summary.md)\n"
+    "  --markdown FILE  the validation MSE table of the README (docs/results/plant_experiment_summary.md);\n"
+    "               with --sweep, the sweep's table (docs/results/sweep_summary.md)\n"
     "  --sweep DIR  vary the pilot hysteresis (0-8%) and the pin backlash (0-20 mrad); writes\n"
     "               DIR/sweep.csv and DIR/sweep.svg (validation MSE of every model against each)\n"
     "  --control    instead: the tracking experiment (docs/control.md): a reference joint velocity tracked\n"
@@ -85,6 +86,12 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
+/// How much lower `mse` is than `other`'s, in whole percent ("25%"; "0%", never "-0%").
+std::string percent_lower(double mse, double other) {
+  const double percent = std::round(100.0 * (1.0 - mse / other));
+  return format("%.0f%%", percent == 0.0 ? 0.0 : percent);
+}
+
 void print_header(const char* first, const std::vector<Column>& cols, const char* pattern) {
   std::printf("%-10s", first);
   for (const Column& c : cols) std::printf(pattern, c.label.c_str());
@@ -120,7 +127,7 @@ void print_tables(const MethodResult& m) {
   std::printf("   (rad/s)^2\n");
   std::vector<std::string> lower, others, published;
   for (std::size_t i = 1; i < cols.size(); ++i) {
-    lower.push_back(format("%.0f%%", 100.0 * (1.0 - cols[0].scores->mse / cols[i].scores->mse)));
+    lower.push_back(percent_lower(cols[0].scores->mse, cols[i].scores->mse));
     others.push_back(cols[i].label + "'s");
     if (const auto score = experiment::published_score(cols[i].name)) {
       published.push_back(std::to_string(score->proposed_lower_percent) + "%");
@@ -180,6 +187,18 @@ void print_robustness(const PaperExperimentResult& result) {
     std::printf("%s method: %s < Hammerstein on %d/%zu, Hammerstein < ARX on %d/%zu, both on %d/%zu\n",
                 bonl::to_string(m.method), experiment::paper_label(bonl::PaperPseudoHammersteinWiener::kName).c_str(),
                 counts[0], n, counts[1], n, counts[2], n);
+    // A model the paper does not report, against the proposed model and Hammerstein.
+    for (const Column& c : columns(m)) {
+      if (experiment::published_score(c.name)) continue;
+      int below[2] = {0, 0};
+      for (std::size_t i = 0; i < n; ++i) {
+        below[0] += c.scores->robustness_mse[i] < proposed[i];
+        below[1] += c.scores->robustness_mse[i] < hammerstein[i];
+      }
+      std::printf("%s method: %s < %s on %d/%zu, %s < Hammerstein on %d/%zu\n", bonl::to_string(m.method),
+                  c.label.c_str(), experiment::paper_label(bonl::PaperPseudoHammersteinWiener::kName).c_str(), below[0],
+                  n, c.label.c_str(), below[1], n);
+    }
   }
 }
 
@@ -241,7 +260,14 @@ void write_json(const std::string& path, const PaperExperimentResult& result, bo
   if (!out) throw std::runtime_error("bonl_demo: cannot write " + path);
 }
 
-/// The README's table: validation MSE of each method, and how much lower the proposed model's is.
+/// "1st", "2nd", "3rd", "4th", ...
+std::string ordinal(std::size_t n) {
+  const char* suffix = n % 100 / 10 == 1 ? "th" : n % 10 == 1 ? "st" : n % 10 == 2 ? "nd" : n % 10 == 3 ? "rd" : "th";
+  return std::to_string(n) + suffix;
+}
+
+/// The README's table: validation MSE of each method, and how much lower the proposed model's is;
+/// then, for each model the paper does not report, where it ranks in each row and after which models.
 void write_markdown(const std::string& path, const PaperExperimentResult& result) {
   const MethodResult& ours = result.method(bonl::Method::OutputError);
   const std::vector<Column> header = columns(ours);
@@ -253,28 +279,53 @@ void write_markdown(const std::string& path, const PaperExperimentResult& result
   out << ' ' << header[0].label << " lower than " << others << " |\n|---|";
   for (std::size_t i = 0; i <= header.size(); ++i) out << "---|";
   out << '\n';
-  // The paper's row as it publishes it (its percentages are from unrounded values).
+  // The paper's row as it publishes it (its percentages are from unrounded values; "-" for a model
+  // it does not report).
   std::string percentages;
   out << "| paper (Table 2 of the paper, real excavator) |";
   for (std::size_t i = 0; i < header.size(); ++i) {
     const auto score = experiment::published_score(header[i].name);
     out << ' ' << (score ? format("%g", score->mse) : std::string()) << " |";
-    if (i > 0 && score) percentages += (percentages.empty() ? "" : " / ") + std::to_string(score->proposed_lower_percent) + "%";
+    if (i > 0) {
+      percentages += (percentages.empty() ? "" : " / ") + (score ? std::to_string(score->proposed_lower_percent) + "%" : "-");
+    }
   }
   out << ' ' << percentages << " |\n";
-  const auto row = [&](const std::string& name, const std::vector<Column>& cols, bool online) {
-    const auto mse = [online](const Column& c) { return online ? c.scores->online_mse : c.scores->mse; };
-    out << "| " << name << " |";
-    for (const Column& c : cols) out << ' ' << format("%.3g", mse(c)) << " |";
+  struct Row {
+    std::string name;  ///< the table's
+    std::string short_name;  ///< the sentence's
+    std::vector<Column> cols;
+    bool online;
+  };
+  const std::vector<Row> rows = {
+      {"bonl output_error, identify()", "with bonl's output_error identify()", header, false},
+      {"bonl output_error, online (one pass, no refinement)", "online", header, true},
+      {"bonl paper (eqs. 21-31, with the default trace ceiling)", "with the paper's method",
+       columns(result.method(bonl::Method::Paper)), false}};
+  const auto mse = [](const Column& c, bool online) { return online ? c.scores->online_mse : c.scores->mse; };
+  for (const Row& row : rows) {
+    out << "| " << row.name << " |";
+    for (const Column& c : row.cols) out << ' ' << format("%.3g", mse(c, row.online)) << " |";
     out << ' ';
-    for (std::size_t i = 1; i < cols.size(); ++i) {
-      out << (i > 1 ? " / " : "") << format("%.0f%%", 100 * (1 - mse(cols[0]) / mse(cols[i])));
+    for (std::size_t i = 1; i < row.cols.size(); ++i) {
+      out << (i > 1 ? " / " : "") << percent_lower(mse(row.cols[0], row.online), mse(row.cols[i], row.online));
     }
     out << " |\n";
-  };
-  row("bonl output_error, identify()", header, false);
-  row("bonl output_error, online (one pass, no refinement)", header, true);
-  row("bonl paper (eqs. 21-31, with the default trace ceiling)", columns(result.method(bonl::Method::Paper)), false);
+  }
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (experiment::published_score(header[i].name)) continue;
+    std::vector<std::string> places;
+    for (const Row& row : rows) {
+      std::vector<std::string> better;
+      for (const Column& c : row.cols) {
+        if (mse(c, row.online) < mse(row.cols[i], row.online)) better.push_back(c.label);
+      }
+      places.push_back(ordinal(better.size() + 1) + " " + row.short_name +
+                       (better.empty() ? "" : " (after " + join_words(better) + ")"));
+    }
+    out << '\n' << header[i].label << " (" << header[i].name << ", not in the paper) ranks, of " << header.size()
+        << ", " << join_words(places) << ".\n";
+  }
   if (!out) throw std::runtime_error("bonl_demo: cannot write " + path);
 }
 
@@ -292,7 +343,55 @@ void write_csv(const std::string& path, const experiment::Record& validation, co
   if (!out) throw std::runtime_error("bonl_demo: cannot write " + path);
 }
 
-int sweep(const std::string& dir) {
+/// The README's sweep table (output-error method, every second point of each sweep and both at
+/// zero): each model's validation MSE, how much lower P-H-W's is than each model that sees the
+/// valve's hysteresis differently (P-I-H, the plays before the linear block) or not at all
+/// (Hammerstein), and P-H-W's c; then c with both at zero for each method.
+template <class Point>
+void write_sweep_markdown(const std::string& path, const std::vector<Point>& points) {
+  using Proposed = bonl::PaperPseudoHammersteinWiener;
+  const std::vector<Column> header = columns(points.front().result.method(bonl::Method::OutputError));
+  std::ofstream out(path);
+  out << "| output_error: plant |";
+  for (const Column& c : header) out << ' ' << c.label << " |";
+  std::vector<std::size_t> compared;  // the columns P-H-W is compared with: unpublished ones and Hammerstein
+  for (std::size_t i = 1; i < header.size(); ++i) {
+    if (!experiment::published_score(header[i].name) || header[i].name == bonl::PaperHammerstein::kName) {
+      compared.push_back(i);
+    }
+  }
+  out << ' ' << header[0].label << " lower than ";
+  for (std::size_t j = 0; j < compared.size(); ++j) out << (j ? " / " : "") << header[compared[j]].label;
+  out << " | " << header[0].label << "'s c [rad/s] |\n|---|";
+  for (std::size_t i = 0; i < header.size() + 2; ++i) out << "---:|";
+  out << '\n';
+  std::string parameter;
+  std::size_t index = 0;
+  for (const Point& p : points) {
+    index = p.parameter == parameter ? index + 1 : 0;
+    parameter = p.parameter;
+    if (index % 2 != 0) continue;
+    const std::string plant = p.parameter == "pilot_hysteresis" ? "pilot hysteresis " + format("%g%%", 100 * p.value)
+                              : p.parameter == "joint_backlash" ? "pin backlash " + format("%g mrad", 1000 * p.value)
+                                                                : std::string("both zero");
+    const std::vector<Column> cols = columns(p.result.method(bonl::Method::OutputError));
+    out << "| " << plant << " |";
+    for (const Column& c : cols) out << ' ' << format("%.3g", c.scores->mse) << " |";
+    out << ' ';
+    for (std::size_t j = 0; j < compared.size(); ++j) {
+      out << (j ? " / " : "") << percent_lower(cols[0].scores->mse, cols[compared[j]].scores->mse);
+    }
+    out << " | " << format("%.2g", p.result.method(bonl::Method::OutputError).template get<Proposed>().model.c())
+        << " |\n";
+  }
+  const PaperExperimentResult& zero = points.back().result;
+  out << "\nWith both at zero the identified c is " << format("%.2g", zero.method(bonl::Method::OutputError).get<Proposed>().model.c())
+      << " rad/s with the output-error method and " << format("%.2g", zero.method(bonl::Method::Paper).get<Proposed>().model.c())
+      << " rad/s with the paper's.\n";
+  if (!out) throw std::runtime_error("bonl_demo: cannot write " + path);
+}
+
+int sweep(const std::string& dir, const std::string& markdown) {
   struct Point {
     std::string parameter;
     double value;
@@ -375,6 +474,10 @@ int sweep(const std::string& dir) {
               zero.method(bonl::Method::Paper).get<Proposed>().model.c(),
               std::sqrt((y.array() - y.mean()).square().mean()));
   std::printf("wrote %s/sweep.csv and %s/sweep.svg\n", dir.c_str(), dir.c_str());
+  if (!markdown.empty()) {
+    write_sweep_markdown(markdown, points);
+    std::printf("wrote %s\n", markdown.c_str());
+  }
   return 0;
 }
 
@@ -440,7 +543,7 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    if (!sweep_dir.empty()) return sweep(sweep_dir);
+    if (!sweep_dir.empty()) return sweep(sweep_dir, markdown);
     if (control) {
       const experiment::TrackingResult result = experiment::run_tracking_experiment();
       bonl_demo::print_tracking(result);

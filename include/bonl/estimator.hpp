@@ -15,4 +15,5 @@
 #include "estimator/recursive_estimator.hpp"
 #include "estimator/rls.hpp"
 #include "estimator/select.hpp"
+#include "estimator/structure_from_data.hpp"
 #include "estimator/wiener_hammerstein_start.hpp"

@@ -171,7 +171,8 @@ def format_online(result: Any) -> str:
 def format_robustness(result: Any) -> str:
     """The robustness table: validation MSE on the further trajectories, as ``bonl_demo`` prints it.
 
-    The counts check the paper's ranking: the proposed model below Hammerstein, Hammerstein below ARX.
+    The counts check the paper's ranking: the proposed model below Hammerstein, Hammerstein below ARX;
+    and place each model the paper does not report against the proposed model and Hammerstein.
 
     Parameters
     ----------
@@ -182,6 +183,8 @@ def format_robustness(result: Any) -> str:
     -------
     str
     """
+    from .experiment import published_score
+
     n = result.robustness_trajectories
     methods = {name: columns(entry) for name, entry in result.methods.items()}
     lines = [
@@ -202,6 +205,15 @@ def format_robustness(result: Any) -> str:
             % (method, proposed.label, sum(proposed_best), n, sum(h_over_arx), n,
                sum(a and b for a, b in zip(proposed_best, h_over_arx)), n)
         )
+        # A model the paper does not report, against the proposed model and Hammerstein.
+        for c in cols:
+            if published_score(c.name) is not None:
+                continue
+            lines.append(
+                "%s method: %s < %s on %d/%d, %s < Hammerstein on %d/%d"
+                % (method, c.label, proposed.label, sum(c.robustness_mse[i] < proposed.robustness_mse[i] for i in range(n)),
+                   n, c.label, sum(c.robustness_mse[i] < hammerstein[i] for i in range(n)), n)
+            )
     return "\n".join(lines) + "\n"
 
 

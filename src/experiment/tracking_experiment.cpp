@@ -253,18 +253,21 @@ TrackingResult run_tracking_experiment(const plant::Parameters& parameters, cons
     result.runs.push_back(track(parameters, result, reference, change, none, "PI"));
     identified.for_each([&](const auto& entry) {
       using Model = typename std::decay_t<decltype(entry)>::Model;
-      // Under the change: the P-H-W's fixed feedforward only, beside its adaptive one.
-      if (change && !std::is_same_v<Model, PaperPseudoHammersteinWiener>) return;
-      FixedFeedforward<Model> fixed{control::InverseModel<Model>(entry.model, inverse)};
-      result.runs.push_back(track(parameters, result, reference, change, fixed, Model::kName));
-      if constexpr (control::InverseModel<Model>::kHasBacklash) {
-        // Beside it, the backlash inverse's exact switch (band 0), for comparison (docs/control.md).
-        if (change || options.backlash_band_per_c == 0.0) return;
-        control::InverseOptions exact = inverse;
-        exact.backlash_band_per_c = 0.0;
-        FixedFeedforward<Model> switched{control::InverseModel<Model>(entry.model, exact)};
-        result.runs.push_back(
-            track(parameters, result, reference, false, switched, std::string(Model::kName) + " (exact switch)"));
+      // A model without an inverse (yet) has no feedforward. Under the change: the P-H-W's fixed
+      // feedforward only, beside its adaptive one.
+      if constexpr (control::has_inverse<Model>::value) {
+        if (change && !std::is_same_v<Model, PaperPseudoHammersteinWiener>) return;
+        FixedFeedforward<Model> fixed{control::InverseModel<Model>(entry.model, inverse)};
+        result.runs.push_back(track(parameters, result, reference, change, fixed, Model::kName));
+        if constexpr (control::InverseModel<Model>::kHasBacklash) {
+          // Beside it, the backlash inverse's exact switch (band 0), for comparison (docs/control.md).
+          if (change || options.backlash_band_per_c == 0.0) return;
+          control::InverseOptions exact = inverse;
+          exact.backlash_band_per_c = 0.0;
+          FixedFeedforward<Model> switched{control::InverseModel<Model>(entry.model, exact)};
+          result.runs.push_back(
+              track(parameters, result, reference, false, switched, std::string(Model::kName) + " (exact switch)"));
+        }
       }
     });
   }

@@ -8,7 +8,7 @@ import sys
 import pytest
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
-MODEL_KEYS = {"ARX", "Hammerstein", "HammersteinWiener", "PseudoHammersteinWiener"}
+MODEL_KEYS = {"ARX", "Hammerstein", "HammersteinWiener", "PrandtlIshlinskiiHammerstein", "PseudoHammersteinWiener"}
 
 
 def run_bonl(*args, cwd=None):

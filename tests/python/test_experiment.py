@@ -10,7 +10,7 @@ import bonl
 from bonl import experiment
 
 #: The experiment's models, by their one name: the classes of bonl.MODELS the paper covers.
-MODEL_KEYS = {"ARX", "Hammerstein", "HammersteinWiener", "PseudoHammersteinWiener"}
+MODEL_KEYS = {"ARX", "Hammerstein", "HammersteinWiener", "PrandtlIshlinskiiHammerstein", "PseudoHammersteinWiener"}
 
 
 def test_low_pass_and_differentiate_follow_plant_md():
@@ -68,7 +68,15 @@ def test_experiment_returns_both_methods_models_and_records(result):
             assert m.mse == e.method(method).mse[key] and m.online_mse == e.method(method).online_mse[key]
     # The README's numbers with bonl's estimator: P-H-W beats every other model.
     d = e.method("output_error").mse
-    assert d["PseudoHammersteinWiener"] < min(d["HammersteinWiener"], d["Hammerstein"], d["ARX"])
+    assert d["PseudoHammersteinWiener"] < min(v for k, v in d.items() if k != "PseudoHammersteinWiener")
+    # The plays' thresholds: the data rule over the identification input, i / (np + 1) of its half-range.
+    half_range = (e.identification.input.max() - e.identification.input.min()) / 2
+    for method in ("output_error", "paper"):
+        plays = e.method(method).models["PrandtlIshlinskiiHammerstein"]
+        np_ = len(plays.params["g"])
+        np.testing.assert_allclose(plays.params["thresholds"], half_range * np.arange(1, np_ + 1) / (np_ + 1), rtol=1e-15)
+        np.testing.assert_array_equal(plays.online_model.thresholds, plays.model.thresholds)
+        assert plays.label == "P-I-H"
     assert e.robustness_trajectories == 0 and all(m.robustness_mse == [] for m in e.method("paper").models.values())
     assert set(e.seconds) == {"plant", "identification", "robustness"}
     assert isinstance(e.parameters, bonl.plant.Parameters)
@@ -86,3 +94,4 @@ def test_published_scores_are_the_papers_table_2():
     assert experiment.published_score("PseudoHammersteinWiener") == (0.0289, 0)
     assert experiment.published_score("ARX") == (0.1136, 75)
     assert experiment.published_score("Wiener") is None
+    assert experiment.published_score("PrandtlIshlinskiiHammerstein") is None

@@ -22,17 +22,25 @@
 namespace bonl::experiment {
 
 /// The models of the paper's experiment, in the order of its equations (the paper's tables list
-/// them the other way round). Adding a model to the experiment is one entry here.
-using PaperModels = ModelList<PaperARX, PaperHammerstein, PaperHammersteinWiener, PaperPseudoHammersteinWiener>;
+/// them the other way round), and beside them the Prandtl-Ishlinskii Hammerstein model, which the
+/// paper does not have: input hysteresis as play operators, where P-H-W puts a backlash after the
+/// linear block. The proposed model, P-H-W, stays last (published_score, the tables' first column).
+/// Adding a model to the experiment is one entry here.
+using PaperModels = ModelList<PaperARX, PaperHammerstein, PaperHammersteinWiener, PrandtlIshlinskiiHammersteind,
+                              PaperPseudoHammersteinWiener>;
 
 /// The methods the experiment compares: bonl's default and the paper's (eqs. 21-31).
 inline constexpr std::array<Method, 2> kPaperMethods = {Method::OutputError, Method::Paper};
 
-/// The paper's order called `name` (na = 3, nb = 2, nk = 8, r = r1 = 3); std::invalid_argument for
-/// an order the paper does not give.
+/// The paper's order called `name` (na = 3, nb = 2, nk = 8, r = r1 = 3, ni = 0: the velocity has no
+/// integrator); std::invalid_argument for an order the experiment does not give. The paper has no
+/// play operators; for the Prandtl-Ishlinskii Hammerstein model the experiment takes np = 3, as many
+/// plays as the input polynomial has powers (r = 3), fixed before that model ran on the plant.
 Eigen::Index paper_order(const std::string& name);
 
 /// A model of type Model at the paper's orders, each looked up by its name in the model's description.
+/// What the model leaves to the data (the plays' thresholds) is its default here:
+/// identify_paper_models places it from the identification record (structure_from_data).
 template <class Model>
 Model paper_model() {
   std::array<Eigen::Index, Model::kDescription.orders.size()> orders{};
@@ -153,7 +161,10 @@ std::vector<plant::Command> robustness_commands(const plant::Parameters& paramet
 
 /// Every model of PaperModels identified on records.identification by `method` (identify() with the
 /// method's default settings and `refine_iterations`, and the online estimate alone) and validated
-/// on records.validation. Leaves the robustness scores empty.
+/// on records.validation. Each starts from paper_model with what it leaves to the data placed from
+/// the identification record (structure_from_data: the plays' thresholds spread over the input's
+/// half-range), so both methods and the online estimate use the same structure. Leaves the
+/// robustness scores empty.
 MethodResult identify_paper_models(const Records& records, Method method, int refine_iterations = 100);
 
 /// Adds to every model of `result` its validation MSE on `record` (robustness_mse).

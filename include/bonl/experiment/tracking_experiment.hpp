@@ -2,7 +2,8 @@
 // From model to controller on the simulated plant (docs/control.md, "Tracking on the plant"): the
 // dipper joint tracks a reference joint velocity under
 //   (a) a PI loop alone,
-//   (b) the PI loop plus the feedforward of each model of the paper's experiment (its inverse),
+//   (b) the PI loop plus the feedforward of each model of the paper's experiment that has an inverse
+//       (control::has_inverse; not yet the Prandtl-Ishlinskii Hammerstein model),
 //   (c) the PI loop plus the adaptive P-H-W feedforward (AdaptiveInverse), while the plant changes
 //       mid-run (the pilot hysteresis doubles, the oil's bulk modulus drops by 30%), beside the fixed
 //       P-H-W feedforward and the PI loop alone under the same change.
@@ -80,7 +81,7 @@ struct TrackingResult {
   Eigen::VectorXd reference;  ///< r(t_k) [rad/s]
   double proportional_gain = 0.0;  ///< the PI's Kc [V / (rad/s)]
   double integral_time = 0.0;      ///< the PI's tau_I [s]
-  /// PI, each model's feedforward (and the P-H-W's with the backlash inverse's exact switch, band 0);
+  /// PI, each invertible model's feedforward (and the P-H-W's with the backlash inverse's exact switch, band 0);
   /// then PI, P-H-W and P-H-W adaptive under the change.
   std::vector<TrackingRun> runs;
 

@@ -385,10 +385,12 @@ def run_paper_experiment(parameters: typing.Any = None, *, robustness: bool = Fa
     
     Identification record from the paper's multi-sine, validation record from a smooth random
     signal (each 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated); every model of
-    the experiment (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener) identified with the
-    paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3) by the output-error and the paper's methods
-    and validated by free-run simulation; also the online estimates alone (recursive estimator, one
-    pass, no refinement). The GIL is released during the computation.
+    the experiment (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, and beside them the
+    PrandtlIshlinskiiHammerstein, which the paper does not have) identified with the paper's orders
+    (na = 3, nb = 2, nk = 8, r = r1 = 3; np = 3 plays, their thresholds spread over the identification
+    input's half-range) by the output-error and the paper's methods and validated by free-run
+    simulation; also the online estimates alone (recursive estimator, one pass, no refinement). The
+    GIL is released during the computation.
     
     Parameters
     ----------

@@ -272,7 +272,8 @@ void bind_control(py::module_& m) {
 Per sample, given the reference output ``preview`` samples ahead, the command that makes the model
 follow it: the backlash inverse (P-H-W) or the output polynomial's inverse (H-W, Wiener), the linear
 block's inverse (exact where B is minimum phase, ZPETC where not), the input polynomial's inverse
-(Hammerstein, H-W, P-H-W). docs/control.md.
+(Hammerstein, H-W, P-H-W) or the input hysteresis' (Prandtl-Ishlinskii Hammerstein, its plays' memory
+followed). docs/control.md.
 
 Parameters
 ----------
@@ -286,7 +287,7 @@ backlash_band_per_c : float, default 0
     P-H-W: added to the band, times the model's c (1: a band of c).
 
 Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1, q_1 = 0, an input
-polynomial that is not monotone through 0).)doc");
+polynomial that is not monotone through 0, input hysteresis whose slope can take either sign near 0).)doc");
   def_inits(inverse, [](auto& cls, auto tag) { def_inverse_init<typename decltype(tag)::type>(cls); });
   inverse
       .def("step", &AnyInverse::step, py::arg("reference"), R"doc(The command u(k) for the reference ahead.

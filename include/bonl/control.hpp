@@ -1,8 +1,9 @@
 #pragma once
 // Inverse models for control (issue 20): per sample, the command that makes an identified model follow
 // a reference output. The blocks' inverses (backlash, output polynomial, linear block with ZPETC where B
-// is not minimum phase, two-segment input polynomial) and InverseModel<Model>, which composes them for
-// ARX, Hammerstein, H-W, P-H-W and Wiener; AdaptiveInverse<Model>, the online estimator and the inverse
+// is not minimum phase, two-segment input polynomial, Prandtl-Ishlinskii input hysteresis) and
+// InverseModel<Model>, which composes them for ARX, Hammerstein, H-W, P-H-W, Wiener and the
+// Prandtl-Ishlinskii Hammerstein model; AdaptiveInverse<Model>, the online estimator and the inverse
 // together, re-derived as the estimate changes. docs/control.md explains each.
 
 #include "control/adaptive_inverse.hpp"
@@ -12,3 +13,4 @@
 #include "control/inverse_status.hpp"
 #include "control/linear_inverse.hpp"
 #include "control/output_polynomial_inverse.hpp"
+#include "control/prandtl_ishlinskii_inverse.hpp"

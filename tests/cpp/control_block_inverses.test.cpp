@@ -147,3 +147,105 @@ TEST_CASE("ZPETC splits B into its stable and unstable zeros") {
   CHECK(near(inverse.stable_factor(), vec({1.0, -0.5}), 1e-12));
   CHECK(near(inverse.unstable_factor(), vec({1.0, -0.5, -3.0}), 1e-12));
 }
+
+namespace {
+/// The Prandtl-Ishlinskii input written out (the oracle): w = sum_l f_l u^l + sum_i g_i P_i with
+/// P_i = min(max(P_i, u - r_i), u + r_i) stepped in `state`.
+double hysteresis_by_hand(const Eigen::VectorXd& f, const Eigen::VectorXd& r, const Eigen::VectorXd& g,
+                          Eigen::VectorXd& state, double u) {
+  double w = 0.0;
+  for (Eigen::Index l = 0; l < f.size(); ++l) w += f[l] * std::pow(u, static_cast<double>(l));
+  for (Eigen::Index i = 0; i < r.size(); ++i) {
+    state[i] = std::min(std::max(state[i], u - r[i]), u + r[i]);
+    w += g[i] * state[i];
+  }
+  return w;
+}
+}  // namespace
+
+TEST_CASE("the Prandtl-Ishlinskii input's inverse gives the w asked for through many reversals") {
+  // w rises with u for every state (f' >= 0.15 on [-1, 1], the weights' negative sum -0.1 less).
+  const Eigen::VectorXd f = vec({0.02, 0.5, 0.1, -0.05});
+  const Eigen::VectorXd r = vec({0.1, 0.25, 0.5});
+  for (const Eigen::VectorXd& g : {vec({0.3, 0.2, 0.1}), vec({0.3, -0.1, 0.2})}) {
+    for (const double sign : {1.0, -1.0}) {  // -1: the whole block negated, w falls with u
+      INFO("g = " << g.transpose() << ", sign " << sign);
+      const bonl::PrandtlIshlinskiiInput<double> block(sign * f, r, sign * g);
+      PrandtlIshlinskiiInverse<double> inverse(block, -1.0, 1.0);
+      CHECK(inverse.direction() == static_cast<int>(sign));
+      CHECK(inverse.lower() == -1.0);
+      CHECK(inverse.upper() == 1.0);
+      // Targets: the w a wandering command gives from the oracle's memory (so every target is
+      // reachable); the inverse's command must give it from the same memory.
+      Eigen::VectorXd oracle = Eigen::VectorXd::Zero(r.size());
+      double worst_w = 0.0, worst_u = 0.0;
+      for (Eigen::Index k = 0; k < 3000; ++k) {
+        const double u_true = 0.85 * wavy(k) + 0.1 * std::sin(static_cast<double>(k) / 2.3);  // within +-0.96
+        Eigen::VectorXd probe = oracle;
+        const double w = hysteresis_by_hand(sign * f, r, sign * g, probe, u_true);
+        const auto command = inverse(w);
+        CHECK(command.status == InverseStatus::Exact);
+        const double given = hysteresis_by_hand(sign * f, r, sign * g, oracle, command.value);
+        CHECK(inverse.output(command.value) == Approx(given).margin(1e-14));
+        inverse.advance(command.value);
+        worst_w = std::max(worst_w, std::abs(given - w));
+        worst_u = std::max(worst_u, std::abs(command.value - u_true));  // the map is strictly monotone
+        CHECK(near(inverse.state(), oracle, 1e-14));
+      }
+      INFO("max |w(u) - w_d| = " << worst_w << ", max |u - u_true| = " << worst_u);
+      CHECK(worst_w <= 1e-14);
+      CHECK(worst_u <= 1e-12);
+    }
+  }
+}
+
+TEST_CASE("the Prandtl-Ishlinskii input's inverse saturates at the range's ends, reported") {
+  const bonl::PrandtlIshlinskiiInput<double> block(vec({0.0, 0.5}), vec({0.2}), vec({0.3}));
+  PrandtlIshlinskiiInverse<double> inverse(block, -1.0, 2.0);
+  // From rest: u = 2 gives 0.5 * 2 + 0.3 * 1.8 = 1.54, u = -1 gives -0.5 - 0.3 * 0.8 = -0.74.
+  CHECK(inverse(1.6).status == InverseStatus::Saturated);
+  CHECK(inverse(1.6).value == 2.0);
+  CHECK(inverse(1.5).status == InverseStatus::Exact);
+  CHECK(inverse(-0.8).status == InverseStatus::Saturated);
+  CHECK(inverse(-0.8).value == -1.0);
+  // Inside the play's gap from rest (|u| <= 0.2) only the linear term moves w.
+  CHECK(inverse(0.05).value == Approx(0.1).epsilon(1e-14));
+  // The memory moves the map: after u = 2 the play is at 1.8, and u = 1.9 (inside its gap) gives
+  // 0.95 + 0.3 * 1.8 = 1.49 (from rest it would give 1.46).
+  inverse.advance(2.0);
+  CHECK(inverse.state()[0] == Approx(1.8));
+  CHECK(inverse(1.49).value == Approx(1.9).epsilon(1e-14));
+  inverse.reset();
+  CHECK(inverse.state()[0] == 0.0);
+}
+
+TEST_CASE("the Prandtl-Ishlinskii input's inverse keeps to where w is monotone for every state") {
+  // f' = 0.04 + 0.02 u - 0.015 u^2 (the paper_orders known system) is negative beyond its roots
+  // (0.02 -+ sqrt(0.0028)) / 0.03; the play's weight is positive, so f' is the least slope.
+  const bonl::PrandtlIshlinskiiInput<double> block(vec({0.001, 0.04, 0.01, -0.005}), vec({0.4}), vec({0.03}));
+  const PrandtlIshlinskiiInverse<double> inverse(block, -3.0, 3.0);
+  CHECK(inverse.upper() == Approx((0.02 + std::sqrt(0.0028)) / 0.03).epsilon(1e-9));
+  CHECK(inverse.lower() == Approx((0.02 - std::sqrt(0.0028)) / 0.03).epsilon(1e-9));
+  CHECK(inverse(1.0).status == InverseStatus::Saturated);
+  CHECK(inverse(1.0).value == inverse.upper());
+  // A negative weight larger than f' near 0 leaves a slope of either sign: no inverse.
+  CHECK_THROWS_WITH(PrandtlIshlinskiiInverse<double>(
+                        bonl::PrandtlIshlinskiiInput<double>(vec({0.0, 0.1}), vec({0.2, 0.5}), vec({0.3, -0.2})),
+                        -1.0, 1.0),
+                    Catch::Contains("not monotone in u near the operating point for every state of the plays"));
+  // w = u^2 + 0.1 play: rises on one side of 0 and falls on the other.
+  CHECK_THROWS_WITH(PrandtlIshlinskiiInverse<double>(
+                        bonl::PrandtlIshlinskiiInput<double>(vec({0.0, 0.0, 1.0}), vec({0.2}), vec({0.1})), -1.0,
+                        1.0),
+                    Catch::Contains("not monotone in u"));
+  CHECK_THROWS_WITH(PrandtlIshlinskiiInverse<double>(
+                        bonl::PrandtlIshlinskiiInput<double>(vec({0.5, 0.0}), vec({0.2}), vec({0.0})), -1.0, 1.0),
+                    Catch::Contains("w does not change with u over the command range"));
+  CHECK_THROWS_WITH(PrandtlIshlinskiiInverse<double>(block, 0.5, 1.0), Catch::Contains("contain the operating point"));
+  // Only plays (f = 0) with positive weights: flat inside the gap, still an inverse (the classic PI operator).
+  PrandtlIshlinskiiInverse<double> plays_only(
+      bonl::PrandtlIshlinskiiInput<double>(vec({0.0, 0.0}), vec({0.1, 0.3}), vec({1.0, 0.5})), -1.0, 1.0);
+  const auto up = plays_only(0.5);  // 1.0 (u - 0.1) + 0.5 (u - 0.3) = 0.5 at u = 0.5
+  CHECK(up.status == InverseStatus::Exact);
+  CHECK(up.value == Approx(0.5).epsilon(1e-14));
+}

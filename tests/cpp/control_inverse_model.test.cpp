@@ -86,6 +86,7 @@ TEST_CASE("every model follows a reachable reference to 1e-9 through its inverse
     check_exact(known_system<bonl::Hammersteind>(set), u_true, range(-1.0, 1.0));
     check_exact(known_system<bonl::HammersteinWienerd>(set), u_true, range(-1.0, 1.0));
     check_exact(known_system<bonl::Wienerd>(set), u_true, {});
+    check_exact(known_system<bonl::PrandtlIshlinskiiHammersteind>(set), u_true, range(-1.0, 1.0));
   }
   // P-H-W: with band 0 and a command reaching the upper and lower edges (the model's holds included).
   // From rest the model's x lies inside the gap and the reference's first rise throws the inverse's x
@@ -306,4 +307,102 @@ TEST_CASE("a reference that overflows the arithmetic is refused and changes noth
   wiener.set_q(vec({1.0, 4.9406564584124654e-324, 0.0}));  // a monotone branch reaching beyond 1e308
   check(wiener, {});
   check(known_system<bonl::ARXd>("small"), {});
+}
+
+namespace {
+/// A Prandtl-Ishlinskii Hammerstein model with the small known system's linear block, a cubic
+/// (f' >= 0.15 on [-1, 1]) and three plays of positive weights; `sign` -1 negates the input block
+/// (w then falls with u).
+bonl::PrandtlIshlinskiiHammersteind hysteretic_valve(double sign = 1.0) {
+  bonl::PrandtlIshlinskiiHammersteind model(2, 1, 2, 3, 3);
+  const auto small = known_system<bonl::PrandtlIshlinskiiHammersteind>("small");
+  model.set_a(small.a());
+  model.set_b(small.b());
+  model.set_f(sign * vec({0.02, 0.5, 0.1, -0.05}));
+  model.set_thresholds(vec({0.1, 0.25, 0.5}));
+  model.set_g(sign * vec({0.3, 0.2, 0.1}));
+  return model;
+}
+
+/// A command that reverses every few samples on top of a slow swing (within about +-0.8): minor
+/// loops inside major ones, so the plays' memory decides w.
+Eigen::VectorXd reversing_command(Eigen::Index n) {
+  Eigen::VectorXd u = smooth_command(n, 0.1, 0.45);
+  for (Eigen::Index k = 0; k < n; ++k) u[k] += 0.15 * std::sin(2 * 3.141592653589793 * static_cast<double>(k) / 13.0);
+  return u;
+}
+}  // namespace
+
+TEST_CASE("the Prandtl-Ishlinskii Hammerstein inverse follows a reference that reverses many times") {
+  const Eigen::VectorXd u_true = reversing_command(3000);
+  Eigen::Index reversals = 0;
+  for (Eigen::Index k = 2; k < u_true.size(); ++k) {
+    reversals += (u_true[k] - u_true[k - 1]) * (u_true[k - 1] - u_true[k - 2]) < 0.0 ? 1 : 0;
+  }
+  CHECK(reversals >= 400);
+  for (const double sign : {1.0, -1.0}) {
+    INFO("sign " << sign);
+    const auto model = hysteretic_valve(sign);
+    check_exact(model, u_true, range(-1.0, 1.0));
+    // The map is strictly monotone, so the inverse recovers the command that made the reference.
+    const auto run = InverseModel<bonl::PrandtlIshlinskiiHammersteind>(model, range(-1.0, 1.0)).commands(model.simulate(u_true));
+    const Eigen::Index n = u_true.size() - model.nk();
+    const double worst = (run.command.head(n) - u_true.head(n)).cwiseAbs().maxCoeff();
+    INFO("max |u - u_true| = " << worst);
+    CHECK(worst <= 1e-9);
+  }
+}
+
+TEST_CASE("the Prandtl-Ishlinskii Hammerstein inverse saturates beyond reach and stays on the reference") {
+  // Three times what [-1, 1] reaches: saturated commands at the range's ends, reported; the model is
+  // on the reference nk samples after every Exact command and off it after every Saturated one (the
+  // linear block's inverse and the plays follow the commands actually given: no wind-up).
+  const auto model = hysteretic_valve();
+  const Eigen::VectorXd reference = 3.0 * model.simulate(reversing_command(2000));
+  const auto run = InverseModel<bonl::PrandtlIshlinskiiHammersteind>(model, range(-1.0, 1.0)).commands(reference);
+  const Eigen::VectorXd y = model.simulate(run.command);
+  Eigen::Index saturated = 0, exact = 0;
+  for (Eigen::Index k = 0; k + model.nk() < reference.size(); ++k) {
+    const InverseStatus status = run.status[static_cast<std::size_t>(k)];
+    CHECK((status == InverseStatus::Exact || status == InverseStatus::Saturated));
+    const bool on_reference = std::abs(y[k + model.nk()] - reference[k + model.nk()]) <= 1e-9;
+    CHECK(on_reference == (status == InverseStatus::Exact));
+    if (status == InverseStatus::Saturated) {
+      CHECK(std::abs(run.command[k]) == 1.0);
+      ++saturated;
+    } else {
+      ++exact;
+    }
+  }
+  CHECK(saturated >= 100);
+  CHECK(exact >= 100);
+}
+
+TEST_CASE("a re-derived Prandtl-Ishlinskii Hammerstein inverse takes over the plays' memory") {
+  const auto model = hysteretic_valve();
+  const Eigen::VectorXd reference = model.simulate(reversing_command(600));
+  InverseModel<bonl::PrandtlIshlinskiiHammersteind> old_inverse(model, range(-1.0, 1.0));
+  for (Eigen::Index k = 0; k < 300; ++k) old_inverse.step(reference[k + model.nk()]);
+  InverseModel<bonl::PrandtlIshlinskiiHammersteind> continued(model, range(-1.0, 1.0));
+  continued.continue_from(old_inverse);
+  InverseModel<bonl::PrandtlIshlinskiiHammersteind> from_rest(model, range(-1.0, 1.0));
+  Eigen::Index differ = 0;
+  for (Eigen::Index k = 300; k + model.nk() < reference.size(); ++k) {
+    const double r = reference[k + model.nk()];
+    const double expected = old_inverse.step(r).value;
+    CHECK(continued.step(r).value == expected);
+    differ += from_rest.step(r).value != expected ? 1 : 0;
+  }
+  CHECK(differ > 0);
+}
+
+TEST_CASE("a Prandtl-Ishlinskii Hammerstein model without an inverse is refused with a clear message") {
+  auto model = hysteretic_valve();
+  model.set_g(vec({0.3, -0.6, 0.1}));  // f'(0) = 0.5 < 0.6: with the second play moving alone, w falls
+  CHECK_THROWS_WITH(InverseModel<bonl::PrandtlIshlinskiiHammersteind>(model, range(-1.0, 1.0)),
+                    Catch::Contains("the Prandtl-Ishlinskii input has no inverse: w = f(u) + sum g_i play_i is not "
+                                    "monotone in u near the operating point"));
+  CHECK_THROWS_WITH(InverseModel<bonl::PrandtlIshlinskiiHammersteind>(hysteretic_valve()),
+                    Catch::Contains("needs a finite command range"));
+  STATIC_REQUIRE(bonl::control::has_inverse<bonl::PrandtlIshlinskiiHammersteind>::value);
 }

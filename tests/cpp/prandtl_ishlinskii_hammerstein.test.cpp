@@ -11,11 +11,11 @@
 // - The online output_error estimator converges on the known system.
 // - A simulation after a measured past sets the plays' memory from the past input.
 // - Bad orders and bad thresholds are refused with a message and leave the model as it was; the
-//   model file keeps the thresholds; there is no inverse for control.
+//   model file keeps the thresholds. Its inverse for control is tested in control_inverse_model and
+//   control_block_inverses.
 
 #include "test_support.hpp"
 
-#include <bonl/control.hpp>
 #include <bonl/io.hpp>
 
 #include <algorithm>
@@ -226,7 +226,6 @@ TEST_CASE("the Prandtl-Ishlinskii Hammerstein model refuses bad orders and thres
   CHECK_THROWS_WITH(model.set_b(vec({2.0, 0.4})), Catch::Matchers::Contains("b[0] (b_0) must be 1"));
   CHECK(model.thresholds() == before.thresholds());
   CHECK(model.theta() == before.theta());
-  STATIC_REQUIRE_FALSE(bonl::control::has_inverse<Model>::value);
 }
 
 TEST_CASE("a Prandtl-Ishlinskii Hammerstein model file keeps the thresholds and refuses bad ones",

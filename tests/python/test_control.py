@@ -52,7 +52,8 @@ def test_zpetc_against_lfilter_and_its_zero_phase_response():
     np.testing.assert_allclose(y[3:-5], filtered[4:-4], rtol=0, atol=1e-10)
 
 
-@pytest.mark.parametrize("name", ["Hammerstein", "HammersteinWiener", "PseudoHammersteinWiener", "Wiener"])
+@pytest.mark.parametrize("name", ["Hammerstein", "HammersteinWiener", "PseudoHammersteinWiener", "Wiener",
+                                  "PrandtlIshlinskiiHammerstein"])
 def test_block_models_follow_a_reachable_reference(name):
     model = SMALL[name]
     r = model.simulate(smooth_command(1500))

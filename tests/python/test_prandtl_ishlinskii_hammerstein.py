@@ -2,7 +2,9 @@
 tests/cpp/prandtl_ishlinskii_hammerstein.test.cpp): the free run against the plays and the difference
 equation written out in numpy; identify through Python with the thresholds given by name, recovering
 the known system on a fresh input of a larger amplitude; the online estimator; the model file keeps
-the thresholds; bad thresholds refused with a ValueError and the model unchanged; the inverse refused."""
+the thresholds; bad thresholds refused with a ValueError and the model unchanged; the inverse for control
+follows a reference that reverses many times (the model's own simulation is the oracle) and refuses
+input hysteresis that is not monotone."""
 
 import numpy as np
 import pytest
@@ -77,7 +79,30 @@ def test_bad_thresholds_are_refused_and_the_model_kept(bad, message):
         bonl.PrandtlIshlinskiiHammerstein(2, 1, 2, 2, 0)
 
 
-def test_the_inverse_is_refused_with_a_value_error():
-    truth = known_models("small")["PrandtlIshlinskiiHammerstein"]
-    with pytest.raises(ValueError, match="PrandtlIshlinskiiHammerstein model has no inverse"):
-        bonl.control.InverseModel(truth, command_min=-1.0, command_max=1.0)
+def test_the_inverse_follows_a_reference_that_reverses_many_times():
+    truth = known_models("small")["PrandtlIshlinskiiHammerstein"]  # weights of either sign
+    k = np.arange(2000, dtype=float)
+    u = np.where(k < 100, k / 100, 1.0) * (0.2 + 0.4 * np.sin(2 * np.pi * k / 250) + 0.15 * np.sin(2 * np.pi * k / 13))
+    r = truth.simulate(u)
+    inverse = bonl.control.InverseModel(truth, command_min=-1.0, command_max=1.0)
+    run = inverse.commands(r)
+    assert not run.status[:-truth.nk].any()
+    np.testing.assert_allclose(truth.simulate(run.command)[truth.nk:], r[truth.nk:], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(run.command[:-truth.nk], u[:-truth.nk], rtol=0, atol=1e-9)
+    # step by step, the plays' memory carried from sample to sample, as the whole run
+    steps = [inverse.step(r[min(j + truth.nk, len(r) - 1)]).value for j in range(300)]
+    np.testing.assert_array_equal(steps, run.command[:300])
+    # beyond reach: the range's ends, reported
+    run = inverse.commands(3.0 * r)
+    saturated = (run.status & int(bonl.control.InverseStatus.saturated)) != 0
+    assert saturated.any()
+    np.testing.assert_array_equal(np.abs(run.command[saturated]), 1.0)
+
+
+def test_input_hysteresis_that_is_not_monotone_has_no_inverse():
+    model = known_models("small")["PrandtlIshlinskiiHammerstein"]
+    model.g = [0.3, -0.6]  # f'(0) = 0.5: with the second play moving alone, w falls with u
+    with pytest.raises(ValueError, match="not monotone in u near the operating point"):
+        bonl.control.InverseModel(model, command_min=-1.0, command_max=1.0)
+    with pytest.raises(ValueError, match="not monotone in u near the operating point"):
+        bonl.control.AdaptiveInverse(model, command_min=-1.0, command_max=1.0)

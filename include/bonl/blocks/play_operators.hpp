@@ -80,6 +80,14 @@ class PlayOperators {
 
   /// Back to rest: every play at 0.
   void reset() noexcept { m_state.setZero(); }
+  /// Takes over `other`'s outputs (their memory) where it has as many plays; else back to rest.
+  void continue_from(const PlayOperators& other) noexcept {
+    if (other.m_state.size() == m_state.size()) {
+      m_state = other.m_state;
+    } else {
+      m_state.setZero();
+    }
+  }
 
   /// Steps every play with the input v(k); returns their outputs.
   const Vector& step(Scalar v) noexcept {

@@ -20,6 +20,7 @@
 #include <limits>
 #include <string>
 
+#include "../blocks/two_segment_polynomial.hpp"
 #include "../detail/validate.hpp"
 #include "detail/polynomial_branch.hpp"
 #include "inverse_status.hpp"
@@ -59,6 +60,11 @@ class InputPolynomialInverse {
     m_direction = (rise_positive + rise_negative) > Scalar(0) ? Scalar(1) : Scalar(-1);
   }
 
+  /// The block's f and p (TwoSegmentPolynomial) and the command range, as above.
+  template <int R>
+  InputPolynomialInverse(const TwoSegmentPolynomial<Scalar, R>& block, Scalar u_min, Scalar u_max)
+      : InputPolynomialInverse(block.f(), block.p(), u_min, u_max) {}
+
   /// The command for w: {u, status}. Exact when f(u) (u >= 0) or g(u) (u < 0) equals w to rounding.
   InverseStep<Scalar> operator()(Scalar w) const noexcept {
     const Scalar s = m_direction;
@@ -80,6 +86,14 @@ class InputPolynomialInverse {
     if (s * w < s * at_lo && s * w < s * m_f[0]) return {m_lo, InverseStatus::Saturated};
     return {Scalar(0), InverseStatus::DeadBand};
   }
+
+  /// The w the command u gives (TwoSegmentPolynomial::evaluate's arithmetic).
+  Scalar output(Scalar u) const noexcept { return detail::polynomial(u < Scalar(0) ? m_g : m_f, u); }
+  /// The polynomial has no memory: nothing to advance, reset or take over (InverseModel calls these
+  /// on every input block's inverse).
+  void advance(Scalar /*u*/) noexcept {}
+  void reset() noexcept {}
+  void continue_from(const InputPolynomialInverse& /*previous*/) noexcept {}
 
   /// The monotone branches the inverse uses: commands [lower(), upper()] (the command range, or
   /// nearer where a side stops being monotone).

@@ -5,14 +5,18 @@
 //   reference r(k+nk) - y0
 //     -> the backlash inverse (P-H-W) or the output polynomial's inverse (H-W, Wiener): x_d(k+nk)
 //     -> the linear block's inverse (exact, or ZPETC): w(k)
-//     -> the input polynomial's inverse (Hammerstein, H-W, P-H-W; ARX and Wiener: w = u): u(k) - u0,
-// each reporting what it could not do (InverseStatus). The linear block's inverse runs on the w the
-// command actually gives, so after a saturated or dead-band command it aims at the reference from where
-// the model is. Allocation-free and noexcept per sample; all storage is made by the constructor.
+//     -> the input block's inverse: the input polynomial's (Hammerstein, H-W, P-H-W) or the
+//        Prandtl-Ishlinskii input's (its plays' memory included); ARX and Wiener: w = u: u(k) - u0,
+// each reporting what it could not do (InverseStatus). The input block's inverse is chosen by the type
+// of the block the model's input_block() returns (detail::input_inverse_of). The linear block's
+// inverse runs on the w the command actually gives, and the plays advance with that command, so after
+// a saturated or dead-band command the inverse aims at the reference from where the model is.
+// Allocation-free and noexcept per sample; all storage is made by the constructor.
 //
 // With everything reachable (Exact on every sample), a minimum-phase B and the model started from rest
 // together with the inverse, model.simulate(commands(r)) reproduces r(k) for k >= nk to rounding (the
-// P-H-W with band 0; with a band, except within the band after each reversal). r(0..nk-1) are the
+// P-H-W with band 0; with a band, except within the band after each reversal; the Prandtl-Ishlinskii
+// Hammerstein model through any number of reversals, its plays' memory followed). r(0..nk-1) are the
 // model's response to its rest, which no command can change.
 
 #include <Eigen/Core>
@@ -24,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "../blocks/prandtl_ishlinskii_input.hpp"
 #include "../blocks/two_segment_polynomial.hpp"
 #include "../detail/validate.hpp"
 #include "../models.hpp"
@@ -32,6 +37,7 @@
 #include "inverse_status.hpp"
 #include "linear_inverse.hpp"
 #include "output_polynomial_inverse.hpp"
+#include "prandtl_ishlinskii_inverse.hpp"
 
 namespace bonl::control {
 
@@ -73,6 +79,33 @@ struct has_backlash<M, std::void_t<decltype(std::declval<const M&>().backlash())
 }  // namespace detail
 
 namespace detail {
+/// The inverse of an input block, by the block's type: what InverseModel uses for the block the
+/// model's input_block() returns. Each inverse is built from (block, u_min, u_max) and has
+/// operator()(w), output(u), advance(u), reset() and continue_from(previous).
+template <class Block>
+struct input_inverse_of {
+  static_assert(sizeof(Block) == 0, "bonl::control: no inverse is written for this input block type");
+};
+template <typename Scalar, int R>
+struct input_inverse_of<TwoSegmentPolynomial<Scalar, R>> {
+  using type = InputPolynomialInverse<Scalar>;
+};
+template <typename Scalar, int R, int Np>
+struct input_inverse_of<PrandtlIshlinskiiInput<Scalar, R, Np>> {
+  using type = PrandtlIshlinskiiInverse<Scalar>;
+};
+/// The model's input block's inverse; int for a model without an input block.
+template <class Model, bool HasInputBlock>
+struct model_input_inverse {
+  using type = int;
+};
+template <class Model>
+struct model_input_inverse<Model, true> {
+  using type = typename input_inverse_of<decltype(std::declval<const Model&>().input_block())>::type;
+};
+}  // namespace detail
+
+namespace detail {
 /// A model says it has no inverse (yet) with static constexpr bool kInvertible = false.
 template <class M, class = void>
 struct declared_invertible : std::true_type {};
@@ -97,13 +130,14 @@ class InverseModel {
  public:
   using Scalar = typename Model::Scalar;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  static constexpr bool kHasInputPolynomial = detail::has_input_block<Model>::value;
+  static constexpr bool kHasInputBlock = detail::has_input_block<Model>::value;
   static constexpr bool kHasOutputPolynomial = detail::has_output_block<Model>::value;
   static constexpr bool kHasBacklash = detail::has_backlash<Model>::value;
 
   /// Throws std::invalid_argument where the model has no inverse (b_0 = 0, a zero of B at z = 1,
-  /// q_1 = 0, an input polynomial not monotone through 0 or constant), for a command range that is
-  /// not finite (with an input polynomial) or does not contain u0, or a band < 0.
+  /// q_1 = 0, an input polynomial not monotone through 0 or constant, input hysteresis whose slope
+  /// can take either sign near 0), for a command range that is not finite (with an input block) or
+  /// does not contain u0, or a band < 0.
   explicit InverseModel(const Model& model, const InverseOptions& options = {})
       : m_linear(bonl::detail::with_integrators(model.a(), model.ni()), model.b(), model.nk()),
         m_u0(static_cast<Scalar>(model.u0())),
@@ -120,10 +154,6 @@ class InverseModel {
                               bonl::detail::format_number(static_cast<double>(m_u0)) + ", got [" +
                               bonl::detail::format_number(static_cast<double>(m_command_min)) + ", " +
                               bonl::detail::format_number(static_cast<double>(m_command_max)) + "]");
-    if constexpr (kHasInputPolynomial) {
-      m_f = model.f();
-      m_p = model.p();
-    }
   }
 
   /// The reference the step at sample k takes: r(k + nk), ..., r(k + preview()).
@@ -139,14 +169,17 @@ class InverseModel {
   /// Back to rest, as the model's free run starts.
   void reset() noexcept {
     m_linear.reset();
+    if constexpr (kHasInputBlock) m_input.reset();
     if constexpr (kHasBacklash) m_backlash.reset();
   }
 
   /// Goes on from where `previous` (an inverse of another model of the same type, e.g. an earlier
-  /// estimate) is, instead of from rest: its linear block's stored past and its backlash's direction
-  /// (LinearInverse::continue_from). What AdaptiveInverse does when it re-derives the inverse.
+  /// estimate) is, instead of from rest: its linear block's stored past (LinearInverse::continue_from),
+  /// its plays' memory and its backlash's direction. What AdaptiveInverse does when it re-derives the
+  /// inverse.
   void continue_from(const InverseModel& previous) noexcept {
     m_linear.continue_from(previous.m_linear);
+    if constexpr (kHasInputBlock) m_input.continue_from(previous.m_input);
     if constexpr (kHasBacklash) m_backlash.continue_from(previous.m_backlash.state());
   }
 
@@ -180,17 +213,18 @@ class InverseModel {
     if (!std::isfinite(w_desired)) return {nan, InverseStatus::RejectedOverflow};
     Scalar u = Scalar(0);
     Scalar w = Scalar(0);
-    if constexpr (kHasInputPolynomial) {
+    if constexpr (kHasInputBlock) {
       const InverseStep<Scalar> command = m_input(w_desired);
       u = command.value;
       status |= command.status;
-      w = TwoSegmentPolynomial<Scalar>::evaluate(m_f, m_p, u);
+      w = m_input.output(u);
     } else {
       u = std::min(std::max(w_desired, m_command_min - m_u0), m_command_max - m_u0);
       if (u != w_desired) status |= InverseStatus::Saturated;
       w = u;
     }
     if (!m_linear.commit(m_window[0], w)) return {nan, InverseStatus::RejectedOverflow};
+    if constexpr (kHasInputBlock) m_input.advance(u);  // the plays' memory, after the commit succeeded
     if constexpr (kHasBacklash) m_backlash.step(reference[0] - m_y0);
     return {u + m_u0, status};
   }
@@ -227,17 +261,17 @@ class InverseModel {
   }
 
  private:
-  using InputInverse = std::conditional_t<kHasInputPolynomial, InputPolynomialInverse<Scalar>, int>;
+  using InputInverse = typename detail::model_input_inverse<Model, kHasInputBlock>::type;
   using OutputInverse = std::conditional_t<kHasOutputPolynomial, OutputPolynomialInverse<Scalar>, int>;
   using BacklashInverseType = std::conditional_t<kHasBacklash, BacklashInverse<Scalar>, int>;
 
   static InputInverse make_input(const Model& model, Scalar low, Scalar high) {
-    if constexpr (kHasInputPolynomial) {
+    if constexpr (kHasInputBlock) {
       bonl::detail::require(std::isfinite(low) && std::isfinite(high),
                             std::string("the inverse of a ") + Model::kName +
                                 " model needs a finite command range: set InverseOptions::command_min and "
                                 "command_max, or the model's input range (identify() records it)");
-      return InputPolynomialInverse<Scalar>(model.f(), model.p(), low, high);
+      return InputInverse(model.input_block(), low, high);
     } else {
       (void)model, (void)low, (void)high;
       return 0;
@@ -274,7 +308,6 @@ class InverseModel {
   OutputInverse m_output;
   BacklashInverseType m_backlash;
   VectorX m_window;  // x_d(k+nk), ..., x_d(k+nk+s)
-  VectorX m_f, m_p;  // the input polynomial, as the model evaluates it
 };
 
 }  // namespace bonl::control

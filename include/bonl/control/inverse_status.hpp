@@ -10,7 +10,7 @@ namespace bonl::control {
 
 enum class InverseStatus : std::uint8_t {
   Exact = 0,                  ///< the command makes the model reach the reference (within rounding)
-  Saturated = 1,              ///< the command is at the end of its range (or of the input polynomial's
+  Saturated = 1,              ///< the command is at the end of its range (or of the input block's
                               ///< monotone branch) and gives less than the reference asks
   DeadBand = 2,               ///< the reference asks for a w between the input polynomial's two segments at
                               ///< u = 0 (f_0 and g_0), which no command reaches: the command is 0

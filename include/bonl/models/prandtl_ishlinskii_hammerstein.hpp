@@ -22,6 +22,7 @@
 
 #include "../blocks/linear_block.hpp"
 #include "../blocks/play_operators.hpp"
+#include "../blocks/prandtl_ishlinskii_input.hpp"
 #include "../detail/history.hpp"
 #include "../detail/integrators.hpp"
 #include "../detail/stability.hpp"
@@ -44,12 +45,11 @@ class PrandtlIshlinskiiHammerstein
   using Scalar = Scalar_;
   static constexpr int kNumParams = detail::add_sizes(kBasis, detail::add_sizes(Nb_, Na_));
   static constexpr bool kHasInternalVariables = true;
-  /// No inverse for control yet: the input block's inverse is not a polynomial's (Newton on a
-  /// monotone map) but that of a rate-independent operator with memory. For f = (0, f_1) and
-  /// positive weights it is the inverse PI operator (thresholds and weights transformed, Kuhnen
-  /// 2003), but with the polynomial terms and weights of either sign it is a search over the plays'
-  /// next states that control/inverse_model.hpp does not do.
-  static constexpr bool kInvertible = false;
+  /// The inverse for control (control/inverse_model.hpp) inverts input_block() with
+  /// control/prandtl_ishlinskii_inverse.hpp: for the plays' memory, a bracketing search for the
+  /// command over the clamps' breakpoints where w is monotone in u for every state of the plays (the
+  /// closed-form inverse PI operator, Kuhnen 2003, covers only f = (0, f_1) and positive weights).
+  static constexpr bool kInvertible = true;
   static constexpr const char* kName = "PrandtlIshlinskiiHammerstein";
   static constexpr ModelDescription<6, 5> kDescription{
       kName,
@@ -70,6 +70,7 @@ class PrandtlIshlinskiiHammerstein
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
   using Plays = PlayOperators<Scalar, Np_>;
+  using InputBlock = PrandtlIshlinskiiInput<Scalar, R_, Np_>;
   using Thresholds = typename Plays::Vector;
 
   /// The thresholds default to r_i = i / (np + 1) (in the units of u, from the operating point): set
@@ -108,6 +109,9 @@ class PrandtlIshlinskiiHammerstein
   }
 
   VectorX f() const { return m_theta.head(m_r + 1); }
+  /// The input hysteresis w = f(u) + g . plays[u], its plays at rest: what the free run steps and
+  /// the inverse for control (control/prandtl_ishlinskii_inverse.hpp) inverts.
+  InputBlock input_block() const { return InputBlock(f(), m_thresholds, g()); }
   const Thresholds& thresholds() const noexcept { return m_thresholds; }
   VectorX g() const { return m_theta.segment(m_r + 1, m_np); }
   /// b_0..b_nb; b_0 is 1 (the key-term normalisation).
@@ -174,15 +178,8 @@ class PrandtlIshlinskiiHammerstein
   /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
-    const VectorX fv = f();
-    const VectorX gv = g();
-    Plays plays(m_thresholds);
-    const auto input = [&fv, &gv, &plays](Scalar v) {
-      plays.step(v);
-      Scalar w = Scalar(0);
-      for (Eigen::Index l = fv.size() - 1; l >= 0; --l) w = w * v + fv[l];
-      return w + plays.output(gv);
-    };
+    InputBlock block = input_block();
+    const auto input = [&block](Scalar v) { return block.step(v); };
     return detail::free_run(this->linear_block(), u, y, input, detail::Identity{});
   }
 

@@ -130,7 +130,8 @@ class InverseModel:
     Per sample, given the reference output ``preview`` samples ahead, the command that makes the model
     follow it: the backlash inverse (P-H-W) or the output polynomial's inverse (H-W, Wiener), the linear
     block's inverse (exact where B is minimum phase, ZPETC where not), the input polynomial's inverse
-    (Hammerstein, H-W, P-H-W). docs/control.md.
+    (Hammerstein, H-W, P-H-W) or the input hysteresis' (Prandtl-Ishlinskii Hammerstein, its plays' memory
+    followed). docs/control.md.
     
     Parameters
     ----------
@@ -144,7 +145,7 @@ class InverseModel:
         P-H-W: added to the band, times the model's c (1: a band of c).
     
     Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1, q_1 = 0, an input
-    polynomial that is not monotone through 0).
+    polynomial that is not monotone through 0, input hysteresis whose slope can take either sign near 0).
     """
     @typing.overload
     def __init__(self, model: bonl._bonl.ARX, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
@@ -168,7 +169,7 @@ class InverseModel:
     def __init__(self, model: bonl._bonl.NonlinearFeedback, **kwargs) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, **kwargs) -> None:
+    def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
     def commands(self, reference: typing.Any) -> InverseRun:
         """
@@ -283,7 +284,7 @@ class AdaptiveInverse:
     def __init__(self, model: bonl._bonl.NonlinearFeedback, **kwargs) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, **kwargs) -> None:
+    def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
         ...
     def rederive(self) -> bool:
         """

@@ -1,0 +1,80 @@
+#pragma once
+// Input block of the Prandtl-Ishlinskii Hammerstein model: a polynomial and a Prandtl-Ishlinskii
+// operator of the input,
+//   w(k) = sum_{l=0..r} f_l u(k)^l + sum_{i=1..np} g_i play_{r_i}[u](k),
+// with the plays of play_operators.hpp (their memory P_i(k-1) is this block's state, 0 at rest). The
+// model's free run and its inverse both step this block, so the w the inverse computes for a command
+// is the w the model makes of it. For fixed states, u -> w(k) is continuous: the polynomial plus, for
+// each play, P_i between its breakpoints u = P_i - r_i and u = P_i + r_i and u -+ r_i beyond them.
+
+#include <Eigen/Core>
+
+#include <string>
+
+#include "../detail/validate.hpp"
+#include "play_operators.hpp"
+
+namespace bonl {
+
+template <typename Scalar_ = double, int R_ = Eigen::Dynamic, int Np_ = Eigen::Dynamic>
+class PrandtlIshlinskiiInput {
+ public:
+  using Scalar = Scalar_;
+  using Plays = PlayOperators<Scalar, Np_>;
+  using Coeffs = Eigen::Matrix<Scalar, detail::poly_size(R_), 1>;
+  using Weights = Eigen::Matrix<Scalar, Np_, 1>;
+
+  /// f = f_0..f_r (r >= 1), the plays' thresholds (PlayOperators::require_valid) and their weights
+  /// g (as many, finite); the plays at rest.
+  template <typename F, typename T, typename G>
+  PrandtlIshlinskiiInput(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<T>& thresholds,
+                         const Eigen::MatrixBase<G>& g)
+      : m_plays(thresholds) {
+    detail::require(f.size() >= 2, "f must have at least 2 entries (f_0..f_r, degree r >= 1), got " +
+                                       std::to_string(f.size()));
+    detail::require_matches_template(f.size() - 1, R_, "r");
+    m_f = Coeffs::Zero(f.size());
+    m_g = Weights::Zero(thresholds.size());
+    detail::assign_checked(m_f, f, "f");
+    detail::assign_checked(m_g, g, "g");
+  }
+
+  const Coeffs& f() const noexcept { return m_f; }
+  const Weights& g() const noexcept { return m_g; }
+  const typename Plays::Vector& thresholds() const noexcept { return m_plays.thresholds(); }
+  /// The plays' outputs after the last step, P_i(k-1) for the next one.
+  const typename Plays::Vector& state() const noexcept { return m_plays.state(); }
+  Eigen::Index size() const noexcept { return m_plays.size(); }
+
+  /// Back to rest: every play at 0.
+  void reset() noexcept { m_plays.reset(); }
+  /// Takes over `other`'s play memory (PlayOperators::continue_from).
+  void continue_from(const PrandtlIshlinskiiInput& other) noexcept { m_plays.continue_from(other.m_plays); }
+
+  /// w(k) for the input u(k): steps the plays.
+  Scalar step(Scalar u) noexcept {
+    m_plays.step(u);
+    return polynomial(u) + m_plays.output(m_g);
+  }
+  /// The w that step(u) would give, the plays left as they are.
+  Scalar peek(Scalar u) const noexcept {
+    const auto& state = m_plays.state();
+    const auto& thresholds = m_plays.thresholds();
+    Scalar sum = Scalar(0);
+    for (Eigen::Index i = 0; i < state.size(); ++i) sum += m_g[i] * Plays::play(state[i], u, thresholds[i]);
+    return polynomial(u) + sum;
+  }
+  /// sum_l f_l u^l (Horner's scheme).
+  Scalar polynomial(Scalar u) const noexcept {
+    Scalar w = Scalar(0);
+    for (Eigen::Index l = m_f.size() - 1; l >= 0; --l) w = w * u + m_f[l];
+    return w;
+  }
+
+ private:
+  Coeffs m_f;
+  Weights m_g;
+  Plays m_plays;
+};
+
+}  // namespace bonl

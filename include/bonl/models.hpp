@@ -58,6 +58,7 @@ using Models =
 /// here is at its minimum: the plays np, none in the nonlinear-feedback model, one in the
 /// Prandtl-Ishlinskii Hammerstein model.
 struct PaperOrders {
+  /// The table: each order by name and its value.
   static constexpr std::array<OrderValue, 11> kOrders{{{"na", 3}, {"nb", 2}, {"nk", 8}, {"r", 3}, {"r1", 3}, {"na1", 3},
                                                        {"nb1", 2}, {"na2", 3}, {"nb2", 2}, {"nh", 0}, {"nd", 2}}};
 };

@@ -91,7 +91,9 @@ struct TypeTag {
 };
 
 /// f(TypeTag<Model>{}) for every Model of the list, in order:
-///   `for_each_model(Models{}, [](auto tag) { using Model = typename decltype(tag)::type; ... });`
+/// \code
+/// for_each_model(Models{}, [](auto tag) { using Model = typename decltype(tag)::type; ... });
+/// \endcode
 template <class... Models, class F>
 void for_each_model(ModelList<Models...>, F&& f) {
   (f(TypeTag<Models>{}), ...);

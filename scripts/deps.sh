@@ -1,5 +1,6 @@
-# Sourced by scripts/test.sh, scripts/demo.sh and .ci/run: the Debian 12 packages bonl needs.
-BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev nlohmann-json3-dev python3 python3-pip python3-venv)
+# Sourced by scripts/test.sh, scripts/demo.sh and .ci/run: the Debian 12 packages bonl needs
+# (doxygen for scripts/api_reference.sh's C++ reference).
+BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev nlohmann-json3-dev python3 python3-pip python3-venv doxygen)
 # scripts/fuzz.sh only: clang and its runtimes (libclang_rt.fuzzer, asan, ubsan).
 BONL_FUZZ_APT_PACKAGES=(clang-14 libclang-rt-14-dev)
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds and runs every C++ test, installs bonl and builds examples/consumer against it (core
 # alone with Eigen only, then the io and plant components), then
-# builds the Python package into build/venv and runs pytest.
+# builds the Python package into build/venv and runs pytest. The venv also gets pdoc, for
+# scripts/api_reference.sh.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh
@@ -29,7 +30,7 @@ bash examples/consumer/check.sh build/ci
 
 step "Python: build and install the package in a virtual environment (build/venv)"
 [[ -x build/venv/bin/python ]] || python3 -m venv build/venv
-build/venv/bin/python -m pip install -q --disable-pip-version-check numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm padasip
+build/venv/bin/python -m pip install -q --disable-pip-version-check numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm padasip pdoc==16.0.0
 build/venv/bin/python -m pip install -q --disable-pip-version-check .
 
 step "pytest"

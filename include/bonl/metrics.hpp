@@ -12,9 +12,10 @@
 
 namespace bonl::metrics {
 
+/// The scores of a prediction yhat of y, all at once (scores()).
 struct Scores {
-  double mse = 0.0;
-  double rmse = 0.0;
+  double mse = 0.0;  ///< mean squared error
+  double rmse = 0.0;  ///< root mean squared error, in y's units
   double nrmse = 0.0;        ///< ||y - yhat|| / ||y - mean(y)|| (0 is perfect)
   double fit_percent = 0.0;  ///< 100 (1 - nrmse)
 };
@@ -47,6 +48,9 @@ int common_exponent(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& y
 }
 }  // namespace detail
 
+/// The mean squared error of yhat against y, mean((y - yhat)^2), computed on values scaled by a power
+/// of two so that it neither overflows nor underflows needlessly. Throws std::invalid_argument for
+/// different lengths, an empty y or a non-finite value.
 template <typename A, typename B>
 double mse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   detail::check_pair(y, yhat);
@@ -82,11 +86,14 @@ double nrmse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   return (ys - yhats).norm() / spread;
 }
 
+/// The fit in percent, 100 (1 - nrmse(y, yhat)): 100 is perfect, 0 no better than y's mean. Throws as
+/// nrmse() does.
 template <typename A, typename B>
 double fit_percent(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   return 100.0 * (1.0 - nrmse(y, yhat));
 }
 
+/// mse(), rmse(), nrmse() and fit_percent() of yhat against y, in one Scores; throws as nrmse() does.
 template <typename A, typename B>
 Scores scores(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   Scores s;

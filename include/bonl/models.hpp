@@ -35,15 +35,15 @@
 
 namespace bonl {
 
-/// Run-time orders throughout.
-using ARXd = ARX<double>;
-using Hammersteind = Hammerstein<double>;
-using HammersteinWienerd = HammersteinWiener<double>;
-using PseudoHammersteinWienerd = PseudoHammersteinWiener<double>;
-using Wienerd = Wiener<double>;
-using WienerHammersteind = WienerHammerstein<double>;
-using NonlinearFeedbackd = NonlinearFeedback<double>;
-using PrandtlIshlinskiiHammersteind = PrandtlIshlinskiiHammerstein<double>;
+// The models in double, run-time orders throughout.
+using ARXd = ARX<double>;  ///< ARX in double
+using Hammersteind = Hammerstein<double>;  ///< Hammerstein in double
+using HammersteinWienerd = HammersteinWiener<double>;  ///< HammersteinWiener in double
+using PseudoHammersteinWienerd = PseudoHammersteinWiener<double>;  ///< PseudoHammersteinWiener in double
+using Wienerd = Wiener<double>;  ///< Wiener in double
+using WienerHammersteind = WienerHammerstein<double>;  ///< WienerHammerstein in double
+using NonlinearFeedbackd = NonlinearFeedback<double>;  ///< NonlinearFeedback in double
+using PrandtlIshlinskiiHammersteind = PrandtlIshlinskiiHammerstein<double>;  ///< PrandtlIshlinskiiHammerstein in double
 
 /// Every model, at run-time orders in double: what a model file can hold, what Python binds, what
 /// the property suites run over. A new model is one entry here.
@@ -58,6 +58,7 @@ using Models =
 /// here is at its minimum: the plays np, none in the nonlinear-feedback model, one in the
 /// Prandtl-Ishlinskii Hammerstein model.
 struct PaperOrders {
+  /// The table: each order by name and its value.
   static constexpr std::array<OrderValue, 11> kOrders{{{"na", 3}, {"nb", 2}, {"nk", 8}, {"r", 3}, {"r1", 3}, {"na1", 3},
                                                        {"nb1", 2}, {"na2", 3}, {"nb2", 2}, {"nh", 0}, {"nd", 2}}};
 };
@@ -68,10 +69,10 @@ using PaperOrderModels = ModelsWithOrders<Models, PaperOrders>::type;
 
 /// The paper's models at its orders at compile time (ARX<double, 3, 2>, Hammerstein<double, 3, 2, 3>,
 /// ...); nk = 8 is given to the constructor, e.g. PaperPseudoHammersteinWiener model(3, 2, 8, 3).
-using PaperARX = WithOrders<ARXd, PaperOrders>;
-using PaperHammerstein = WithOrders<Hammersteind, PaperOrders>;
-using PaperHammersteinWiener = WithOrders<HammersteinWienerd, PaperOrders>;
-using PaperPseudoHammersteinWiener = WithOrders<PseudoHammersteinWienerd, PaperOrders>;
-using PaperWiener = WithOrders<Wienerd, PaperOrders>;
+using PaperARX = WithOrders<ARXd, PaperOrders>;  ///< ARX at the paper's orders
+using PaperHammerstein = WithOrders<Hammersteind, PaperOrders>;  ///< Hammerstein at the paper's orders
+using PaperHammersteinWiener = WithOrders<HammersteinWienerd, PaperOrders>;  ///< HammersteinWiener at the paper's orders
+using PaperPseudoHammersteinWiener = WithOrders<PseudoHammersteinWienerd, PaperOrders>;  ///< PseudoHammersteinWiener at the paper's orders
+using PaperWiener = WithOrders<Wienerd, PaperOrders>;  ///< Wiener at the paper's orders
 
 }  // namespace bonl

@@ -18,6 +18,13 @@ from ._bonl import *  # noqa: F401,F403
 from ._bonl import __all__ as _core_names
 from ._bonl import __version__
 
+# The extension registers the exception without a docstring (pybind11's register_exception takes none).
+NumericalError.__doc__ = (  # noqa: F405
+    "Numerical trouble found while computing: a diverging simulation, a covariance that lost\n"
+    "positiveness, a non-finite intermediate result. The message says where. Bad input raises\n"
+    "ValueError instead. A subclass of ArithmeticError."
+)
+
 # The Python modules over the C++ submodules. Imported by name: the star import above already bound
 # these names to the C++ submodules, and `from . import metrics` would keep those.
 control = _importlib.import_module(".control", __name__)

@@ -26,14 +26,20 @@ constexpr Scalar backlash_g4(Scalar x, Scalar y_prev, Scalar c) noexcept {
   return y_prev - c > x ? Scalar(1) : Scalar(0);
 }
 
+/// The symmetric, unit-slope backlash of the P-H-W model (eqs. 10-12), half-width c >= 0: y(k) =
+/// x(k) - c if x(k) > y(k-1) + c; x(k) + c if x(k) < y(k-1) - c; else y(k-1). Its memory is y(k-1);
+/// it starts engaged at y0.
 template <typename Scalar_ = double>
 class Backlash {
  public:
-  using Scalar = Scalar_;
+  using Scalar = Scalar_;  ///< the arithmetic type
 
+  /// A backlash of half-width c whose memory starts at y0; throws std::invalid_argument unless c is
+  /// finite and >= 0.
   explicit Backlash(Scalar c = Scalar(0), Scalar y0 = Scalar(0)) : m_y(y0) { set_c(c); }
 
-  Scalar c() const noexcept { return m_c; }
+  Scalar c() const noexcept { return m_c; }  ///< the half-width c
+  /// Sets the half-width; throws std::invalid_argument unless c is finite and >= 0.
   void set_c(Scalar c) {
     detail::require(std::isfinite(c) && c >= Scalar(0), "backlash half-width c must be finite and >= 0, got " +
                                                             std::to_string(static_cast<double>(c)));
@@ -41,8 +47,10 @@ class Backlash {
   }
   /// The memory y(k-1).
   Scalar output() const noexcept { return m_y; }
+  /// Sets the memory y(k-1) to y0, as at the start.
   void reset(Scalar y0 = Scalar(0)) noexcept { m_y = y0; }
 
+  /// One sample: the output y(k) for the input x(k), which becomes the memory.
   Scalar step(Scalar x) noexcept {
     m_y = map(x, m_y, m_c);
     return m_y;
@@ -60,11 +68,16 @@ class Backlash {
   Scalar m_y = Scalar(0);
 };
 
+/// The general backlash, for simulation (Fig. 9): separate left and right thresholds and a slope m:
+/// y(k) = m (x(k) - c_right) if that is > y(k-1); m (x(k) + c_left) if that is < y(k-1); else y(k-1).
+/// It starts engaged at y0.
 template <typename Scalar_ = double>
 class GeneralBacklash {
  public:
-  using Scalar = Scalar_;
+  using Scalar = Scalar_;  ///< the arithmetic type
 
+  /// A backlash with the thresholds c_left, c_right (finite, >= 0), the slope m = slope (finite, > 0)
+  /// and the memory y0; throws std::invalid_argument otherwise.
   GeneralBacklash(Scalar c_left, Scalar c_right, Scalar slope = Scalar(1), Scalar y0 = Scalar(0))
       : m_c_left(c_left), m_c_right(c_right), m_slope(slope), m_y(y0) {
     detail::require(std::isfinite(c_left) && c_left >= Scalar(0), "c_left must be finite and >= 0");
@@ -73,12 +86,14 @@ class GeneralBacklash {
     detail::require(std::isfinite(y0), "initial output y0 must be finite");
   }
 
-  Scalar c_left() const noexcept { return m_c_left; }
-  Scalar c_right() const noexcept { return m_c_right; }
-  Scalar slope() const noexcept { return m_slope; }
-  Scalar output() const noexcept { return m_y; }
+  Scalar c_left() const noexcept { return m_c_left; }  ///< the left threshold c_left
+  Scalar c_right() const noexcept { return m_c_right; }  ///< the right threshold c_right
+  Scalar slope() const noexcept { return m_slope; }  ///< the slope m
+  Scalar output() const noexcept { return m_y; }  ///< the memory y(k-1)
+  /// Sets the memory y(k-1) to y0, as at the start.
   void reset(Scalar y0 = Scalar(0)) noexcept { m_y = y0; }
 
+  /// One sample: the output y(k) for the input x(k), which becomes the memory.
   Scalar step(Scalar x) noexcept {
     const Scalar up = m_slope * (x - m_c_right);
     const Scalar down = m_slope * (x + m_c_left);

@@ -14,12 +14,15 @@
 
 namespace bonl {
 
+/// The linear dynamic block L of the models (eqs. 6-8): A(z^-1) x(k) = z^-nk B(z^-1) w(k), i.e.
+/// x(k) = -sum_j a_j x(k-j) + sum_i b_i w(k-nk-i), with ni integrators in the denominator
+/// A(z^-1) (1 - z^-1)^ni. Na_, Nb_ fix na, nb at compile time. It starts at rest.
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic>
 class LinearBlock {
  public:
-  using Scalar = Scalar_;
-  using ACoeffs = Eigen::Matrix<Scalar, Na_, 1>;
-  using BCoeffs = Eigen::Matrix<Scalar, detail::poly_size(Nb_), 1>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using ACoeffs = Eigen::Matrix<Scalar, Na_, 1>;  ///< a_1..a_na (fixed size when Na_ is)
+  using BCoeffs = Eigen::Matrix<Scalar, detail::poly_size(Nb_), 1>;  ///< b_0..b_nb (fixed size when Nb_ is)
 
   /// na >= 1 poles, nb >= 0 (b has nb + 1 coefficients), pure delay nk >= 0, ni in 0..2 integrators
   /// (poles fixed at 1). a = 0, b = [1, 0...].
@@ -37,20 +40,22 @@ class LinearBlock {
     m_z = detail::History<Scalar>(na);
   }
 
-  Eigen::Index na() const noexcept { return m_a.size(); }
-  Eigen::Index nb() const noexcept { return m_b.size() - 1; }
-  Eigen::Index nk() const noexcept { return m_nk; }
-  Eigen::Index ni() const noexcept { return m_integrators.size(); }
+  Eigen::Index na() const noexcept { return m_a.size(); }  ///< the order na: estimated poles
+  Eigen::Index nb() const noexcept { return m_b.size() - 1; }  ///< the order nb: b has nb + 1 coefficients
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the pure delay nk in samples
+  Eigen::Index ni() const noexcept { return m_integrators.size(); }  ///< the integrators ni (poles fixed at 1)
   /// The estimated denominator a_1..a_na (without the integrators).
   const ACoeffs& a() const noexcept { return m_a; }
   /// The whole denominator a_1..a_{na+ni} of A(z^-1) (1 - z^-1)^ni.
   Eigen::Matrix<Scalar, Eigen::Dynamic, 1> denominator() const { return detail::with_integrators(m_a, ni()); }
-  const BCoeffs& b() const noexcept { return m_b; }
+  const BCoeffs& b() const noexcept { return m_b; }  ///< the numerator b_0..b_nb
 
+  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
   template <typename A>
   void set_a(const Eigen::MatrixBase<A>& a) {
     detail::assign_checked(m_a, a, "a");
   }
+  /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
   template <typename B>
   void set_b(const Eigen::MatrixBase<B>& b) {
     detail::assign_checked(m_b, b, "b");

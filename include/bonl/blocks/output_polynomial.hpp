@@ -9,11 +9,13 @@
 
 namespace bonl {
 
+/// The output block N2 of the Hammerstein-Wiener model (eq. 9), a static polynomial without constant
+/// term: y = sum_{m=1..r1} q_m x^m. Identification normalises q_1 = 1; the block accepts any q_1.
 template <typename Scalar_ = double, int R1_ = Eigen::Dynamic>
 class OutputPolynomial {
  public:
-  using Scalar = Scalar_;
-  using Coeffs = Eigen::Matrix<Scalar, R1_, 1>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using Coeffs = Eigen::Matrix<Scalar, R1_, 1>;  ///< q_1..q_r1 (fixed size when R1_ is)
 
   /// Degree r1 >= 1; q = [1, 0, ..., 0] (the identity).
   explicit OutputPolynomial(Eigen::Index r1 = (R1_ == Eigen::Dynamic ? 1 : R1_)) {
@@ -23,15 +25,18 @@ class OutputPolynomial {
     m_q[0] = Scalar(1);
   }
 
-  Eigen::Index degree() const noexcept { return m_q.size(); }
+  Eigen::Index degree() const noexcept { return m_q.size(); }  ///< the degree r1
   /// q_1..q_r1.
   const Coeffs& q() const noexcept { return m_q; }
+  /// Sets q_1..q_r1 (r1 finite values, else std::invalid_argument).
   template <typename Q>
   void set_q(const Eigen::MatrixBase<Q>& q) {
     detail::assign_checked(m_q, q, "q");
   }
 
+  /// The output y = q(x).
   Scalar operator()(Scalar x) const noexcept { return evaluate(m_q, x); }
+  /// The slope dq/dx at x.
   Scalar derivative(Scalar x) const noexcept { return evaluate_derivative(m_q, x); }
 
   /// y = sum_m q_m x^m for q = q_1..q_r1.
@@ -41,6 +46,7 @@ class OutputPolynomial {
     for (Eigen::Index m = q.size() - 1; m >= 0; --m) y = (y + q[m]) * x;
     return y;
   }
+  /// The slope dq/dx = sum_m m q_m x^(m-1) at x for q = q_1..q_r1.
   template <typename Q>
   static Scalar evaluate_derivative(const Eigen::MatrixBase<Q>& q, Scalar x) noexcept {
     Scalar d = Scalar(0);

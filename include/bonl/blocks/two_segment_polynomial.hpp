@@ -16,13 +16,15 @@ constexpr Scalar input_switch(Scalar u) noexcept {
   return u < Scalar(0) ? Scalar(1) : Scalar(0);
 }
 
+/// The input block N1 of the Hammerstein-type models (eqs. 3-5): a polynomial of degree r for u >= 0
+/// and another for u < 0, w = sum_l f_l u^l + h(u) sum_l p_l u^l with h(u) = 1 for u < 0, else 0.
 template <typename Scalar_ = double, int R_ = Eigen::Dynamic>
 class TwoSegmentPolynomial {
  public:
-  using Scalar = Scalar_;
-  static constexpr int kCoeffs = detail::poly_size(R_);
-  static constexpr int kBasisSize = kCoeffs == Eigen::Dynamic ? Eigen::Dynamic : 2 * kCoeffs;
-  using Coeffs = Eigen::Matrix<Scalar, kCoeffs, 1>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  static constexpr int kCoeffs = detail::poly_size(R_);  ///< r + 1 coefficients per segment (Eigen::Dynamic when R_ is)
+  static constexpr int kBasisSize = kCoeffs == Eigen::Dynamic ? Eigen::Dynamic : 2 * kCoeffs;  ///< the regressor's length, f's and p's: 2 (r + 1)
+  using Coeffs = Eigen::Matrix<Scalar, kCoeffs, 1>;  ///< f_0..f_r or p_0..p_r
 
   /// Degree r >= 1; all coefficients zero.
   explicit TwoSegmentPolynomial(Eigen::Index r = (R_ == Eigen::Dynamic ? 1 : R_)) {
@@ -40,21 +42,24 @@ class TwoSegmentPolynomial {
     set_p(p);
   }
 
-  Eigen::Index degree() const noexcept { return m_f.size() - 1; }
-  const Coeffs& f() const noexcept { return m_f; }
-  const Coeffs& p() const noexcept { return m_p; }
+  Eigen::Index degree() const noexcept { return m_f.size() - 1; }  ///< the degree r
+  const Coeffs& f() const noexcept { return m_f; }  ///< f_0..f_r, the polynomial for u >= 0
+  const Coeffs& p() const noexcept { return m_p; }  ///< p_0..p_r = g_l - f_l, added for u < 0
   /// Coefficients of the negative-side polynomial, g_l = f_l + p_l.
   Coeffs g() const { return m_f + m_p; }
 
+  /// Sets f_0..f_r (r + 1 finite values, else std::invalid_argument).
   template <typename F>
   void set_f(const Eigen::MatrixBase<F>& f) {
     detail::assign_checked(m_f, f, "f");
   }
+  /// Sets p_0..p_r (r + 1 finite values, else std::invalid_argument).
   template <typename P>
   void set_p(const Eigen::MatrixBase<P>& p) {
     detail::assign_checked(m_p, p, "p");
   }
 
+  /// The output w for the input u.
   Scalar operator()(Scalar u) const noexcept { return evaluate(m_f, m_p, u); }
 
   /// w for coefficient vectors f and p of equal length (Horner's scheme).

@@ -18,9 +18,14 @@
 
 namespace bonl {
 
+/// The forgetting factor lambda over time, of one of two kinds: steps (`initial` for the first
+/// `initial_samples` samples, `final` afterwards: the paper's 0.98 for 200 samples, then 1) or an
+/// adaptive memory (the output-error method's default: lambda = 1 - 1 / L with a memory L that grows
+/// while the prediction error is stationary and is cut back while it changes). docs/algorithm.md.
 struct ForgettingSchedule {
+  /// The two kinds: steps, adaptive memory.
   enum class Kind { Steps, AdaptiveMemory };
-  Kind kind = Kind::Steps;
+  Kind kind = Kind::Steps;  ///< which kind this schedule is
 
   // Kind::Steps
   double initial = 0.98;               ///< lambda for samples 0 .. initial_samples - 1
@@ -36,23 +41,26 @@ struct ForgettingSchedule {
   double change_ratio = 2.0;       ///< "changing": one mean square more than change_ratio times the other
   double poor_fit = 0.25;          ///< "explains little": recent mean square error > poor_fit x output variance
 
-  static ForgettingSchedule paper() { return {}; }
+  static ForgettingSchedule paper() { return {}; }  ///< the paper's steps: 0.98 for 200 samples, then 1
+  /// A constant forgetting factor lambda, in (0, 1] (checked by validate()).
   static ForgettingSchedule constant(double lambda) {
     ForgettingSchedule schedule;
     schedule.initial = schedule.final = lambda;
     schedule.initial_samples = 0;
     return schedule;
   }
-  static ForgettingSchedule adaptive_memory() {
+  static ForgettingSchedule adaptive_memory() {  ///< the adaptive memory with its default settings
     ForgettingSchedule schedule;
     schedule.kind = Kind::AdaptiveMemory;
     return schedule;
   }
 
-  bool adaptive() const noexcept { return kind == Kind::AdaptiveMemory; }
+  bool adaptive() const noexcept { return kind == Kind::AdaptiveMemory; }  ///< whether this is the adaptive-memory kind
   /// Kind::Steps only: lambda at a sample.
   double at(Eigen::Index sample) const noexcept { return sample < initial_samples ? initial : final; }
 
+  /// Throws std::invalid_argument for a setting out of range (a lambda outside (0, 1], a negative
+  /// length, a memory, window or ratio below its minimum or not finite).
   void validate() const {
     const auto in_range = [](double lambda) { return std::isfinite(lambda) && lambda > 0.0 && lambda <= 1.0; };
     detail::require(in_range(initial), "forgetting factor must be in (0, 1], got " + detail::format_number(initial));

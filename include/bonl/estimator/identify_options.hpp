@@ -11,6 +11,8 @@ namespace bonl {
 /// starts at rest there, as the cascaded tanks' records do).
 enum class OperatingPointSource { Structure, Mean, Initial };
 
+/// The name of an operating-point source, as Python and the command line spell it: "structure", "mean",
+/// "initial".
 inline const char* to_string(OperatingPointSource source) {
   switch (source) {
     case OperatingPointSource::Mean: return "mean";
@@ -20,6 +22,9 @@ inline const char* to_string(OperatingPointSource source) {
   return "structure";
 }
 
+/// What identify() is told: the recursive estimator's options (the base), its passes over the
+/// records, the refinement's iterations, whether the data are normalised, and where the operating
+/// point comes from.
 struct IdentifyOptions : EstimatorOptions {
   int passes = 1;              ///< passes of the recursive estimator over the record (paper's step 5)
   int refine_iterations = 100; ///< Levenberg-Marquardt iterations of the refinement (0: none)
@@ -29,7 +34,7 @@ struct IdentifyOptions : EstimatorOptions {
   /// micrometres. Powers of two make the scaling exact in floating point. Where identify returns the
   /// recursive estimate as it is, that estimate is the online estimator's, in the data's units.
   bool normalise = true;
-  OperatingPointSource operating_point = OperatingPointSource::Structure;
+  OperatingPointSource operating_point = OperatingPointSource::Structure;  ///< where the operating point (u0, y0) comes from
 };
 
 }  // namespace bonl

@@ -25,6 +25,8 @@ enum class Method {
   Paper,
 };
 
+/// The name of a method, as Python, model files and the command line spell it ("output_error",
+/// "equation_error", "paper").
 inline const char* to_string(Method method) noexcept {
   switch (method) {
     case Method::OutputError: return "output_error";

@@ -24,10 +24,11 @@
 
 namespace bonl {
 
+/// What refine_output_error() did: its costs before and after, its iterations, and which start won.
 struct RefinementReport {
   double initial_cost = std::numeric_limits<double>::infinity();  ///< mean squared simulation error
-  double final_cost = std::numeric_limits<double>::infinity();
-  int iterations = 0;
+  double final_cost = std::numeric_limits<double>::infinity();  ///< mean squared simulation error at the end
+  int iterations = 0;  ///< Levenberg-Marquardt iterations taken
   bool reflected = false;  ///< a start's linear block was unstable and had its poles reflected inside
   int start = 0;           ///< which start the result was refined from (refine_output_error of several)
 };

@@ -16,7 +16,8 @@ namespace bonl {
 /// One record: the input u and the measured output y of one experiment, as references.
 template <typename Scalar = double>
 struct RecordView {
-  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< the vectors a record is viewed in
+  /// Views input and output (the caller keeps them alive; temporaries are refused at compile time).
   RecordView(const Vector& input, const Vector& output)
       : u(input.data(), input.size()), y(output.data(), output.size()) {}
   RecordView(Vector&&, const Vector&) = delete;
@@ -29,14 +30,15 @@ struct RecordView {
     return RecordView(u.data(), y.data(), n);
   }
 
-  Eigen::Map<const Vector> u;
-  Eigen::Map<const Vector> y;
+  Eigen::Map<const Vector> u;  ///< the input u
+  Eigen::Map<const Vector> y;  ///< the measured output y
 
  private:
   RecordView(const Scalar* input, const Scalar* output, Eigen::Index samples)
       : u(input, samples), y(output, samples) {}
 };
 
+/// Several records of one system (experiments, segments), identified together.
 template <typename Scalar = double>
 using Records = std::vector<RecordView<Scalar>>;
 

@@ -22,8 +22,10 @@
 
 namespace bonl {
 
+/// The online estimator's options, chosen at construction: the method, the forgetting, P(0), the
+/// numerical safeguards; unset optionals take the method's defaults (docs/reference/conventions.md).
 struct EstimatorOptions {
-  Method method = Method::OutputError;
+  Method method = Method::OutputError;  ///< the estimation method (the output-error method by default)
   /// Unset, the method's default: ForgettingSchedule::adaptive_memory() for output_error, the
   /// paper's schedule (0.98 for 200 samples, then 1) for equation_error and paper.
   std::optional<ForgettingSchedule> forgetting;
@@ -65,11 +67,13 @@ struct EstimatorOptions {
     if (forgetting) return *forgetting;
     return method == Method::OutputError ? ForgettingSchedule::adaptive_memory() : ForgettingSchedule::paper();
   }
-  double resolved_p0() const { return p0 ? *p0 : (method == Method::OutputError ? 10.0 : 1e6); }
+  double resolved_p0() const { return p0 ? *p0 : (method == Method::OutputError ? 10.0 : 1e6); }  ///< p0 in force: the one set, or the method's default (10 output-error, 1e6 the others)
+  /// The trace ceiling in force: the one set, or the method's default (10 output-error, 1 the others).
   double resolved_trace_ceiling() const {
     return trace_ceiling ? *trace_ceiling : (method == Method::OutputError ? 10.0 : 1.0);
   }
 
+  /// Throws std::invalid_argument for a setting out of range (docs/bad_input.md lists them).
   void validate() const {
     resolved_forgetting().validate();
     const double p0_value = resolved_p0();
@@ -114,7 +118,7 @@ struct EstimatorTrajectory {
   std::vector<Eigen::Index> sample;  ///< running sample number since reset() (not since the pass)
   Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> theta;  ///< num_params x samples, after each update
   std::vector<Scalar> internal;       ///< the model's internal variable x(k) the update used (NaN for ARX)
-  std::vector<UpdateStatus> status;
+  std::vector<UpdateStatus> status;  ///< what each update did
 };
 
 namespace detail {
@@ -130,6 +134,10 @@ struct is_model<M, std::void_t<typename M::Scalar, typename M::Params, typename 
     : std::true_type {};
 }  // namespace detail
 
+/// The online estimator of a model's parameters, one sample per update() (the paper's recursive
+/// identification, section 4, and the output-error method): Model is one of the models (the
+/// concept's members are checked at compile time), the per-sample update allocation-free and
+/// noexcept, with numerical safeguards (docs/reference/numerical_safeguards.md).
 template <class Model>
 class Estimator {
   static_assert(detail::is_model<Model>::value,
@@ -137,9 +145,9 @@ class Estimator {
                 "kHasInternalVariables, theta(), num_params() and constrain() (see the model concept in bonl/models.hpp)");
 
  public:
-  using Scalar = typename Model::Scalar;
-  using Params = typename Model::Params;
-  using Covariance = Eigen::Matrix<Scalar, Model::kNumParams, Model::kNumParams>;
+  using Scalar = typename Model::Scalar;  ///< the model's arithmetic type
+  using Params = typename Model::Params;  ///< the model's parameter vector
+  using Covariance = Eigen::Matrix<Scalar, Model::kNumParams, Model::kNumParams>;  ///< the covariance P (fixed size when the model's orders are)
 
   /// `structure` gives the orders; the estimate starts from zero (c = c0 for the equation-error and
   /// paper methods, c = 0 for the output-error method).
@@ -198,7 +206,7 @@ class Estimator {
     m_record_next = 0;
     m_recorded = 0;
   }
-  bool recording() const noexcept { return m_record_theta.cols() > 0; }
+  bool recording() const noexcept { return m_record_theta.cols() > 0; }  ///< whether start_recording() is recording the updates
   /// What was recorded so far, oldest first.
   EstimatorTrajectory<Scalar> trajectory() const {
     EstimatorTrajectory<Scalar> out;
@@ -279,8 +287,8 @@ class Estimator {
     for (Eigen::Index k = 0; k < u.size(); ++k) on_sample(k, update(Scalar(u[k]), Scalar(y[k])));
   }
 
-  const Params& theta() const noexcept { return m_rls.theta(); }
-  Covariance covariance() const { return m_rls.covariance(); }
+  const Params& theta() const noexcept { return m_rls.theta(); }  ///< the current estimate theta, in the model's parameter order
+  Covariance covariance() const { return m_rls.covariance(); }  ///< the current covariance P (exactly symmetric)
   /// The current estimate as a model, projected onto the model's valid set (the paper method's
   /// P-H-W estimate can have c < 0, which simulates as c = 0).
   Model model() const {
@@ -301,7 +309,7 @@ class Estimator {
   bool diverged() const noexcept { return m_health.diverged; }
   /// What the safeguards did since the last reset().
   const EstimatorHealth& health() const noexcept { return m_health; }
-  const EstimatorOptions& options() const noexcept { return m_options; }
+  const EstimatorOptions& options() const noexcept { return m_options; }  ///< the options the estimator was constructed with
   /// The forgetting factor's current memory length 1 / (1 - lambda) under an adaptive-memory
   /// schedule (NaN for a step schedule).
   double memory() const noexcept {

@@ -140,6 +140,10 @@ BONL_FLATTEN bool rls_update_fixed_length(Storage& M, Scalar* theta, const Scala
 
 }  // namespace detail
 
+/// Recursive least squares with a forgetting factor (eqs. 21-23): the covariance stored as scale * M
+/// and downdated so that it stays exactly symmetric, its trace bounded by a ceiling (no covariance
+/// wind-up), and an update that would lose positive definiteness or finiteness refused with the
+/// state untouched. The header's comment gives the details; N_ fixes the size at compile time.
 template <typename Scalar_ = double, int N_ = Eigen::Dynamic>
 class Rls {
   static constexpr int kStorage = detail::padded_size(N_);
@@ -147,9 +151,9 @@ class Rls {
   using StorageMatrix = Eigen::Matrix<Scalar_, kStorage, kStorage>;
 
  public:
-  using Scalar = Scalar_;
-  using Vector = Eigen::Matrix<Scalar, N_, 1>;
-  using Matrix = Eigen::Matrix<Scalar, N_, N_>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using Vector = Eigen::Matrix<Scalar, N_, 1>;  ///< theta and the regressor phi
+  using Matrix = Eigen::Matrix<Scalar, N_, N_>;  ///< the covariance P
 
   /// Run-time sizes up to this many parameters run a kernel with its vector lengths fixed at
   /// compile time; above it, the generic kernel.
@@ -216,12 +220,12 @@ class Rls {
   /// True when the last accepted update had its forgetting reduced by the trace ceiling.
   bool forgetting_limited() const noexcept { return m_state.forgetting_limited; }
 
-  const Vector& theta() const noexcept { return m_theta; }
+  const Vector& theta() const noexcept { return m_theta; }  ///< the estimate theta
   /// For projections after an update (e.g. a constraint on one parameter).
   Vector& mutable_theta() noexcept { return m_theta; }
   /// The covariance (exactly symmetric).
   Matrix covariance() const { return m_state.scale * m_M.template topLeftCorner<N_, N_>(size(), size()); }
-  Eigen::Index size() const noexcept { return m_theta.size(); }
+  Eigen::Index size() const noexcept { return m_theta.size(); }  ///< the number of parameters
 
  private:
   static void check_p0(Scalar p0) {

@@ -30,10 +30,14 @@
 
 namespace bonl {
 
+/// How select() ranks the candidate structures: by the free-run MSE on held-out data (Validation), or
+/// by Akaike's or the Bayesian information criterion on the fitted data (AIC, BIC).
 enum class SelectionCriterion { Validation, AIC, BIC };
 
+/// What select() is told: the criterion, the held-out fraction, the threads, the identification's
+/// options.
 struct SelectOptions {
-  SelectionCriterion criterion = SelectionCriterion::Validation;
+  SelectionCriterion criterion = SelectionCriterion::Validation;  ///< how the candidates are ranked
   double validation_fraction = 0.25;  ///< the held-out last part of every record, in (0, 1)
   unsigned threads = 0;               ///< 0: one per hardware thread
   IdentifyOptions identify;           ///< for every identification
@@ -42,6 +46,7 @@ struct SelectOptions {
 /// One row of a selection's ranked table.
 template <class Model>
 struct SelectionCandidate {
+  /// A row for candidate, not yet identified (infinite score).
   explicit SelectionCandidate(const Model& candidate) : structure(candidate) {}
 
   Model structure;                 ///< the candidate as given
@@ -52,9 +57,11 @@ struct SelectionCandidate {
   std::optional<Model> model;      ///< the identified model (none when it failed)
 };
 
+/// What select() returns: the ranked table of the candidates and the best structure identified on all
+/// the records.
 template <class Model>
 struct Selection {
-  SelectionCriterion criterion;
+  SelectionCriterion criterion;  ///< the criterion the table is ranked by
   std::vector<SelectionCandidate<Model>> table;  ///< best first; ties keep the candidates' order
   Model best;                                    ///< the best structure identified on all the records
 };

@@ -52,8 +52,8 @@ Model paper_model() {
 /// [(rad/s)^2], and how much lower the proposed model's (the last of PaperModels) is, in percent, as
 /// the paper states it from its unrounded values (0 for the proposed model itself).
 struct PublishedScore {
-  double mse = 0.0;
-  int proposed_lower_percent = 0;
+  double mse = 0.0;  ///< the published validation MSE [(rad/s)^2]
+  int proposed_lower_percent = 0;  ///< how much lower the proposed model's MSE is [%]
 };
 
 /// The paper's published score of the model called `name`; empty for a model the paper does not report.
@@ -95,23 +95,25 @@ struct ModelScores {
 /// One model of the experiment: the identified model, the online estimate and their scores.
 template <class Model_>
 struct ModelResult : ModelScores {
-  using Model = Model_;
-  static constexpr const char* kName = Model::kName;
+  using Model = Model_;  ///< the model's type
+  static constexpr const char* kName = Model::kName;  ///< the model's name
   Model model = paper_model<Model>();         ///< identify(): the recursive estimate refined
   Model online_model = paper_model<Model>();  ///< the recursive estimator alone after one pass
 };
 
 /// One method's results: a ModelResult for every model of PaperModels, in its order.
 struct MethodResult {
-  using ModelResults = typename ApplyModels<typename MapModels<PaperModels, ModelResult>::type, std::tuple>::type;
+  using ModelResults = typename ApplyModels<typename MapModels<PaperModels, ModelResult>::type, std::tuple>::type;  ///< a std::tuple of one ModelResult per model of PaperModels
 
-  Method method = Method::OutputError;
-  ModelResults models;
+  Method method = Method::OutputError;  ///< the estimation method
+  ModelResults models;  ///< the results, one per model of PaperModels
 
+  /// The result of Model (a model of PaperModels).
   template <class Model>
   const ModelResult<Model>& get() const {
     return std::get<ModelResult<Model>>(models);
   }
+  /// The result of Model (a model of PaperModels), to modify.
   template <class Model>
   ModelResult<Model>& get() {
     return std::get<ModelResult<Model>>(models);
@@ -121,12 +123,14 @@ struct MethodResult {
   void for_each(F&& f) const {
     std::apply([&](const auto&... result) { (f(result), ...); }, models);
   }
+  /// f(model_result) for every model, in PaperModels' order, each result modifiable.
   template <class F>
   void for_each(F&& f) {
     std::apply([&](auto&... result) { (f(result), ...); }, models);
   }
 };
 
+/// What the paper's experiment runs: the records' measurement, the robustness check, the refinement.
 struct PaperExperimentOptions {
   MeasurementOptions measurement;  ///< the identification and validation records
   bool robustness = true;          ///< also validate on robustness_commands' trajectories
@@ -142,12 +146,12 @@ struct Timings {
 
 /// Everything the paper's experiment gives.
 struct PaperExperimentResult {
-  plant::Parameters parameters;
-  PaperExperimentOptions options;
-  Records records;
+  plant::Parameters parameters;  ///< the plant's parameters
+  PaperExperimentOptions options;  ///< the options the experiment ran with
+  Records records;  ///< the identification and validation records
   std::vector<MethodResult> methods;      ///< one per entry of kPaperMethods, in its order
   std::size_t robustness_trajectories = 0;  ///< trajectories of the robustness check (0: not run)
-  Timings seconds;
+  Timings seconds;  ///< the stages' wall times
 
   /// The results of `method`; std::invalid_argument for a method the experiment did not run.
   const MethodResult& method(Method method) const;

@@ -54,8 +54,8 @@ Record measure(const plant::Parameters& parameters, const plant::Command& comman
 
 /// The identification and the validation records.
 struct Records {
-  Record identification;
-  Record validation;
+  Record identification;  ///< the record the models are identified on
+  Record validation;  ///< the record they are validated on
 };
 
 /// Both records: the identification command with seed options.seed, the validation command with

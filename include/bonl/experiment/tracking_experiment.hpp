@@ -24,6 +24,8 @@
 
 namespace bonl::experiment {
 
+/// What the tracking experiment runs (docs/control.md): the reference, the duration, the plant's
+/// change and the identification method of the models that feed forward.
 struct TrackingOptions {
   double sample_time = 0.01;  ///< [s], the experiment's 100 Hz
   double cutoff_hz = 10.0;    ///< the measured angle's first-order low-pass (the records')
@@ -33,13 +35,13 @@ struct TrackingOptions {
   double reference_bandwidth_hz = 0.5;  ///< half the identification multi-sine's top tone
   double reference_rms = 0.1;           ///< [rad/s], about the validation record's velocity RMS
   double period = 20.0;                 ///< [s]
-  std::uint64_t reference_seed = 2020;
+  std::uint64_t reference_seed = 2020;  ///< the reference's seed
   double ramp = 2.0;       ///< [s]
   double duration = 80.0;  ///< [s], a whole number of periods
   /// When the plant changes (runs under change only), and how.
   double change_time = 40.0;  ///< [s], a whole number of periods
-  double pilot_hysteresis_factor = 2.0;
-  double bulk_modulus_factor = 0.7;
+  double pilot_hysteresis_factor = 2.0;  ///< the pilot valve's hysteresis multiplied by this at change_time
+  double bulk_modulus_factor = 0.7;  ///< the oil's bulk modulus multiplied by this at change_time
   std::uint64_t noise_seed = 99;  ///< the plant's sensor noise
   /// The models that feed forward: the paper experiment's, identified by this method.
   Method method = Method::Paper;
@@ -75,8 +77,10 @@ struct TrackingRun {
   Eigen::Index refused = 0;        ///< adaptive: estimates the guard refused
 };
 
+/// What the tracking experiment gives: the reference, each controller's command and output, and the
+/// tracking errors.
 struct TrackingResult {
-  TrackingOptions options;
+  TrackingOptions options;  ///< the options it ran with
   Eigen::VectorXd time;       ///< t_k [s]
   Eigen::VectorXd reference;  ///< r(t_k) [rad/s]
   double proportional_gain = 0.0;  ///< the PI's Kc [V / (rad/s)]

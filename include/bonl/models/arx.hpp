@@ -15,14 +15,24 @@
 
 namespace bonl {
 
+/// The ARX model, the paper's linear reference: y(k) = -sum_{j=1..na} a_j y(k-j) + sum_{i=0..nb}
+/// b_i u(k-nk-i) + e(k), b_0 free; parameters [b_0..b_nb, a_1..a_na]. Scalar_ is the arithmetic type;
+/// Na_ and Nb_ fix na and nb at compile time (Eigen::Dynamic: set at run time, the common case).
+/// Every model has this class's interface (docs/how-to/add_a_model.md): its
+/// orders and parameters, the description kDescription, and the per-sample views KeyTerms and
+/// OutputErrorTerms the estimator runs; simulate(), try_simulate(), predict() and linear_block() come
+/// from a shared base (detail::ModelRuns), the operating point u0, y0 with them.
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic>
 class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
  public:
-  using Scalar = Scalar_;
+  using Scalar = Scalar_;  ///< the arithmetic type (double, float)
+  /// The number of parameters when the orders are fixed at compile time, else Eigen::Dynamic.
   static constexpr int kNumParams = detail::add_sizes(detail::poly_size(Nb_), Na_);
   /// ARX has no unmeasured internal variable: its regressor is made of measured data only.
   static constexpr bool kHasInternalVariables = false;
-  static constexpr const char* kName = "ARX";
+  static constexpr const char* kName = "ARX";  ///< the model's name, as model files and Python write it
+  /// What the model is, once: its name, a summary, its orders with their ranges and defaults, and its
+  /// parameter blocks in theta's order. JSON, the bindings, selection and the tests loop over it.
   static constexpr ModelDescription<4, 2> kDescription{
       kName,
       "ARX model y(k) = -sum a_j y(k-j) + sum_{i=0..nb} b_i u(k-nk-i).",
@@ -32,10 +42,13 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
         detail::kIntegratorsOrder}},
       {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free for ARX)", nullptr, false, {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}}}}};
-  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
-  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  using Linear = LinearBlock<Scalar, Na_, Nb_>;
+  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;  ///< the parameter vector theta (fixed size when the orders are)
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size (outputs, parameter blocks)
+  using Linear = LinearBlock<Scalar, Na_, Nb_>;  ///< the linear block's type (linear_block() returns it)
 
+  /// A model with the orders na >= 1 (poles), nb >= 0 (B has nb + 1 coefficients), nk >= 0 (delay in
+  /// samples) and ni in 0..2 (integrators), all parameters zero. Throws std::invalid_argument for an
+  /// order out of range or one that differs from the compile-time order.
   ARX(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index ni = 0) : m_na(na), m_nb(nb), m_nk(nk), m_ni(ni) {
     detail::require_order(na, 1, "na");
     detail::require_order(nb, 0, "nb");
@@ -46,15 +59,19 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
     m_theta = Params::Zero(nb + 1 + na);
   }
 
-  Eigen::Index na() const noexcept { return m_na; }
-  Eigen::Index nb() const noexcept { return m_nb; }
-  Eigen::Index nk() const noexcept { return m_nk; }
-  Eigen::Index ni() const noexcept { return m_ni; }
-  Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
+  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
+  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  Eigen::Index num_params() const noexcept { return m_theta.size(); }  ///< the length of theta
 
+  /// The orders in kDescription.orders' order (here na, nb, nk, ni), as a model file writes them.
   std::array<Eigen::Index, 4> orders() const noexcept { return {m_na, m_nb, m_nk, m_ni}; }
 
+  /// The parameter vector theta in eq. (19) order (kDescription.parameters gives its blocks).
   const Params& theta() const noexcept { return m_theta; }
+  /// Sets theta, the whole parameter vector. Throws std::invalid_argument unless it has num_params()
+  /// finite entries.
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
     detail::assign_checked(m_theta, theta, "theta");
@@ -65,17 +82,22 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
     if (i == 1) return a();
     detail::no_such_parameter(kName, i);
   }
+  /// Sets the parameter block kDescription.parameters[i] to value (its entries in the block's order;
+  /// a normalised block's fixed first entry excluded). Throws std::invalid_argument for an index past
+  /// the blocks, a wrong length or a non-finite entry.
   void set_parameter(std::size_t i, const VectorX& value) {
     if (i == 0) return set_b(value);
     if (i == 1) return set_a(value);
     detail::no_such_parameter(kName, i);
   }
-  VectorX b() const { return m_theta.head(m_nb + 1); }
-  VectorX a() const { return m_theta.tail(m_na); }
+  VectorX b() const { return m_theta.head(m_nb + 1); }  ///< the numerator coefficients b_0..b_nb
+  VectorX a() const { return m_theta.tail(m_na); }  ///< the denominator coefficients a_1..a_na
+  /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
   }
+  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.tail(m_na), a, "a");
@@ -98,9 +120,16 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   /// target is y(k) less the integrators' part (detail/integrators.hpp).
   class KeyTerms {
    public:
+    /// Starts the key terms of model (its orders; the parameters come with each step) for method, at
+    /// rest.
     KeyTerms(const ARX& model, KeyTermMethod /*method*/)
         : m_linear(model.na(), model.nb(), model.nk(), model.ni()), m_phi(Params::Zero(model.num_params())) {}
+    /// Back to rest: the stored past inputs, outputs and internal variables are zero.
     void reset() noexcept { m_linear.reset(); }
+    /// One sample: takes theta, the estimate to build the regressor with (the paper's method also stores
+    /// the previous sample's internal variables with it), the input u(k) and the measured output y(k)
+    /// (NaN: not measured, the prediction stands in); returns the Regression (regressor, target,
+    /// prediction, internal variable, informative), whose regressor stays valid until the next step.
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       m_linear.begin(u, m_phi);
       const Scalar carried = m_linear.carried();
@@ -119,19 +148,30 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   /// sensitivities are all of psi (detail::LinearOutputError). Nothing to hold at the start.
   class OutputErrorTerms {
    public:
+    /// Starts the free run of model at rest; hold is the number of first samples some models hold their
+    /// internal state for (unused here).
     explicit OutputErrorTerms(const ARX& model, Eigen::Index /*hold*/ = 0)
         : m_linear(model.na(), model.nb(), model.nk(), model.num_params(), model.ni()),
           m_psi(Params::Zero(model.num_params())) {}
+    /// Back to rest, sensitivities included.
     void reset() noexcept { m_linear.reset(); }
+    /// One sample of the free run with the estimate theta and the input u(k): returns the SimulationStep
+    /// (the output, its sensitivity to theta, valid until the next step, and the internal variable).
+    /// Call accept() or accept(delta) before the next step.
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar y = m_linear.step(theta, u, m_psi);
       return {y, m_psi, y};
     }
+    /// Moves the run on by the step just taken, with theta unchanged (a refinement's Jacobian pass).
     void accept() noexcept { m_linear.commit(m_psi); }
+    /// Moves the run on by the step just taken after the estimate moved by delta: the stored
+    /// sensitivities correct the stored past to first order, as if the run had used the new theta.
     void accept(const Params& delta) noexcept {
       accept();
       m_linear.correct(delta);
     }
+    /// Whether the linear block's poles with theta lie inside the circle of the given radius (the
+    /// output-error method keeps the estimate where this holds); returns false otherwise.
     bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }
 
    private:

@@ -24,8 +24,8 @@ namespace bonl {
 /// The value of one order, by the name the model's description gives it: an entry of a table of
 /// orders (PaperOrders, models.hpp), a type with `static constexpr std::array<OrderValue, N> kOrders`.
 struct OrderValue {
-  const char* name;
-  int value;
+  const char* name;  ///< the order's name, as the model's description spells it ("na")
+  int value;  ///< its value
 };
 
 namespace detail {
@@ -124,15 +124,17 @@ Model make_model_at() {
 /// Every model of a list (ModelList) in scalar type S, or with the orders of Table.
 template <class List, typename S>
 struct ModelsWithScalar;
+/// The specialisation that does the work: every model of the list in scalar type S.
 template <class... Models, typename S>
 struct ModelsWithScalar<ModelList<Models...>, S> {
-  using type = ModelList<WithScalar<Models, S>...>;
+  using type = ModelList<WithScalar<Models, S>...>;  ///< `ModelList<WithScalar<Models, S>...>`
 };
 template <class List, class Table>
 struct ModelsWithOrders;
+/// The specialisation that does the work: every model of the list at the orders of Table.
 template <class... Models, class Table>
 struct ModelsWithOrders<ModelList<Models...>, Table> {
-  using type = ModelList<WithOrders<Models, Table>...>;
+  using type = ModelList<WithOrders<Models, Table>...>;  ///< `ModelList<WithOrders<Models, Table>...>`
 };
 
 }  // namespace bonl

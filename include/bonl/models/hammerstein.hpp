@@ -9,6 +9,10 @@
 
 namespace bonl {
 
+/// The Hammerstein model: the two-segment input polynomial N1 (eqs. 3-5), then the linear block
+/// (eqs. 6-8, b_0 = 1); y = x. Parameters in eq. (19) order: f_0..f_r, p_0..p_r, b_1..b_nb,
+/// a_1..a_na. The orders, theta and the blocks' accessors come from the shared front; the interface is
+/// ARX's.
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic>
 class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
                     public detail::ModelRuns<Hammerstein<Scalar_, Na_, Nb_, R_>> {
@@ -18,7 +22,9 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   using typename Front::Params;
   using typename Front::Scalar;
   using typename Front::VectorX;
+  /// \copydoc ARX::kName
   static constexpr const char* kName = "Hammerstein";
+  /// \copydoc ARX::kDescription
   static constexpr ModelDescription<5, 4> kDescription{
       kName,
       "Hammerstein model: two-segment input polynomial, then the linear block (b_0 = 1). "
@@ -27,9 +33,13 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
       detail::concat(detail::front_orders<Na_, Nb_, R_>(), std::array<OrderDescription, 1>{detail::kIntegratorsOrder}),
       detail::kFrontParameters};
 
+  /// A model with the orders na >= 1, nb >= 1, nk >= 0, r >= 0 (degree of each segment of the input
+  /// polynomial) and ni in 0..2, all parameters zero. Throws std::invalid_argument for an order out of
+  /// range or one that differs from the compile-time order.
   Hammerstein(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index ni = 0)
       : Front(na, nb, nk, r, 0, ni) {}
 
+  /// \copydoc ARX::orders
   std::array<Eigen::Index, 5> orders() const noexcept {
     return {this->na(), this->nb(), this->nk(), this->r(), this->ni()};
   }
@@ -38,6 +48,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     if (i >= 4) detail::no_such_parameter(kName, i);
     return this->front_parameter(i);
   }
+  /// \copydoc ARX::set_parameter
   void set_parameter(std::size_t i, const VectorX& value) {
     if (i >= 4) detail::no_such_parameter(kName, i);
     this->set_front_parameter(i, value);
@@ -50,6 +61,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     return this->simulate_front(u, y, this->linear_block(), [](Scalar x) { return x; });
   }
 
+  /// Where the recursive estimator starts (all zero; c0 is only used by models with a backlash).
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form (eq. 14): y(k) = [basis(u(k-nk)), w lags, -x lags] . theta. The past x are the
@@ -57,10 +69,13 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   /// integrators the target is y(k) less their part, known from the past x.
   class KeyTerms {
    public:
+    /// \copydoc ARX::KeyTerms::KeyTerms
     KeyTerms(const Hammerstein& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()), m_method(method),
           m_phi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept { m_front.reset(); }
+    /// \copydoc ARX::KeyTerms::step
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_front.pending()) m_front.store_a_posteriori(theta, m_phi);
       const Scalar carried = m_front.carried();
@@ -79,18 +94,24 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   /// y = x, so dy/dtheta = dx/dtheta. Nothing to hold at the start.
   class OutputErrorTerms {
    public:
+    /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const Hammerstein& model, Eigen::Index /*hold*/ = 0)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()) {}
+    /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept { m_front.reset(); }
+    /// \copydoc ARX::OutputErrorTerms::step
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x = m_front.step(theta, u);
       return {x, m_front.sensitivity(), x};
     }
+    /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_front.commit(); }
+    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
     void accept(const Params& delta) noexcept {
       accept();
       m_front.correct(delta);
     }
+    /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
 
    private:

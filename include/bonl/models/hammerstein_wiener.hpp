@@ -13,6 +13,9 @@
 
 namespace bonl {
 
+/// The Hammerstein-Wiener (H-W) model: the Hammerstein model followed by the output polynomial
+/// y = sum_{m=1..r1} q_m x^m (eq. 9), normalised to q_1 = 1 (and b_0 = 1). Parameters: the eq. (19)
+/// front (f, p, b_1..b_nb, a), then q_2..q_r1; q(), set_q() and output_block() come from a shared base.
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
           int R1_ = Eigen::Dynamic>
 class HammersteinWiener
@@ -25,8 +28,10 @@ class HammersteinWiener
   using typename Front::Params;
   using typename Front::Scalar;
   using typename Front::VectorX;
-  using OutputBlock = OutputPolynomial<Scalar, R1_>;
+  using OutputBlock = OutputPolynomial<Scalar, R1_>;  ///< the output polynomial's type (output_block() returns it)
+  /// \copydoc ARX::kName
   static constexpr const char* kName = "HammersteinWiener";
+  /// \copydoc ARX::kDescription
   static constexpr ModelDescription<6, 5> kDescription{
       kName,
       "Hammerstein-Wiener model: the Hammerstein model followed by y = sum_{m=1..r1} q_m x^m (q_1 = 1).",
@@ -38,11 +43,15 @@ class HammersteinWiener
                                                            "the H-W model is normalised so that q_1 = 1", false,
                                                            {1, -1, 0, 0}}}})};
 
+  /// A model with the orders na >= 1, nb >= 1, nk >= 0, r >= 0, r1 in 2..32 (degree of the output
+  /// polynomial) and ni in 0..2; the parameters zero but q_1 = 1. Throws std::invalid_argument for an
+  /// order out of range or one that differs from the compile-time order.
   HammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index r1,
                     Eigen::Index ni = 0)
       : Front(na, nb, nk, r, checked_r1(r1) - 1, ni), m_r1(r1) {}
 
-  Eigen::Index r1() const noexcept { return m_r1; }
+  Eigen::Index r1() const noexcept { return m_r1; }  ///< the order r1: degree of the output polynomial
+  /// \copydoc ARX::orders
   std::array<Eigen::Index, 6> orders() const noexcept {
     return {this->na(), this->nb(), this->nk(), this->r(), m_r1, this->ni()};
   }
@@ -52,6 +61,7 @@ class HammersteinWiener
     if (i == Front::kFrontBlocks) return this->q();
     detail::no_such_parameter(kName, i);
   }
+  /// \copydoc ARX::set_parameter
   void set_parameter(std::size_t i, const VectorX& value) {
     if (i < Front::kFrontBlocks) return this->set_front_parameter(i, value);
     if (i == Front::kFrontBlocks) return this->set_q(value);
@@ -66,6 +76,7 @@ class HammersteinWiener
     return this->simulate_front(u, y, this->linear_block(), [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
   }
 
+  /// Where the recursive estimator starts (all zero; c0 is only used by models with a backlash).
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form: y(k) = x(k) + sum_{m>=2} q_m x(k)^m with x(k) the front's key-term expression,
@@ -75,11 +86,14 @@ class HammersteinWiener
   /// predict() runs the equation-error form.
   class KeyTerms {
    public:
+    /// \copydoc ARX::KeyTerms::KeyTerms
     KeyTerms(const HammersteinWiener& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()),
           m_output(model.r1(), model.num_params()),
           m_method(method), m_phi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept { m_front.reset(); }
+    /// \copydoc ARX::KeyTerms::step
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_front.pending()) m_front.store_a_posteriori(theta, m_phi);
       const Scalar carried = m_front.carried();
@@ -102,10 +116,13 @@ class HammersteinWiener
   /// Nothing to hold at the start.
   class OutputErrorTerms {
    public:
+    /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const HammersteinWiener& model, Eigen::Index /*hold*/ = 0)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_output(model.r1(), model.num_params()),
           m_front_size(model.num_params() - model.r1() + 1), m_psi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept { m_front.reset(); }
+    /// \copydoc ARX::OutputErrorTerms::step
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       Scalar slope;
       const Scalar x = m_front.step(theta, u);
@@ -113,11 +130,14 @@ class HammersteinWiener
       m_psi.head(m_front_size) = slope * m_front.sensitivity();
       return {y, m_psi, x};
     }
+    /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_front.commit(); }
+    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
     void accept(const Params& delta) noexcept {
       accept();
       m_front.correct(delta.head(m_front_size));
     }
+    /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
 
    private:

@@ -34,7 +34,7 @@ struct OrderDescription {
   /// The value where a model file or a constructor call leaves the order out (an order added after
   /// files were written: ni); kRequired where it must be given.
   Eigen::Index default_value = kRequired;
-  static constexpr Eigen::Index kRequired = -1;
+  static constexpr Eigen::Index kRequired = -1;  ///< default_value of an order that must be given
 };
 
 /// How a parameter block is stored in files and shown in Python.
@@ -49,16 +49,16 @@ enum class ParameterShape {
 /// (rescaled(), models/rescale.hpp). The input polynomial's f_l: sy su^-l; an output polynomial's q_m:
 /// sy^(1 - m); a backlash width: sy; the linear block's a: 1.
 struct ParameterUnits {
-  int y_power = 0;
-  int y_power_per_index = 0;
-  int u_power = 0;
-  int u_power_per_index = 0;
+  int y_power = 0;  ///< the power of sy in every entry
+  int y_power_per_index = 0;  ///< the power of sy added per index
+  int u_power = 0;  ///< the power of su in every entry
+  int u_power_per_index = 0;  ///< the power of su added per index
 };
 
 /// One block of parameters, named as the model's setter (set_b) and accessor (b()) name it.
 struct ParameterDescription {
   const char* name;        ///< "b"
-  ParameterShape shape;
+  ParameterShape shape;  ///< a vector or a single number
   int first_index;         ///< the index of the first entry: 0 for b_0..b_nb, 1 for a_1..a_na
   const char* meaning;     ///< one line for documentation: "b_0..b_nb"
   const char* normalised;  ///< not null: the first entry is fixed to 1, for this reason
@@ -67,57 +67,66 @@ struct ParameterDescription {
   bool increasing = false; ///< the entries must be strictly increasing and not 0 (the W-H model's knots)
 };
 
+/// What a model is, stated once (its kDescription): its name, a summary, its NumOrders orders in the
+/// constructor's order and its NumParameters parameter blocks in theta's order. Model files, the
+/// bindings, selection and the tests read models through it.
 template <std::size_t NumOrders, std::size_t NumParameters>
 struct ModelDescription {
   const char* name;     ///< the model's one spelling: C++ kName, Python class, JSON "model", command line
   const char* summary;  ///< its equations in one or two sentences
-  std::array<OrderDescription, NumOrders> orders;
-  std::array<ParameterDescription, NumParameters> parameters;
+  std::array<OrderDescription, NumOrders> orders;  ///< the orders, in the constructor's and orders()'s order
+  std::array<ParameterDescription, NumParameters> parameters;  ///< the parameter blocks, in theta's order (parameter(i), set_parameter(i, value))
 };
 
 /// A list of model types (bonl::Models); Catch2's TEMPLATE_LIST_TEST_CASE accepts it as it is.
 template <class... Models>
 struct ModelList {
-  static constexpr std::size_t size = sizeof...(Models);
+  static constexpr std::size_t size = sizeof...(Models);  ///< the number of models in the list
 };
 
 /// Stands for the type T where a value is needed: for_each_model hands one to its function.
 template <class T>
 struct TypeTag {
-  using type = T;
+  using type = T;  ///< the type it stands for
 };
 
 /// f(TypeTag<Model>{}) for every Model of the list, in order:
-///   for_each_model(Models{}, [](auto tag) { using Model = typename decltype(tag)::type; ... });
+/// \code
+/// for_each_model(Models{}, [](auto tag) { using Model = typename decltype(tag)::type; ... });
+/// \endcode
 template <class... Models, class F>
 void for_each_model(ModelList<Models...>, F&& f) {
   (f(TypeTag<Models>{}), ...);
 }
 
-/// Apply<ModelList<A, B>, T>: T<A, B> (e.g. a std::variant of the models).
+/// `ApplyModels<ModelList<A, B>, T>::type` is `T<A, B>` (e.g. a std::variant of the models).
 template <class List, template <class...> class T>
 struct ApplyModels;
+/// The specialisation that does the work: `T<Models...>`.
 template <class... Models, template <class...> class T>
 struct ApplyModels<ModelList<Models...>, T> {
-  using type = T<Models...>;
+  using type = T<Models...>;  ///< `T<Models...>`
 };
 
-/// Map<ModelList<A, B>, F>: ModelList<F<A>, F<B>> (e.g. the estimators of the models).
+/// `MapModels<ModelList<A, B>, F>::type` is `ModelList<F<A>, F<B>>` (e.g. the estimators of the models).
 template <class List, template <class> class F>
 struct MapModels;
+/// The specialisation that does the work: `ModelList<F<Models>...>`.
 template <class... Models, template <class> class F>
 struct MapModels<ModelList<Models...>, F> {
-  using type = ModelList<F<Models>...>;
+  using type = ModelList<F<Models>...>;  ///< `ModelList<F<Models>...>`
 };
 
-/// Filter<ModelList<A, B>, P>: the models M of the list with P<M>::value, in order (e.g. the models
-/// that have an inverse).
+/// `FilterModels<ModelList<A, B>, P>::type`: the models M of the list with `P<M>::value`, in order
+/// (e.g. the models that have an inverse).
 template <class List, template <class> class P>
 struct FilterModels;
+/// The end of the recursion: nothing left to filter.
 template <template <class> class P>
 struct FilterModels<ModelList<>, P> {
-  using type = ModelList<>;
+  using type = ModelList<>;  ///< the empty list
 };
+/// One step of the recursion: First, kept if `P<First>::value`, before the filtered rest.
 template <class First, class... Rest, template <class> class P>
 struct FilterModels<ModelList<First, Rest...>, P> {
  private:
@@ -130,7 +139,7 @@ struct FilterModels<ModelList<First, Rest...>, P> {
   using Tail = typename FilterModels<ModelList<Rest...>, P>::type;
 
  public:
-  using type = std::conditional_t<P<First>::value, typename Prepend<Tail>::type, Tail>;
+  using type = std::conditional_t<P<First>::value, typename Prepend<Tail>::type, Tail>;  ///< the models of the list with `P<M>::value`, in order
 };
 
 /// A model of type Model at the given orders (its constructor, called with them in order).

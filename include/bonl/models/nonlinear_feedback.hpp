@@ -48,6 +48,12 @@
 
 namespace bonl {
 
+/// The nonlinear-feedback (Lur'e) model: a linear block driven by the input and by a static
+/// nonlinearity f of the output (nv = 0) or of its first difference (nv = 1), fed back through a
+/// second, delayed linear block D over the same denominator: y(k) = -sum a_j y(k-j) + sum b_i
+/// u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)), d_1 = 1, with f a polynomial from s^2 to s^r, nh hinges
+/// and np play operators (hysteresis). Parameters: b_0..b_nb, a_1..a_na, f_2..f_r, g_1..g_nh,
+/// w_1..w_np, d_2..d_nd; the knots and thresholds are structure. The file's header says more.
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
           int Nh_ = Eigen::Dynamic, int Nd_ = Eigen::Dynamic, int Np_ = Eigen::Dynamic>
 class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na_, Nb_, R_, Nh_, Nd_, Np_>> {
@@ -56,14 +62,19 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       detail::add_sizes(R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1, Nh_), Np_);  // f, g, w
 
  public:
+  /// \copydoc ARX::Scalar
   using Scalar = Scalar_;
+  /// \copydoc ARX::kNumParams
   static constexpr int kNumParams = detail::add_sizes(detail::add_sizes(kLinearParams, kFeedbackParams),
                                                       Nd_ == Eigen::Dynamic ? Eigen::Dynamic : Nd_ - 1);
+  /// The nonlinear-feedback model has unmeasured internal variables, the fed-back x(k-j) = f(s(k-j)).
   static constexpr bool kHasInternalVariables = true;
   /// No inverse for control yet: it would subtract the feedback of the reference's past from the
   /// linear block's inverse (control/inverse_model.hpp).
   static constexpr bool kInvertible = false;
+  /// \copydoc ARX::kName
   static constexpr const char* kName = "NonlinearFeedback";
+  /// \copydoc ARX::kDescription
   static constexpr ModelDescription<9, 8> kDescription{
       kName,
       "Nonlinear-feedback (Lur'e) model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) + sum_{j=1..nd} d_j f(s(k-j)), "
@@ -93,12 +104,15 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         {"w", ParameterShape::Vector, 1, "w_1..w_np, the plays' weights", nullptr, false, {}},
         {"d", ParameterShape::Vector, 1, "d_1..d_nd with d_1 = 1",
          "the nonlinear-feedback model is normalised so that d_1 = 1", false, {}}}}};
+  /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  /// \copydoc ARX::VectorX
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  /// \copydoc ARX::Linear
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
-  using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;
-  using Plays = PlayOperators<Scalar, Np_>;
-  using Thresholds = typename Plays::Vector;
+  using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;  ///< the hinges' knots (a vector, fixed size when nh is)
+  using Plays = PlayOperators<Scalar, Np_>;  ///< the play operators' type
+  using Thresholds = typename Plays::Vector;  ///< the plays' thresholds (a vector, fixed size when np is)
 
   /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) and the thresholds to i / (np + 1) (in the
   /// units of s): set them where the feedback's slope changes and its loops turn.
@@ -130,16 +144,18 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     m_thresholds = Plays::spread_thresholds(np);
   }
 
-  Eigen::Index na() const noexcept { return m_na; }
-  Eigen::Index nb() const noexcept { return m_nb; }
-  Eigen::Index nk() const noexcept { return m_nk; }
-  Eigen::Index r() const noexcept { return m_r; }
-  Eigen::Index nh() const noexcept { return m_nh; }
-  Eigen::Index nd() const noexcept { return m_nd; }
-  Eigen::Index nv() const noexcept { return m_nv; }
-  Eigen::Index np() const noexcept { return m_np; }
-  Eigen::Index ni() const noexcept { return m_ni; }
+  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
+  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
+  Eigen::Index r() const noexcept { return m_r; }  ///< the order r: degree of the feedback polynomial (f_2..f_r)
+  Eigen::Index nh() const noexcept { return m_nh; }  ///< the order nh: hinges of the feedback
+  Eigen::Index nd() const noexcept { return m_nd; }  ///< the order nd: taps of the feedback's block D (d_1 = 1)
+  Eigen::Index nv() const noexcept { return m_nv; }  ///< the order nv: 0, the output is fed back; 1, its first difference
+  Eigen::Index np() const noexcept { return m_np; }  ///< the order np: play operators in the feedback
+  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  /// \copydoc ARX::orders
   std::array<Eigen::Index, 9> orders() const noexcept {
     return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_np, m_ni};
   }
@@ -153,19 +169,21 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     return nonlinear_feedback_starts(structure, records);
   }
 
+  /// \copydoc ARX::theta
   const Params& theta() const noexcept { return m_theta; }
+  /// \copydoc ARX::set_theta
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX b() const { return m_theta.head(m_nb + 1); }
-  VectorX a() const { return m_theta.segment(first_a(), m_na); }
+  VectorX b() const { return m_theta.head(m_nb + 1); }  ///< the numerator coefficients b_0..b_nb
+  VectorX a() const { return m_theta.segment(first_a(), m_na); }  ///< the denominator coefficients a_1..a_na
   /// f_2..f_r.
   VectorX f() const { return m_theta.segment(first_f(), m_r - 1); }
   /// knots_1..knots_nh, strictly increasing, none at 0.
   const Knots& knots() const noexcept { return m_knots; }
-  VectorX g() const { return m_theta.segment(first_g(), m_nh); }
+  VectorX g() const { return m_theta.segment(first_g(), m_nh); }  ///< the hinges' weights g_1..g_nh
   /// r_1..r_np, strictly increasing, > 0.
   const Thresholds& thresholds() const noexcept { return m_thresholds; }
   /// w_1..w_np.
@@ -177,14 +195,17 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     out.tail(m_nd - 1) = m_theta.segment(first_d(), m_nd - 1);
     return out;
   }
+  /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
   }
+  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.segment(first_a(), m_na), a, "a");
   }
+  /// Sets f_2..f_r (r - 1 finite values, else std::invalid_argument).
   template <typename T>
   void set_f(const Eigen::MatrixBase<T>& f) {
     detail::assign_checked(m_theta.segment(first_f(), m_r - 1), f, "f");
@@ -195,6 +216,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     detail::HingeTerms<Scalar, Nh_>::require_valid(knots, m_nh, "the feedback has slope 0 at 0");
     m_knots = knots;
   }
+  /// Sets the hinges' weights g_1..g_nh (nh finite values, else std::invalid_argument).
   template <typename T>
   void set_g(const Eigen::MatrixBase<T>& g) {
     detail::assign_checked(m_theta.segment(first_g(), m_nh), g, "g");
@@ -205,10 +227,12 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     Plays::require_valid(thresholds, m_np);
     m_thresholds = thresholds;
   }
+  /// Sets the plays' weights w_1..w_np (np finite values, else std::invalid_argument).
   template <typename T>
   void set_w(const Eigen::MatrixBase<T>& w) {
     detail::assign_checked(m_theta.segment(first_w(), m_np), w, "w");
   }
+  /// Sets d_1..d_nd: nd finite values with d_1 = 1 (the normalisation), else std::invalid_argument.
   template <typename T>
   void set_d(const Eigen::MatrixBase<T>& d) {
     detail::require_size(d, m_nd, "d");
@@ -231,6 +255,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       default: detail::no_such_parameter(kName, i);
     }
   }
+  /// \copydoc ARX::set_parameter
   void set_parameter(std::size_t i, const VectorX& value) {
     switch (i) {
       case 0: return set_b(value);
@@ -370,12 +395,14 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// integrators the a-entries hold the differenced past and the target is y(k) less their part.
   class KeyTerms {
    public:
+    /// \copydoc ARX::KeyTerms::KeyTerms
     KeyTerms(const NonlinearFeedback& model, KeyTermMethod /*method*/)
         : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_y(model.lags()), m_z(model.na()),
           m_integrators(model.ni()), m_na(model.na()),
           m_nb(model.nb()), m_nk(model.nk()), m_nd(model.nd()), m_first_f(model.first_f()),
           m_feedback_size(model.r() - 1 + model.nh() + model.np()), m_first_d(model.first_d()), m_plays(model),
           m_phi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_u.clear();
       m_y.clear();
@@ -383,6 +410,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       m_integrators.clear();
       m_plays.reset();
     }
+    /// \copydoc ARX::KeyTerms::step
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       m_u.push(u);
       for (Eigen::Index i = 0; i <= m_nb; ++i) m_phi[i] = m_u[m_nk + i];
@@ -422,6 +450,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// y(k) and dy(k) carry the integrators' part of the past y and dy.
   class OutputErrorTerms {
    public:
+    /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const NonlinearFeedback& model, Eigen::Index /*hold*/ = 0)
         : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()),
           m_nd(model.nd()), m_nv(model.nv()), m_first_f(model.first_f()),
@@ -433,6 +462,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
           m_dy(SensitivityLags::Zero(model.num_params(), model.lags())), m_z(VectorX::Zero(model.na())),
           m_dz(SensitivityLags::Zero(model.num_params(), model.na())),
           m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())), m_psi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept {
       m_u.clear();
       m_y.setZero();
@@ -443,6 +473,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       m_dplays.setZero();
       m_dplayed.setZero();
     }
+    /// \copydoc ARX::OutputErrorTerms::step
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       m_u.push(u);
       Scalar y = Scalar(0);
@@ -486,6 +517,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       m_output = y;
       return {y, m_psi, x1};
     }
+    /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept {
       for (Eigen::Index j = m_z.size() - 1; j > 0; --j) {
         m_z[j] = m_z[j - 1];
@@ -510,6 +542,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       for (Eigen::Index j = 0; j < m_y.size(); ++j) m_y[j] += m_dy.col(j).dot(delta);
       for (Eigen::Index j = 0; j < m_z.size(); ++j) m_z[j] += m_dz.col(j).dot(delta);
     }
+    /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept {
       return detail::roots_inside(theta.template segment<Na_>(m_nb + 1, m_na), radius, m_work);
     }

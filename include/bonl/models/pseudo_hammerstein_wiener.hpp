@@ -13,6 +13,9 @@
 
 namespace bonl {
 
+/// The Pseudo-Hammerstein-Wiener (P-H-W) model: the Hammerstein model followed by a symmetric,
+/// unit-slope backlash of half-width c (eqs. 10-12), starting engaged at y(-1) = 0. Parameters in
+/// eq. (19) order: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na, c.
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic>
 class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 1>,
                                 public detail::ModelRuns<PseudoHammersteinWiener<Scalar_, Na_, Nb_, R_>> {
@@ -22,7 +25,9 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   using typename Front::Params;
   using typename Front::Scalar;
   using typename Front::VectorX;
+  /// \copydoc ARX::kName
   static constexpr const char* kName = "PseudoHammersteinWiener";
+  /// \copydoc ARX::kDescription
   static constexpr ModelDescription<5, 5> kDescription{
       kName,
       "Pseudo-Hammerstein-Wiener model: the Hammerstein model followed by a symmetric, unit-slope "
@@ -33,9 +38,13 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
                      std::array<ParameterDescription, 1>{
                          {{"c", ParameterShape::Number, 0, "backlash half-width", nullptr, true, {1, 0, 0, 0}}}})};
 
+  /// A model with the orders na >= 1, nb >= 1, nk >= 0, r >= 0 and ni in 0..2, all parameters zero
+  /// (c = 0 included). Throws std::invalid_argument for an order out of range or one that differs from
+  /// the compile-time order.
   PseudoHammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index ni = 0)
       : Front(na, nb, nk, r, 1, ni) {}
 
+  /// \copydoc ARX::orders
   std::array<Eigen::Index, 5> orders() const noexcept {
     return {this->na(), this->nb(), this->nk(), this->r(), this->ni()};
   }
@@ -45,6 +54,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     if (i == Front::kFrontBlocks) return VectorX::Constant(1, c());
     detail::no_such_parameter(kName, i);
   }
+  /// \copydoc ARX::set_parameter
   void set_parameter(std::size_t i, const VectorX& value) {
     if (i < Front::kFrontBlocks) return this->set_front_parameter(i, value);
     if (i == Front::kFrontBlocks) {
@@ -56,10 +66,13 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
 
   /// Backlash half-width c (the model is valid for c >= 0).
   Scalar c() const noexcept { return this->m_theta[this->num_params() - 1]; }
+  /// Sets the backlash half-width; throws std::invalid_argument unless c is finite and >= 0.
   void set_c(Scalar c) {
     detail::require(std::isfinite(c) && c >= Scalar(0), "c (backlash half-width) must be finite and >= 0");
     this->m_theta[this->num_params() - 1] = c;
   }
+  /// The backlash block with the half-width c (a negative c, possible in an estimate before it is
+  /// projected, counts as 0).
   Backlash<Scalar> backlash() const { return Backlash<Scalar>(std::max(c(), Scalar(0))); }
 
   /// All parameters in the order of eq. (19); c, the last, must be >= 0 as for set_c (an estimate
@@ -102,14 +115,17 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   /// about theta and the sample is not informative. Past x are clipped to [y - c, y + c].
   class KeyTerms {
    public:
+    /// \copydoc ARX::KeyTerms::KeyTerms
     KeyTerms(const PseudoHammersteinWiener& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()), m_method(method),
           m_last(model.num_params() - 1), m_phi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_front.reset();
       m_y_prev = Scalar(0);
       m_x_prev = Scalar(0);
     }
+    /// \copydoc ARX::KeyTerms::step
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_front.pending()) m_x_prev = m_front.store_a_posteriori(theta, m_phi);
       const Scalar carried = m_front.carried();
@@ -164,15 +180,18 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   /// learnt first, as a Hammerstein model's.
   class OutputErrorTerms {
    public:
+    /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const PseudoHammersteinWiener& model, Eigen::Index hold = 0)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_last(model.num_params() - 1),
           m_psi(Params::Zero(model.num_params())), m_dy(m_psi), m_hold(hold) {}
+    /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept {
       m_front.reset();
       m_y = Scalar(0);
       m_dy.setZero();
       m_samples = 0;
     }
+    /// \copydoc ARX::OutputErrorTerms::step
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x = m_front.step(theta, u);
       const Scalar c = std::max(theta[m_last], Scalar(0));
@@ -201,11 +220,13 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
       m_y = m_output;
       m_dy = m_psi;
     }
+    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
     void accept(const Params& delta) noexcept {
       accept();
       m_front.correct(delta.head(m_last));
       m_y += m_dy.dot(delta);
     }
+    /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
 
    private:

@@ -22,17 +22,26 @@
 
 namespace bonl {
 
+/// The Wiener model: the linear block (with delay), then the output polynomial: x(k) = -sum_{j=1..na}
+/// a_j x(k-j) + sum_{i=0..nb} b_i u(k-nk-i), y(k) = sum_{m=1..r1} q_m x(k)^m, normalised to q_1 = 1
+/// (the gain lives in B, so b_0 is free). Parameters: b_0..b_nb, a_1..a_na, q_2..q_r1; q(), set_q()
+/// and output_block() come from a shared base.
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R1_ = Eigen::Dynamic>
 class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
                public detail::OutputPolynomialParameters<Wiener<Scalar_, Na_, Nb_, R1_>> {
   static constexpr int kLinearParams = detail::add_sizes(detail::poly_size(Nb_), Na_);  // b_0..b_nb, a
 
  public:
+  /// \copydoc ARX::Scalar
   using Scalar = Scalar_;
+  /// \copydoc ARX::kNumParams
   static constexpr int kNumParams =
       detail::add_sizes(kLinearParams, R1_ == Eigen::Dynamic ? Eigen::Dynamic : R1_ - 1);
+  /// The Wiener model has an unmeasured internal variable, x: its key terms estimate it.
   static constexpr bool kHasInternalVariables = true;
+  /// \copydoc ARX::kName
   static constexpr const char* kName = "Wiener";
+  /// \copydoc ARX::kDescription
   static constexpr ModelDescription<5, 3> kDescription{
       kName,
       "Wiener model: the linear block x(k) = -sum a_j x(k-j) + sum_{i=0..nb} b_i u(k-nk-i), then "
@@ -47,11 +56,17 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
         {"q", ParameterShape::Vector, 1, "q_1..q_r1 with q_1 = 1", "the Wiener model is normalised so that q_1 = 1",
          false, {1, -1, 0, 0}}}}};
+  /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  /// \copydoc ARX::VectorX
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  /// \copydoc ARX::Linear
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
-  using OutputBlock = OutputPolynomial<Scalar, R1_>;
+  using OutputBlock = OutputPolynomial<Scalar, R1_>;  ///< the output polynomial's type (output_block() returns it)
 
+  /// A model with the orders na >= 1, nb >= 0, nk >= 0, r1 in 2..32 (degree of the output polynomial)
+  /// and ni in 0..2; the parameters zero but q_1 = 1. Throws std::invalid_argument for an order out of
+  /// range or one that differs from the compile-time order.
   Wiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r1, Eigen::Index ni = 0)
       : m_na(na), m_nb(nb), m_nk(nk), m_r1(r1), m_ni(ni) {
     detail::require_order(na, 1, "na");
@@ -66,26 +81,32 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     m_theta = Params::Zero(nb + 1 + na + r1 - 1);
   }
 
-  Eigen::Index na() const noexcept { return m_na; }
-  Eigen::Index nb() const noexcept { return m_nb; }
-  Eigen::Index nk() const noexcept { return m_nk; }
-  Eigen::Index r1() const noexcept { return m_r1; }
-  Eigen::Index ni() const noexcept { return m_ni; }
+  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
+  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
+  Eigen::Index r1() const noexcept { return m_r1; }  ///< the order r1: degree of the output polynomial
+  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  /// \copydoc ARX::orders
   std::array<Eigen::Index, 5> orders() const noexcept { return {m_na, m_nb, m_nk, m_r1, m_ni}; }
 
+  /// \copydoc ARX::theta
   const Params& theta() const noexcept { return m_theta; }
+  /// \copydoc ARX::set_theta
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX b() const { return m_theta.head(m_nb + 1); }
-  VectorX a() const { return m_theta.segment(m_nb + 1, m_na); }
+  VectorX b() const { return m_theta.head(m_nb + 1); }  ///< the numerator coefficients b_0..b_nb (b_0 free)
+  VectorX a() const { return m_theta.segment(m_nb + 1, m_na); }  ///< the denominator coefficients a_1..a_na
+  /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
   }
+  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.segment(m_nb + 1, m_na), a, "a");
@@ -98,6 +119,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     if (i == 2) return this->q();
     detail::no_such_parameter(kName, i);
   }
+  /// \copydoc ARX::set_parameter
   void set_parameter(std::size_t i, const VectorX& value) {
     if (i == 0) return set_b(value);
     if (i == 1) return set_a(value);
@@ -127,13 +149,16 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   /// the x lags are differenced and the target is y(k) less their part of x(k).
   class KeyTerms {
    public:
+    /// \copydoc ARX::KeyTerms::KeyTerms
     KeyTerms(const Wiener& model, KeyTermMethod method)
         : m_linear(model.na(), model.nb(), model.nk(), model.ni()), m_output(model.r1(), model.num_params()), m_method(method),
           m_linear_size(model.nb() + 1 + model.na()), m_phi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_linear.reset();
       m_pending = false;
     }
+    /// \copydoc ARX::KeyTerms::step
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_pending) m_linear.end(linear_part(theta));
       m_linear.begin(u, m_phi);
@@ -169,16 +194,19 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   /// dy/d[b, a] = q'(x) dx/d[b, a] and dy/dq_m = x^m. Nothing to hold at the start.
   class OutputErrorTerms {
    public:
-    using Sensitivity = Eigen::Matrix<Scalar, kLinearParams, 1>;
+    using Sensitivity = Eigen::Matrix<Scalar, kLinearParams, 1>;  ///< d x(k) / d[b, a], the linear block's part of the sensitivity
 
+    /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const Wiener& model, Eigen::Index /*hold*/ = 0)
         : m_linear(model.na(), model.nb(), model.nk(), model.nb() + 1 + model.na(), model.ni()),
           m_output(model.r1(), model.num_params()), m_dx(Sensitivity::Zero(model.nb() + 1 + model.na())),
           m_psi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept {
       m_linear.reset();
       m_dx.setZero();
     }
+    /// \copydoc ARX::OutputErrorTerms::step
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       Scalar slope;
       const Scalar x = m_linear.step(theta, u, m_dx);
@@ -186,11 +214,14 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
       m_psi.head(m_dx.size()) = slope * m_dx;
       return {y, m_psi, x};
     }
+    /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_linear.commit(m_dx); }
+    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
     void accept(const Params& delta) noexcept {
       accept();
       m_linear.correct(delta.template head<kLinearParams>(m_dx.size()));
     }
+    /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }
 
    private:

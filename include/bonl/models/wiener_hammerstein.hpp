@@ -39,6 +39,11 @@
 
 namespace bonl {
 
+/// The Wiener-Hammerstein model: a linear block B1/A1 (with the delay), a static nonlinearity w =
+/// x1 + sum_{m=2..r} f_m x1^m + sum_j g_j h(x1 - knots_j), a second linear block B2/A2 (with the
+/// integrators), normalised to f_1 = 1 and b2_0 = 1. Parameters: b1_0..b1_nb1, a1_1..a1_na1,
+/// f_2..f_r, g_1..g_nh, b2_1..b2_nb2, a2_1..a2_na2; the knots are structure. The file's header says
+/// more.
 template <typename Scalar_ = double, int Na1_ = Eigen::Dynamic, int Nb1_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
           int Nh_ = Eigen::Dynamic, int Na2_ = Eigen::Dynamic, int Nb2_ = Eigen::Dynamic>
 class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na1_, Nb1_, R_, Nh_, Na2_, Nb2_>> {
@@ -47,10 +52,15 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       detail::add_sizes(kFirstParams, R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1), Nh_);  // and f, g
 
  public:
+  /// \copydoc ARX::Scalar
   using Scalar = Scalar_;
+  /// \copydoc ARX::kNumParams
   static constexpr int kNumParams = detail::add_sizes(kFrontParams, detail::add_sizes(Nb2_, Na2_));
+  /// The Wiener-Hammerstein model has unmeasured internal variables, x1 and w.
   static constexpr bool kHasInternalVariables = true;
+  /// \copydoc ARX::kName
   static constexpr const char* kName = "WienerHammerstein";
+  /// \copydoc ARX::kDescription
   static constexpr ModelDescription<8, 7> kDescription{
       kName,
       "Wiener-Hammerstein model: the linear block x1 = z^-nk B1/A1 u, then the static nonlinearity "
@@ -76,15 +86,17 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
         {"b2", ParameterShape::Vector, 0, "b2_0..b2_nb2 with b2_0 = 1",
          "the Wiener-Hammerstein model is normalised so that b2_0 = 1", false, {}},
         {"a2", ParameterShape::Vector, 1, "a2_1..a2_na2", nullptr, false, {}}}}};
+  /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  /// \copydoc ARX::VectorX
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  using First = LinearBlock<Scalar, Na1_, Nb1_>;
-  using Second = LinearBlock<Scalar, Na2_, Nb2_>;
-  using Middle = OutputPolynomial<Scalar, R_>;
+  using First = LinearBlock<Scalar, Na1_, Nb1_>;  ///< the first linear block's type (first_block() returns it)
+  using Second = LinearBlock<Scalar, Na2_, Nb2_>;  ///< the second linear block's type (second_block() returns it)
+  using Middle = OutputPolynomial<Scalar, R_>;  ///< the static nonlinearity's polynomial part, as an output polynomial
   /// Both linear blocks' denominators: what pole_radius() and the refinement's stabilisation look at.
   static constexpr std::size_t kLinearBlocks = 2;
 
-  using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;
+  using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;  ///< the hinges' knots (a vector, fixed size when nh is)
 
   /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of x1, which are y's): set
   /// them where the slope changes, or let identify() place them from the data.
@@ -111,44 +123,52 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     m_knots = detail::HingeTerms<Scalar, Nh_>::default_knots(nh);
   }
 
-  Eigen::Index na1() const noexcept { return m_na1; }
-  Eigen::Index nb1() const noexcept { return m_nb1; }
+  Eigen::Index na1() const noexcept { return m_na1; }  ///< the order na1: poles of the first linear block
+  Eigen::Index nb1() const noexcept { return m_nb1; }  ///< the order nb1: B1 has nb1 + 1 coefficients b1_0..b1_nb1
+  /// \copydoc ARX::nk
   Eigen::Index nk() const noexcept { return m_nk; }
-  Eigen::Index r() const noexcept { return m_r; }
-  Eigen::Index nh() const noexcept { return m_nh; }
-  Eigen::Index na2() const noexcept { return m_na2; }
-  Eigen::Index nb2() const noexcept { return m_nb2; }
+  Eigen::Index r() const noexcept { return m_r; }  ///< the order r: degree of the static polynomial (f_1 = 1 .. f_r)
+  Eigen::Index nh() const noexcept { return m_nh; }  ///< the order nh: hinges of the static nonlinearity
+  Eigen::Index na2() const noexcept { return m_na2; }  ///< the order na2: poles of the second linear block
+  Eigen::Index nb2() const noexcept { return m_nb2; }  ///< the order nb2: B2 has nb2 + 1 coefficients, b2_0 = 1
   /// The integrators of the second block, the one at the output.
   Eigen::Index ni() const noexcept { return m_ni; }
+  /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  /// \copydoc ARX::orders
   std::array<Eigen::Index, 8> orders() const noexcept {
     return {m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2, m_ni};
   }
 
+  /// \copydoc ARX::theta
   const Params& theta() const noexcept { return m_theta; }
+  /// \copydoc ARX::set_theta
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX b1() const { return m_theta.head(m_nb1 + 1); }
-  VectorX a1() const { return m_theta.segment(first_a(), m_na1); }
+  VectorX b1() const { return m_theta.head(m_nb1 + 1); }  ///< the first block's numerator b1_0..b1_nb1 (the gain lives here)
+  VectorX a1() const { return m_theta.segment(first_a(), m_na1); }  ///< the first block's denominator a1_1..a1_na1
   /// f_1..f_r with f_1 = 1.
   VectorX f() const { return with_leading_one(m_theta.segment(first_f(), m_r - 1)); }
   /// knots_1..knots_nh, strictly increasing, none at 0.
   const Knots& knots() const noexcept { return m_knots; }
-  VectorX g() const { return m_theta.segment(first_g(), m_nh); }
+  VectorX g() const { return m_theta.segment(first_g(), m_nh); }  ///< the hinges' weights g_1..g_nh
   /// b2_0..b2_nb2 with b2_0 = 1.
   VectorX b2() const { return with_leading_one(m_theta.segment(first_b2(), m_nb2)); }
-  VectorX a2() const { return m_theta.segment(first_a2(), m_na2); }
+  VectorX a2() const { return m_theta.segment(first_a2(), m_na2); }  ///< the second block's denominator a2_1..a2_na2
+  /// Sets b1_0..b1_nb1 (nb1 + 1 finite values, else std::invalid_argument).
   template <typename T>
   void set_b1(const Eigen::MatrixBase<T>& b1) {
     detail::assign_checked(m_theta.head(m_nb1 + 1), b1, "b1");
   }
+  /// Sets a1_1..a1_na1 (na1 finite values, else std::invalid_argument).
   template <typename T>
   void set_a1(const Eigen::MatrixBase<T>& a1) {
     detail::assign_checked(m_theta.segment(first_a(), m_na1), a1, "a1");
   }
+  /// Sets f_1..f_r: r finite values with f_1 = 1 (the normalisation), else std::invalid_argument.
   template <typename T>
   void set_f(const Eigen::MatrixBase<T>& f) {
     set_normalised(f, m_r, first_f(), "f", "f[0] (f_1)", 2);
@@ -159,14 +179,18 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     detail::HingeTerms<Scalar, Nh_>::require_valid(knots, m_nh, "the slope at 0 is f_1 = 1");
     m_knots = knots;
   }
+  /// Sets the hinges' weights g_1..g_nh (nh finite values, else std::invalid_argument).
   template <typename T>
   void set_g(const Eigen::MatrixBase<T>& g) {
     detail::assign_checked(m_theta.segment(first_g(), m_nh), g, "g");
   }
+  /// Sets b2_0..b2_nb2: nb2 + 1 finite values with b2_0 = 1 (the normalisation), else
+  /// std::invalid_argument.
   template <typename T>
   void set_b2(const Eigen::MatrixBase<T>& b2) {
     set_normalised(b2, m_nb2 + 1, first_b2(), "b2", "b2[0] (b2_0)", 5);
   }
+  /// Sets a2_1..a2_na2 (na2 finite values, else std::invalid_argument).
   template <typename T>
   void set_a2(const Eigen::MatrixBase<T>& a2) {
     detail::assign_checked(m_theta.segment(first_a2(), m_na2), a2, "a2");
@@ -185,6 +209,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       default: detail::no_such_parameter(kName, i);
     }
   }
+  /// \copydoc ARX::set_parameter
   void set_parameter(std::size_t i, const VectorX& value) {
     switch (i) {
       case 0: return set_b1(value);
@@ -207,20 +232,24 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     return wiener_hammerstein_starts(structure, records);
   }
 
-  /// Linear block i (0: B1/A1 with the delay, 1: B2/A2) and its denominator.
+  /// The first linear block B1/A1, with the delay, at rest.
   First first_block() const {
     First block(m_na1, m_nb1, m_nk);
     block.set_a(a1());
     block.set_b(b1());
     return block;
   }
+  /// The second linear block B2/A2, with the integrators, at rest.
   Second second_block() const {
     Second block(m_na2, m_nb2, 0, m_ni);
     block.set_a(a2());
     block.set_b(b2());
     return block;
   }
+  /// The denominator of linear block i (0: a1, 1: a2), for the stabilisation that works on each block.
   VectorX denominator(std::size_t i) const { return i == 0 ? a1() : a2(); }
+  /// Sets the denominator of linear block i (0: a1, else a2); throws std::invalid_argument for a wrong
+  /// length or a non-finite entry.
   template <typename T>
   void set_denominator(std::size_t i, const Eigen::MatrixBase<T>& a) {
     if (i == 0) return set_a1(a);
@@ -306,11 +335,13 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// their part.
   class KeyTerms {
    public:
+    /// \copydoc ARX::KeyTerms::KeyTerms
     KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
         : m_first(model.na1(), model.nb1(), model.nk()),
           m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_integrators(model.ni()), m_method(method),
           m_first_size(model.nb1() + 1 + model.na1()), m_second(model.first_b2()), m_nb2(model.nb2()),
           m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_first.reset();
       m_w.clear();
@@ -318,6 +349,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       m_integrators.clear();
       m_pending = false;
     }
+    /// \copydoc ARX::KeyTerms::step
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       if (m_pending) store(theta, first_part(theta));
       m_first.begin(u, m_phi);
@@ -377,9 +409,10 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// so the past w and their sensitivities are kept (nb2 of them) as the past y and theirs (SimulatedLags).
   class OutputErrorTerms {
    public:
-    using FirstSensitivity = Eigen::Matrix<Scalar, kFirstParams, 1>;
-    using FrontSensitivity = Eigen::Matrix<Scalar, kFrontParams, 1>;
+    using FirstSensitivity = Eigen::Matrix<Scalar, kFirstParams, 1>;  ///< d x1(k) / d[b1, a1], the first block's part of the sensitivity
+    using FrontSensitivity = Eigen::Matrix<Scalar, kFrontParams, 1>;  ///< d w(k) / d[b1, a1, f, g], the front's part of the sensitivity
 
+    /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const WienerHammerstein& model, Eigen::Index /*hold*/ = 0)
         : m_first(model.na1(), model.nb1(), model.nk(), model.nb1() + 1 + model.na1()),
           m_middle(model), m_y(model.na2(), model.num_params(), model.ni()), m_nb2(model.nb2()), m_na2(model.na2()),
@@ -388,6 +421,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
           m_w_lags(Eigen::Matrix<Scalar, Nb2_, 1>::Zero(model.nb2())),
           m_dw_lags(Eigen::Matrix<Scalar, kFrontParams, Nb2_>::Zero(m_front_size, model.nb2())),
           m_work(Eigen::Matrix<Scalar, Na2_, 1>::Zero(model.na2())), m_psi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept {
       m_first.reset();
       m_y.reset();
@@ -395,6 +429,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       m_w_lags.setZero();
       m_dw_lags.setZero();
     }
+    /// \copydoc ARX::OutputErrorTerms::step
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x1 = m_first.step(theta, u, m_dx);
       Scalar slope;
@@ -415,6 +450,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       m_output = y;
       return {y, m_psi, x1};
     }
+    /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept {
       m_first.commit(m_dx);
       for (Eigen::Index i = m_nb2 - 1; i > 0; --i) {
@@ -427,12 +463,14 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       }
       m_y.push(m_output, m_psi);
     }
+    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
     void accept(const Params& delta) noexcept {
       accept();
       m_first.correct(delta.template head<kFirstParams>(m_first_size));
       for (Eigen::Index i = 0; i < m_nb2; ++i) m_w_lags[i] += m_dw_lags.col(i).dot(delta.head(m_front_size));
       m_y.correct(delta);
     }
+    /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept {
       return m_first.stable(theta, radius) &&
              detail::roots_inside(theta.segment(m_front_size + m_nb2, m_na2), radius, m_work);

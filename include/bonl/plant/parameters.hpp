@@ -6,6 +6,9 @@
 
 namespace bonl::plant {
 
+/// The excavator dipper-joint plant's parameters (valve, asymmetric cylinder, linkage, backlash) as
+/// docs/plant.md specifies them, each member's comment giving the symbol and unit; validate() rejects
+/// non-physical values with a message that names the parameter.
 struct Parameters {
   // Cylinder
   double bore_diameter = 0.140;        ///< D [m]

@@ -20,8 +20,9 @@ namespace bonl::plant {
 /// Command voltage V(t) [V] on the 0-5 V scale (neutral 2.5 V).
 using Command = std::function<double(double)>;
 
+/// CVODE's error tolerances and step limit.
 struct Tolerances {
-  double relative = 1e-6;
+  double relative = 1e-6;  ///< relative tolerance
   double absolute_position = 1e-8;   ///< h [m]
   double absolute_velocity = 1e-8;   ///< v [m/s]
   double absolute_pressure = 1.0;    ///< p1, p2 [Pa]
@@ -29,16 +30,18 @@ struct Tolerances {
   long max_steps_per_interval = 5000;  ///< CVODE steps per command-grid interval
 };
 
+/// What a simulation runs: its duration and grids, CVODE's tolerances, the load, the sensor noise and
+/// the initial position.
 struct SimulationOptions {
   double duration = 50.0;        ///< [s]
   double sample_time = 0.01;     ///< output grid [s]; an integer multiple of 1 / command_rate
   double command_rate = 1000.0;  ///< command grid [Hz]
-  Tolerances tolerances;
+  Tolerances tolerances;  ///< CVODE's tolerances
   /// External load F_L(t) [N] opposing extension; empty means none.
   std::function<double(double)> load;
   /// Sensor noise on the measured angle: added with this seed when sensor_noise is true.
   bool sensor_noise = true;
-  std::uint64_t noise_seed = 1;
+  std::uint64_t noise_seed = 1;  ///< the sensor noise's seed
   /// Initial piston position [m]; negative means mid-stroke (plant.md's start).
   double initial_position = -1.0;
 };
@@ -69,25 +72,27 @@ struct Trajectory {
 /// CVODE failed: its return flag and the time it had reached.
 class CvodeError : public NumericalError {
  public:
+  /// The error message, CVODE's return flag and the time [s] it had reached.
   CvodeError(const std::string& message, int flag, double time)
       : NumericalError(message), m_flag(flag), m_time(time) {}
-  int flag() const noexcept { return m_flag; }
-  double time() const noexcept { return m_time; }
+  int flag() const noexcept { return m_flag; }  ///< CVODE's return flag
+  double time() const noexcept { return m_time; }  ///< the simulated time [s] reached when CVODE failed
 
  private:
   int m_flag;
   double m_time;
 };
 
-/// Initial state of plant.md's experiment at piston position h0: at rest, spool closed,
-/// p2 = ps / 4, p1 from the force balance A1 p1 = A2 p2 + Fs(h0).
+/// The plant's state: the integrated variables of plant.md.
 struct State {
-  double position = 0.0;
-  double velocity = 0.0;
-  double head_pressure = 0.0;
-  double rod_pressure = 0.0;
-  double spool = 0.0;
+  double position = 0.0;       ///< piston position h [m]
+  double velocity = 0.0;       ///< piston velocity v [m/s]
+  double head_pressure = 0.0;  ///< head-side chamber pressure p1 [Pa]
+  double rod_pressure = 0.0;   ///< rod-side chamber pressure p2 [Pa]
+  double spool = 0.0;          ///< valve spool position xv [-]
 };
+/// Initial state of plant.md's experiment at piston position h0 = position [m]: at rest, spool
+/// closed, p2 = ps / 4, p1 from the force balance A1 p1 = A2 p2 + Fs(h0).
 State initial_state(const Parameters& parameters, double position);
 
 /// Right-hand side of the plant's ODE for a held pilot output xc and load F_L: d(state)/dt.

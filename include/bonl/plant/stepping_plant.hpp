@@ -58,8 +58,8 @@ class SteppingPlant {
   explicit SteppingPlant(const Parameters& parameters, const SimulationOptions& options = {});
   SteppingPlant(const SteppingPlant&) = delete;
   SteppingPlant& operator=(const SteppingPlant&) = delete;
-  SteppingPlant(SteppingPlant&&) noexcept;
-  SteppingPlant& operator=(SteppingPlant&&) noexcept;
+  SteppingPlant(SteppingPlant&&) noexcept;  ///< movable (the CVODE state moves with it), not copyable
+  SteppingPlant& operator=(SteppingPlant&&) noexcept;  ///< movable, not copyable
   ~SteppingPlant();
 
   /// Holds `command` [V] over one sample and returns the measurement at the sample's end. A
@@ -88,8 +88,8 @@ class SteppingPlant {
   const Measurement& measurement() const;  ///< the latest: at time()
   double time() const;                     ///< t_k [s]
   long steps() const;                      ///< CVODE's internal steps since the start or reset()
-  const Parameters& parameters() const noexcept { return m_parameters; }
-  const SimulationOptions& options() const noexcept { return m_options; }
+  const Parameters& parameters() const noexcept { return m_parameters; }  ///< the plant's parameters
+  const SimulationOptions& options() const noexcept { return m_options; }  ///< the simulation options it was started with
 
  private:
   const detail::Integrator& integrator() const;

@@ -35,6 +35,13 @@
 
 namespace bonl {
 
+/// The Prandtl-Ishlinskii Hammerstein model: the input hysteresis of a valve's pilot stage,
+/// w = sum_{l=0..r} f_l u^l + sum_{i=1..np} g_i play_{r_i}[u] (PrandtlIshlinskiiInput, the plays of
+/// PlayOperators at rest before the record), then the linear block (b_0 = 1); y = x. The thresholds
+/// r_1 < ... < r_np are structure, not estimated: the defaults r_i = i / (np + 1), set_thresholds(), a
+/// model file, or placed from the data by identify(). For fixed thresholds w is linear in [f, g], so
+/// the key-term form is the Hammerstein model's with a longer basis. Parameters: f_0..f_r, g_1..g_np,
+/// b_1..b_nb, a_1..a_na. Np_ fixes np at compile time like the other orders; the interface is ARX's.
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int R_ = Eigen::Dynamic,
           int Np_ = Eigen::Dynamic>
 class PrandtlIshlinskiiHammerstein
@@ -42,15 +49,21 @@ class PrandtlIshlinskiiHammerstein
   static constexpr int kBasis = detail::add_sizes(detail::poly_size(R_), Np_);  // f, g
 
  public:
+  /// \copydoc ARX::Scalar
   using Scalar = Scalar_;
+  /// \copydoc ARX::kNumParams
   static constexpr int kNumParams = detail::add_sizes(kBasis, detail::add_sizes(Nb_, Na_));
+  /// The Prandtl-Ishlinskii Hammerstein model has an unmeasured internal variable, w, the hysteresis'
+  /// output; the paper's method also runs its own x.
   static constexpr bool kHasInternalVariables = true;
   /// The inverse for control (control/inverse_model.hpp) inverts input_block() with
   /// control/prandtl_ishlinskii_inverse.hpp: for the plays' memory, a bracketing search for the
   /// command over the clamps' breakpoints where w is monotone in u for every state of the plays (the
   /// closed-form inverse PI operator, Kuhnen 2003, covers only f = (0, f_1) and positive weights).
   static constexpr bool kInvertible = true;
+  /// \copydoc ARX::kName
   static constexpr const char* kName = "PrandtlIshlinskiiHammerstein";
+  /// \copydoc ARX::kDescription
   static constexpr ModelDescription<6, 5> kDescription{
       kName,
       "Prandtl-Ishlinskii Hammerstein model: input hysteresis w = sum_{l=0..r} f_l u^l + sum_{i=1..np} g_i "
@@ -66,13 +79,19 @@ class PrandtlIshlinskiiHammerstein
          "r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated)", nullptr, false,
          {0, 0, 1, 0}, true},
         {"g", ParameterShape::Vector, 1, "g_1..g_np, the plays' weights", nullptr, false, {1, 0, -1, 0}}}}};
+  /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  /// \copydoc ARX::VectorX
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  /// \copydoc ARX::Linear
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
-  using Plays = PlayOperators<Scalar, Np_>;
-  using InputBlock = PrandtlIshlinskiiInput<Scalar, R_, Np_>;
-  using Thresholds = typename Plays::Vector;
+  using Plays = PlayOperators<Scalar, Np_>;  ///< the play operators' type
+  using InputBlock = PrandtlIshlinskiiInput<Scalar, R_, Np_>;  ///< the input hysteresis' type (input_block() returns it)
+  using Thresholds = typename Plays::Vector;  ///< the plays' thresholds (a vector, fixed size when np is)
 
+  /// A model with the orders na >= 1, nb >= 0, nk >= 0, r >= 1 (degree of the input polynomial), np in
+  /// 1..32 (play operators) and ni in 0..2, all parameters zero. Throws std::invalid_argument for an
+  /// order out of range or one that differs from the compile-time order.
   /// The thresholds default to r_i = i / (np + 1) (in the units of u, from the operating point): set
   /// them where the hysteresis turns, or let identify() place them from the data.
   PrandtlIshlinskiiHammerstein(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index np,
@@ -93,31 +112,37 @@ class PrandtlIshlinskiiHammerstein
     m_thresholds = Plays::spread_thresholds(np);
   }
 
-  Eigen::Index na() const noexcept { return m_na; }
-  Eigen::Index nb() const noexcept { return m_nb; }
-  Eigen::Index nk() const noexcept { return m_nk; }
-  Eigen::Index r() const noexcept { return m_r; }
-  Eigen::Index np() const noexcept { return m_np; }
-  Eigen::Index ni() const noexcept { return m_ni; }
+  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
+  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
+  Eigen::Index r() const noexcept { return m_r; }  ///< the order r: degree of the input polynomial (f_0..f_r)
+  Eigen::Index np() const noexcept { return m_np; }  ///< the order np: play operators of the input hysteresis
+  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  /// \copydoc ARX::orders
   std::array<Eigen::Index, 6> orders() const noexcept { return {m_na, m_nb, m_nk, m_r, m_np, m_ni}; }
 
+  /// \copydoc ARX::theta
   const Params& theta() const noexcept { return m_theta; }
+  /// \copydoc ARX::set_theta
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX f() const { return m_theta.head(m_r + 1); }
+  VectorX f() const { return m_theta.head(m_r + 1); }  ///< the input polynomial's coefficients f_0..f_r
   /// The input hysteresis w = f(u) + g . plays[u], its plays at rest: what the free run steps and
   /// the inverse for control (control/prandtl_ishlinskii_inverse.hpp) inverts.
   InputBlock input_block() const { return InputBlock(f(), m_thresholds, g()); }
+  /// The plays' thresholds r_1..r_np: strictly increasing, > 0 (structure, not estimated).
   const Thresholds& thresholds() const noexcept { return m_thresholds; }
-  VectorX g() const { return m_theta.segment(m_r + 1, m_np); }
+  VectorX g() const { return m_theta.segment(m_r + 1, m_np); }  ///< the plays' weights g_1..g_np
   /// b_0..b_nb; b_0 is 1 (the key-term normalisation).
   VectorX b() const { return detail::normalised_b<VectorX>(m_theta.segment(basis_size(), m_nb)); }
-  VectorX a() const { return m_theta.segment(basis_size() + m_nb, m_na); }
+  VectorX a() const { return m_theta.segment(basis_size() + m_nb, m_na); }  ///< the denominator coefficients a_1..a_na
 
+  /// Sets f_0..f_r (r + 1 finite values, else std::invalid_argument).
   template <typename T>
   void set_f(const Eigen::MatrixBase<T>& f) {
     detail::assign_checked(m_theta.head(m_r + 1), f, "f");
@@ -128,6 +153,7 @@ class PrandtlIshlinskiiHammerstein
     Plays::require_valid(thresholds, m_np);
     m_thresholds = thresholds;
   }
+  /// Sets g_1..g_np (np finite values, else std::invalid_argument).
   template <typename T>
   void set_g(const Eigen::MatrixBase<T>& g) {
     detail::assign_checked(m_theta.segment(m_r + 1, m_np), g, "g");
@@ -137,6 +163,7 @@ class PrandtlIshlinskiiHammerstein
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_normalised_b(b, m_theta.segment(basis_size(), m_nb));
   }
+  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.segment(basis_size() + m_nb, m_na), a, "a");
@@ -153,6 +180,7 @@ class PrandtlIshlinskiiHammerstein
       default: detail::no_such_parameter(kName, i);
     }
   }
+  /// \copydoc ARX::set_parameter
   void set_parameter(std::size_t i, const VectorX& value) {
     switch (i) {
       case 0: return set_b(value);
@@ -242,9 +270,11 @@ class PrandtlIshlinskiiHammerstein
   /// is y(k) less their part, known from the past x.
   class KeyTerms {
    public:
+    /// \copydoc ARX::KeyTerms::KeyTerms
     KeyTerms(const PrandtlIshlinskiiHammerstein& model, KeyTermMethod method)
         : m_basis(model), m_w(model.nb()), m_z(model.na()), m_integrators(model.ni()), m_method(method),
           m_nb(model.nb()), m_na(model.na()), m_phi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_basis.reset();
       m_w.clear();
@@ -252,6 +282,7 @@ class PrandtlIshlinskiiHammerstein
       m_integrators.clear();
       m_pending = false;
     }
+    /// \copydoc ARX::KeyTerms::step
     Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
       const Eigen::Index n = m_basis.size();
       const auto weights = theta.template head<kBasis>(n);
@@ -302,14 +333,17 @@ class PrandtlIshlinskiiHammerstein
   /// are exact for any estimate (w has no memory that depends on theta).
   class OutputErrorTerms {
    public:
+    /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const PrandtlIshlinskiiHammerstein& model, Eigen::Index /*hold*/ = 0)
         : m_basis(model), m_lags(model.na(), model.num_params(), model.ni()), m_nb(model.nb()), m_na(model.na()),
           m_psi(Params::Zero(model.num_params())), m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())) {}
+    /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept {
       m_basis.reset();
       m_lags.reset();
       m_x = Scalar(0);
     }
+    /// \copydoc ARX::OutputErrorTerms::step
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Eigen::Index n = m_basis.size();
       const auto weights = theta.template head<kBasis>(n);
@@ -328,11 +362,14 @@ class PrandtlIshlinskiiHammerstein
       m_x = x;
       return {x, m_psi, x};
     }
+    /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_lags.push(m_x, m_psi); }
+    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
     void accept(const Params& delta) noexcept {
       accept();
       m_lags.correct(delta);
     }
+    /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept {
       return detail::roots_inside(theta.template segment<Na_>(m_basis.size() + m_nb, m_na), radius, m_work);
     }

@@ -21,11 +21,17 @@
 
 namespace bonl {
 
+/// The play operators of a Prandtl-Ishlinskii operator, play_r[v](k) = min(max(P_r(k-1), v(k) - r),
+/// v(k) + r) with P_r = 0 at rest: the backlash of half-width r started engaged at 0, one per threshold
+/// r_1 < ... < r_np. Their outputs are the regressors of the weights g, as a polynomial's powers are;
+/// the Prandtl-Ishlinskii Hammerstein model's input block and the nonlinear-feedback model's plays
+/// step them. Np_ fixes the number of plays at compile time (Eigen::Dynamic: sized at construction);
+/// a step never allocates.
 template <typename Scalar_ = double, int Np_ = Eigen::Dynamic>
 class PlayOperators {
  public:
-  using Scalar = Scalar_;
-  using Vector = Eigen::Matrix<Scalar, Np_, 1>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using Vector = Eigen::Matrix<Scalar, Np_, 1>;  ///< the thresholds or the plays' outputs (fixed size when Np_ is)
 
   /// The plays of `thresholds` (require_valid; Np of them where Np is fixed), at rest.
   template <typename T>
@@ -73,8 +79,8 @@ class PlayOperators {
     return Backlash<Scalar>::map(v, previous, threshold);
   }
 
-  Eigen::Index size() const noexcept { return m_thresholds.size(); }
-  const Vector& thresholds() const noexcept { return m_thresholds; }
+  Eigen::Index size() const noexcept { return m_thresholds.size(); }  ///< the number of plays, np
+  const Vector& thresholds() const noexcept { return m_thresholds; }  ///< the thresholds r_1..r_np
   /// The plays' outputs P_i(k) after the last step (their memory): the PI part's regressors.
   const Vector& state() const noexcept { return m_state; }
 

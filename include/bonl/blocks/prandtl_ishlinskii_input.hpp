@@ -16,16 +16,22 @@
 
 namespace bonl {
 
+/// The input block of the Prandtl-Ishlinskii Hammerstein model, w(k) = sum_{l=0..r} f_l u(k)^l +
+/// sum_{i=1..np} g_i play_{r_i}[u](k): a polynomial and a Prandtl-Ishlinskii operator of the input,
+/// the plays' memory its state (0 at rest). The model's free run and its inverse for control both step
+/// this block, so the w the inverse computes for a command is the w the model makes of it. R_ and Np_
+/// fix r and np at compile time (Eigen::Dynamic: from the coefficients given).
 template <typename Scalar_ = double, int R_ = Eigen::Dynamic, int Np_ = Eigen::Dynamic>
 class PrandtlIshlinskiiInput {
  public:
-  using Scalar = Scalar_;
-  using Plays = PlayOperators<Scalar, Np_>;
-  using Coeffs = Eigen::Matrix<Scalar, detail::poly_size(R_), 1>;
-  using Weights = Eigen::Matrix<Scalar, Np_, 1>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using Plays = PlayOperators<Scalar, Np_>;  ///< the play operators' type
+  using Coeffs = Eigen::Matrix<Scalar, detail::poly_size(R_), 1>;  ///< f_0..f_r (fixed size when R_ is)
+  using Weights = Eigen::Matrix<Scalar, Np_, 1>;  ///< g_1..g_np (fixed size when Np_ is)
 
   /// f = f_0..f_r (r >= 1), the plays' thresholds (PlayOperators::require_valid) and their weights
-  /// g (as many, finite); the plays at rest.
+  /// g (as many, finite); the plays at rest. Throws std::invalid_argument for fewer than 2 entries of f,
+  /// a degree that differs from R_, invalid thresholds, or a g of another length or not finite.
   template <typename F, typename T, typename G>
   PrandtlIshlinskiiInput(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<T>& thresholds,
                          const Eigen::MatrixBase<G>& g)
@@ -39,12 +45,13 @@ class PrandtlIshlinskiiInput {
     detail::assign_checked(m_g, g, "g");
   }
 
-  const Coeffs& f() const noexcept { return m_f; }
-  const Weights& g() const noexcept { return m_g; }
+  const Coeffs& f() const noexcept { return m_f; }  ///< the polynomial's coefficients f_0..f_r
+  const Weights& g() const noexcept { return m_g; }  ///< the plays' weights g_1..g_np
+  /// The plays' thresholds r_1..r_np.
   const typename Plays::Vector& thresholds() const noexcept { return m_plays.thresholds(); }
   /// The plays' outputs after the last step, P_i(k-1) for the next one.
   const typename Plays::Vector& state() const noexcept { return m_plays.state(); }
-  Eigen::Index size() const noexcept { return m_plays.size(); }
+  Eigen::Index size() const noexcept { return m_plays.size(); }  ///< the number of plays, np
 
   /// Back to rest: every play at 0.
   void reset() noexcept { m_plays.reset(); }

@@ -24,18 +24,25 @@
 
 namespace bonl::control {
 
+/// The inverse of the P-H-W model's backlash (bonl::Backlash, half-width c), after Tao and
+/// Kokotovic: the backlash input x = y_d + c s that makes its output follow the reference y_d, s = +1
+/// while y_d rises and -1 while it falls. The direction turns when y_d has come back from its last
+/// extremum by the transition band; inside the band s moves between the sides along a smooth step, so
+/// that noise smaller than the band does not throw the command by 2c at each of its reversals.
+/// band = 0 is the exact switch.
 template <typename Scalar_ = double>
 class BacklashInverse {
  public:
-  using Scalar = Scalar_;
+  using Scalar = Scalar_;  ///< the arithmetic type
 
   /// The reference's direction and its last extremum: the whole state.
   struct State {
     int direction = 0;  ///< +1 rising, -1 falling, 0 not moved yet
-    Scalar extremum = Scalar(0);
+    Scalar extremum = Scalar(0);  ///< the reference's last extremum (its start value before it moved)
   };
 
   /// Half-width c >= 0 and transition band >= 0 (in the output's units); the output starts at y0.
+  /// Throws std::invalid_argument unless c and band are finite and >= 0 and y0 is finite.
   explicit BacklashInverse(Scalar c, Scalar band = Scalar(0), Scalar y0 = Scalar(0)) : m_c(c), m_band(band) {
     bonl::detail::require(std::isfinite(c) && c >= Scalar(0), "the backlash half-width c must be finite and >= 0, got " +
                                                                   bonl::detail::format_number(static_cast<double>(c)));
@@ -46,8 +53,9 @@ class BacklashInverse {
     reset(y0);
   }
 
-  Scalar c() const noexcept { return m_c; }
-  Scalar band() const noexcept { return m_band; }
+  Scalar c() const noexcept { return m_c; }  ///< the backlash's half-width c
+  Scalar band() const noexcept { return m_band; }  ///< the transition band (0: the exact switch)
+  /// The reference's direction and last extremum, to carry over with continue_from().
   const State& state() const noexcept { return m_state; }
   /// Goes on from `state` (another inverse's, for one re-derived with a new c or band).
   void continue_from(const State& state) noexcept { m_state = state; }

@@ -27,14 +27,23 @@
 
 namespace bonl::control {
 
+/// The inverse of the two-segment input polynomial N1 (paper eqs. 3-5; bonl::TwoSegmentPolynomial):
+/// given the w the linear block needs, the command u in [u_min, u_max] (deviations from the operating
+/// point) that gives it. Each side is inverted on its monotone branch from u = 0, by Newton's method
+/// safeguarded by bisection; what no command reaches is reported, not hidden: Saturated beyond the
+/// branches' ends (the nearer end is the command), DeadBand between the two segments' values at u = 0
+/// (the command is 0).
 template <typename Scalar_ = double>
 class InputPolynomialInverse {
  public:
-  using Scalar = Scalar_;
-  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
   /// f = f_0..f_r, p = p_0..p_r (as TwoSegmentPolynomial), and the command range [u_min, u_max],
-  /// finite, with u_min <= 0 <= u_max.
+  /// finite, with u_min <= 0 <= u_max. Throws std::invalid_argument for f and p of different lengths
+  /// or fewer than 2 entries, non-finite coefficients, a range that is not finite or leaves out 0, or a
+  /// polynomial with no inverse: w rising with u on one side of 0 and falling on the other, or
+  /// constant over the range.
   template <typename F, typename P>
   InputPolynomialInverse(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p, Scalar u_min, Scalar u_max)
       : m_f(f), m_g(f + p), m_u_min(u_min), m_u_max(u_max) {
@@ -92,16 +101,16 @@ class InputPolynomialInverse {
   /// The polynomial has no memory: nothing to advance, reset or take over (InverseModel calls these
   /// on every input block's inverse).
   void advance(Scalar /*u*/) noexcept {}
-  void reset() noexcept {}
-  void continue_from(const InputPolynomialInverse& /*previous*/) noexcept {}
+  void reset() noexcept {}  ///< nothing to reset (see advance())
+  void continue_from(const InputPolynomialInverse& /*previous*/) noexcept {}  ///< nothing to take over (see advance())
 
   /// The monotone branches the inverse uses: commands [lower(), upper()] (the command range, or
   /// nearer where a side stops being monotone).
   Scalar lower() const noexcept { return m_lo; }
-  Scalar upper() const noexcept { return m_hi; }
+  Scalar upper() const noexcept { return m_hi; }  ///< the commands' upper end (see lower())
   /// The w no command reaches between the two segments at u = 0: [min, max] of g_0 and f_0.
   Scalar dead_band_lower() const noexcept { return std::min(m_f[0], m_g[0]); }
-  Scalar dead_band_upper() const noexcept { return std::max(m_f[0], m_g[0]); }
+  Scalar dead_band_upper() const noexcept { return std::max(m_f[0], m_g[0]); }  ///< see dead_band_lower()
 
  private:
   VectorX m_f;  // f_0..f_r: u >= 0

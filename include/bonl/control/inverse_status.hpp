@@ -8,6 +8,9 @@
 
 namespace bonl::control {
 
+/// What an inverse reports with each command: a set of flags (combine them with |, test them with
+/// has()), Exact when there is none. A per-sample step is noexcept and returns its status instead of
+/// throwing; a rejected sample (rejected()) leaves the inverse untouched.
 enum class InverseStatus : std::uint8_t {
   Exact = 0,                  ///< the command makes the model reach the reference (within rounding)
   Saturated = 1,              ///< the command is at the end of its range (or of the input block's
@@ -22,9 +25,11 @@ enum class InverseStatus : std::uint8_t {
                               ///< numbers (e.g. 1e308 through a model that amplifies it); the inverse is untouched
 };
 
+/// The flags of a and of b together.
 constexpr InverseStatus operator|(InverseStatus a, InverseStatus b) noexcept {
   return static_cast<InverseStatus>(static_cast<std::uint8_t>(a) | static_cast<std::uint8_t>(b));
 }
+/// Adds b's flags to a; returns a.
 constexpr InverseStatus& operator|=(InverseStatus& a, InverseStatus b) noexcept { return a = a | b; }
 /// Does `status` carry every flag of `flags`? has(status, InverseStatus::Exact) is status == Exact.
 constexpr bool has(InverseStatus status, InverseStatus flags) noexcept {

@@ -35,13 +35,21 @@
 
 namespace bonl::control {
 
+/// The inverse of the linear block A(q^-1) x(k) = q^-nk B(q^-1) w(k) (paper eqs. 6-8; bonl::LinearBlock):
+/// the w(k) that makes x(k + nk) follow a reference x_d. Where B is minimum phase, the exact inverse,
+/// run on the w actually applied so that a limited command does not wind up; otherwise the zero-phase
+/// error tracking controller (ZPETC, Tomizuka 1987), which needs preview() samples of the reference
+/// beyond the delay and tracks it through a zero-phase filter of unit gain at frequency 0. Per sample:
+/// input() for the reference window, then commit() what was applied. Allocation-free after construction.
 template <typename Scalar_ = double>
 class LinearInverse {
  public:
-  using Scalar = Scalar_;
-  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
-  /// a = a_1..a_na, b = b_0..b_nb with b_0 != 0, delay nk >= 0.
+  /// a = a_1..a_na, b = b_0..b_nb with b_0 != 0, delay nk >= 0. Throws std::invalid_argument for an
+  /// empty or non-finite a or b, nk < 0, b_0 = 0, or (not minimum phase) a zero of B at z = 1, which
+  /// leaves no ZPETC, or zeros that cannot be computed.
   template <typename A, typename B>
   LinearInverse(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b, Eigen::Index nk)
       : m_a(a), m_b(b), m_nk(nk) {
@@ -67,7 +75,7 @@ class LinearInverse {
 
   /// Are all of B's zeros inside the unit circle (the exact inverse), or is this ZPETC?
   bool minimum_phase() const noexcept { return m_minimum_phase; }
-  Eigen::Index nk() const noexcept { return m_nk; }
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the delay nk in samples
   /// Samples of preview beyond the delay: 0 (exact), s = B_u's degree (ZPETC).
   Eigen::Index preview() const noexcept { return m_minimum_phase ? 0 : m_unstable.size() - 1; }
   /// The reference window's length: x_d(k+nk), ..., x_d(k+nk+preview()).
@@ -75,6 +83,7 @@ class LinearInverse {
   /// ZPETC's factors: B_a (b_0 included) and B_u, ascending powers of q^-1 (B_u = [1] and B_a = B
   /// when minimum phase).
   VectorX stable_factor() const { return m_minimum_phase ? m_b : m_stable; }
+  /// ZPETC's factor B_u, the zeros on or outside the unit circle (see stable_factor()).
   VectorX unstable_factor() const { return m_minimum_phase ? VectorX::Ones(1) : m_unstable; }
 
   /// Back to rest: every past x and w zero.

@@ -15,13 +15,19 @@
 
 namespace bonl::control {
 
+/// The inverse of the output polynomial of the H-W and Wiener models (paper eq. 9),
+/// y = sum_{m=1..r1} q_m x^m: the x on the monotone branch through the operating point x = 0 that
+/// gives y, by Newton's method safeguarded by bisection. The branch runs from 0 to the first stationary
+/// point on each side; a y beyond its ends is OutOfRange and gets the end, where the model's output
+/// turns back.
 template <typename Scalar_ = double>
 class OutputPolynomialInverse {
  public:
-  using Scalar = Scalar_;
-  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
-  /// q = q_1..q_r1.
+  /// q = q_1..q_r1. Throws std::invalid_argument for an empty or non-finite q, or q_1 = 0 (no inverse
+  /// through the operating point).
   template <typename Q>
   explicit OutputPolynomialInverse(const Eigen::MatrixBase<Q>& q) {
     bonl::detail::require(q.size() >= 1, "the output polynomial needs q_1..q_r1 (at least one entry)");
@@ -44,7 +50,7 @@ class OutputPolynomialInverse {
 
   /// The branch: x in [lower(), upper()] (infinite where q is monotone to infinity).
   Scalar lower() const noexcept { return m_lo; }
-  Scalar upper() const noexcept { return m_hi; }
+  Scalar upper() const noexcept { return m_hi; }  ///< the branch's upper end (see lower())
 
  private:
   /// Solves on [0, end] (end < 0: [end, 0]).

@@ -86,7 +86,8 @@ class PrandtlIshlinskiiHammerstein
   /// \copydoc ARX::Linear
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
   using Plays = PlayOperators<Scalar, Np_>;  ///< the play operators' type
-  using InputBlock = PrandtlIshlinskiiInput<Scalar, R_, Np_>;  ///< the input hysteresis' type (input_block() returns it)
+  /// The input hysteresis' type (input_block() returns it).
+  using InputBlock = PrandtlIshlinskiiInput<Scalar, R_, Np_>;
   using Thresholds = typename Plays::Vector;  ///< the plays' thresholds (a vector, fixed size when np is)
 
   /// A model with the orders na >= 1, nb >= 0, nk >= 0, r >= 1 (degree of the input polynomial), np in

@@ -40,15 +40,26 @@
 
 namespace bonl::control {
 
+/// The inverse of the Prandtl-Ishlinskii Hammerstein model's input block (bonl::PrandtlIshlinskiiInput):
+/// given the w the linear block needs and the plays' memory, the command u in [u_min, u_max] (deviations
+/// from the operating point) that gives it; advance() then steps the plays with the command actually
+/// given, so the inverse's memory is the model's. It searches the range where w is monotone in u for
+/// every state of the plays: the bracket is narrowed to the plays' breakpoints around the solution, where
+/// w is one polynomial, solved by Newton's method safeguarded by bisection. A w beyond what the range's
+/// ends give is Saturated (the nearer end is the command). A search rather than the closed-form inverse PI
+/// operator (Kuhnen 2003), which covers only f = (0, f_1) with positive weights.
 template <typename Scalar_ = double>
 class PrandtlIshlinskiiInverse {
  public:
-  using Scalar = Scalar_;
-  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  using Block = PrandtlIshlinskiiInput<Scalar>;
+  using Scalar = Scalar_;  ///< the arithmetic type
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
+  using Block = PrandtlIshlinskiiInput<Scalar>;  ///< the input block the inverse steps (run-time sizes)
 
   /// The block's f, thresholds and weights (its memory is not taken: the inverse starts at rest) and
-  /// the command range [u_min, u_max], finite, with u_min <= 0 <= u_max.
+  /// the command range [u_min, u_max], finite, with u_min <= 0 <= u_max. Throws std::invalid_argument
+  /// for a range that is not finite or leaves out 0, or a block with no inverse: w not monotone in u
+  /// near 0 for every state of the plays (weights of either sign that outweigh f'(0), or a polynomial
+  /// that rises on one side of 0 and falls on the other), or w that does not change with u.
   template <int R, int Np>
   PrandtlIshlinskiiInverse(const PrandtlIshlinskiiInput<Scalar, R, Np>& block, Scalar u_min, Scalar u_max)
       : m_block(block.f(), block.thresholds(), block.g()), m_piece(block.f()) {
@@ -136,7 +147,7 @@ class PrandtlIshlinskiiInverse {
   /// The commands the inverse uses, [lower(), upper()]: the command range, or nearer to 0 where the
   /// slope bound stops keeping its sign.
   Scalar lower() const noexcept { return m_lo; }
-  Scalar upper() const noexcept { return m_hi; }
+  Scalar upper() const noexcept { return m_hi; }  ///< the commands' upper end (see lower())
   /// +1 where w rises with u, -1 where it falls.
   int direction() const noexcept { return m_direction > Scalar(0) ? 1 : -1; }
   /// The plays' memory P(k-1).

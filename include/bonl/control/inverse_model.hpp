@@ -48,7 +48,7 @@ struct InverseOptions {
   /// records it). Models with an input polynomial need it finite; for ARX and Wiener an infinite
   /// range does not limit the command.
   double command_min = std::numeric_limits<double>::quiet_NaN();
-  double command_max = std::numeric_limits<double>::quiet_NaN();
+  double command_max = std::numeric_limits<double>::quiet_NaN();  ///< the command range's upper end (see command_min)
   /// P-H-W: the backlash inverse's transition band, in the output's units (0: the exact switch).
   double backlash_band = 0.0;
   /// P-H-W: added to backlash_band, times the model's backlash half-width c (1: a band of c, which
@@ -59,8 +59,8 @@ struct InverseOptions {
 /// A whole reference's commands and the status of each.
 template <typename Scalar>
 struct InverseRun {
-  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> command;
-  std::vector<InverseStatus> status;
+  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> command;  ///< the commands u(0..N-1), in the model's input units
+  std::vector<InverseStatus> status;  ///< each command's status: Exact, or what it could not do
 };
 
 namespace detail {
@@ -123,15 +123,27 @@ struct has_inverse : std::bool_constant<bonl::detail::linear_block_count<Model>:
 /// The models of bonl::Models that have an inverse (what the Python bindings and the fuzz harness loop over).
 using InvertibleModels = FilterModels<Models, has_inverse>::type;
 
+/// The inverse of an identified model (one of InvertibleModels): per sample, given the reference
+/// output preview() samples ahead, the command u(k) that makes the model follow it. The blocks'
+/// inverses in reverse order: the backlash's (BacklashInverse) or the output polynomial's
+/// (OutputPolynomialInverse), the linear block's (LinearInverse: exact, or ZPETC where B is not minimum
+/// phase), then the input block's (InputPolynomialInverse or PrandtlIshlinskiiInverse, by the type of
+/// the model's input_block()), each reporting what it could not do (InverseStatus). The linear block's
+/// inverse runs on the w the command actually gives, so after a saturated or dead-band command the
+/// inverse aims at the reference from where the model is. Allocation-free and noexcept per sample.
 template <class Model>
 class InverseModel {
   static_assert(has_inverse<Model>::value, "bonl::control::InverseModel inverts models with one linear block");
 
  public:
-  using Scalar = typename Model::Scalar;
-  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Scalar = typename Model::Scalar;  ///< the model's arithmetic type
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
+  /// Whether the model has an input block (input_block()) whose inverse gives the command; without
+  /// one (ARX, Wiener) w = u, clamped to the command range.
   static constexpr bool kHasInputBlock = detail::has_input_block<Model>::value;
+  /// Whether the model has an output polynomial (output_block(): H-W, Wiener) to invert first.
   static constexpr bool kHasOutputPolynomial = detail::has_output_block<Model>::value;
+  /// Whether the model has a backlash (backlash(): P-H-W) to invert first.
   static constexpr bool kHasBacklash = detail::has_backlash<Model>::value;
 
   /// Throws std::invalid_argument where the model has no inverse (b_0 = 0, a zero of B at z = 1,
@@ -158,12 +170,19 @@ class InverseModel {
 
   /// The reference the step at sample k takes: r(k + nk), ..., r(k + preview()).
   Eigen::Index nk() const noexcept { return m_linear.nk(); }
+  /// How far ahead the last reference sample a step takes is: nk plus ZPETC's preview
+  /// (LinearInverse::preview(); 0 when B is minimum phase).
   Eigen::Index preview() const noexcept { return m_linear.nk() + m_linear.preview(); }
   /// How many reference samples step() needs: preview() - nk() + 1 (1 when B is minimum phase).
   Eigen::Index window_size() const noexcept { return m_linear.window_size(); }
+  /// Are all of B's zeros inside the unit circle (the exact inverse), or is the linear block's
+  /// inverse ZPETC?
   bool minimum_phase() const noexcept { return m_linear.minimum_phase(); }
+  /// The command range's lower end, in the model's input units (InverseOptions::command_min, or the
+  /// model's input_min()).
   Scalar command_min() const noexcept { return m_command_min; }
-  Scalar command_max() const noexcept { return m_command_max; }
+  Scalar command_max() const noexcept { return m_command_max; }  ///< the command range's upper end (see command_min())
+  /// The linear block's inverse, for its factors (LinearInverse::stable_factor(), unstable_factor()).
   const LinearInverse<Scalar>& linear_inverse() const noexcept { return m_linear; }
 
   /// Back to rest, as the model's free run starts.

@@ -27,6 +27,7 @@
 
 namespace bonl::control {
 
+/// How AdaptiveInverse is built and when it trusts an estimate enough to derive a new inverse from it.
 struct AdaptiveInverseOptions {
   InverseOptions inverse;        ///< how each inverse is built (command range, backlash band)
   EstimatorOptions estimator;    ///< the online estimator's (method, forgetting, p0, ...)
@@ -36,6 +37,9 @@ struct AdaptiveInverseOptions {
   /// Trusted only while every pole of the estimate's linear block is inside this radius, in (0, 1].
   double stability_radius = 0.999;
 
+  /// Throws std::invalid_argument for a setting out of range: the estimator's options
+  /// (EstimatorOptions::validate), rederive_every < 1, max_covariance_trace below 1 or not finite, or
+  /// stability_radius outside (0, 1].
   void validate() const {
     estimator.validate();
     bonl::detail::require(rederive_every >= 1,
@@ -58,10 +62,17 @@ struct AdaptiveInverseHealth {
   std::string last_refusal;              ///< why the last refused estimate was refused ("" if none)
 };
 
+/// The online estimator and the inverse model together: a feedforward that follows the plant as it
+/// changes. update(u, y) feeds the applied command and the measured output to the estimator; every
+/// rederive_every samples the inverse is derived again from the estimate, if the guard trusts it (not
+/// diverged, covariance not too large, linear block stable, an inverse exists), and goes on from where
+/// the old one was. An estimate not trusted leaves the last good inverse in use and is counted by its
+/// reason in health(). step() is the inverse's, noexcept and allocation-free; deriving an inverse
+/// allocates, so it happens only inside update() or rederive().
 template <class Model>
 class AdaptiveInverse {
  public:
-  using Scalar = typename Model::Scalar;
+  using Scalar = typename Model::Scalar;  ///< the model's arithmetic type
 
   /// Starts from `initial` (an identified model): the inverse is derived from it, and the estimator
   /// is warm-started from its parameters (P = p0 I). Throws std::invalid_argument for bad options or
@@ -79,6 +90,8 @@ class AdaptiveInverse {
   InverseStep<Scalar> step(const Eigen::MatrixBase<W>& reference) noexcept {
     return m_inverse.step(reference);
   }
+  /// The command for a window of one sample, r(k + nk), from the inverse in use (InverseModel::step):
+  /// only where its window_size() is 1, else RejectedShortPreview.
   InverseStep<Scalar> step(Scalar reference) noexcept { return m_inverse.step(reference); }
 
   /// One sample of the plant: the command u applied (the whole command, feedback included) and the
@@ -123,10 +136,12 @@ class AdaptiveInverse {
 
   /// The inverse in use, and the model it was derived from.
   const InverseModel<Model>& inverse() const noexcept { return m_inverse; }
-  const Model& model() const noexcept { return m_model; }
+  const Model& model() const noexcept { return m_model; }  ///< the model the inverse in use was derived from
+  /// The online estimator, whose current estimate may be newer than model() (or refused by the guard).
   const Estimator<Model>& estimator() const noexcept { return m_estimator; }
+  /// What the guard did since the start: inverses derived, estimates refused and why.
   const AdaptiveInverseHealth& health() const noexcept { return m_health; }
-  const AdaptiveInverseOptions& options() const noexcept { return m_options; }
+  const AdaptiveInverseOptions& options() const noexcept { return m_options; }  ///< the options, validated
 
  private:
   static const AdaptiveInverseOptions& validated(const AdaptiveInverseOptions& options) {

@@ -18,6 +18,7 @@ command -v doxygen >/dev/null || { echo "api_reference: doxygen is not installed
 
 step "C++ reference: doxygen docs/api/Doxyfile -> build/api/cpp"
 rm -rf build/api/cpp
+mkdir -p build/api  # Doxygen makes OUTPUT_DIRECTORY's last level only, not build/ in a fresh clone
 BONL_VERSION=$(sed -n 's/^#define BONL_VERSION_\(MAJOR\|MINOR\|PATCH\) //p' include/bonl/version.hpp | paste -sd.) \
   doxygen docs/api/Doxyfile
 

@@ -1,5 +1,5 @@
 #pragma once
-// Inverse models for control (issue 20): per sample, the command that makes an identified model follow
+// Inverse models for control: per sample, the command that makes an identified model follow
 // a reference output. The blocks' inverses (backlash, output polynomial, linear block with ZPETC where B
 // is not minimum phase, two-segment input polynomial, Prandtl-Ishlinskii input hysteresis) and
 // InverseModel<Model>, which composes them for ARX, Hammerstein, H-W, P-H-W, Wiener and the

@@ -7,7 +7,7 @@
 //     DATA: known (the default: the known P-H-W system's record), delayed_fir or integrator (records
 //     the structure does not fit, where the update's safeguards work: bench_data.hpp)
 // Instructions per sample: run it under callgrind with 1 and 3 passes and divide the difference by
-// 2 * 4096 (docs/performance.md has the recipe and the latest profile).
+// 2 * 4096 (docs/lab/performance.md has the recipe and the latest profile).
 
 #include <cstdio>
 #include <cstdlib>

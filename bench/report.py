@@ -104,7 +104,7 @@ def machine(compiler: str, context: dict) -> dict:
 
 
 def summary(flat: dict) -> str:
-    """The headline figures of a full run, for the pages that quote it (docs/performance.md,
+    """The headline figures of a full run, for the pages that quote it (docs/lab/performance.md,
     between <!-- bench_summary --> markers): made from the flat results alone, so that a test can
     render it again from the committed bench/RESULTS.json."""
     models = list(dict.fromkeys(key.split("_update_fixed_double_")[0] for key in flat
@@ -398,7 +398,7 @@ def main() -> int:
                          "lrrl")
     if not all(met for _, _, _, met, _ in targets):
         target_table += ("\n\nA missed target: where the time goes, what was tried and what is left are in "
-                         "`docs/performance.md`.")
+                         "`docs/lab/performance.md`.")
 
     info = machine(args.compiler, context)
     info["flags"] = args.flags

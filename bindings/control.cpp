@@ -234,7 +234,7 @@ void def_inits(Class& cls, DefInit def_init) {
 
 void bind_control(py::module_& m) {
   py::module_ control = m.def_submodule(
-      "control", "Inverse models: the command that makes an identified model follow a reference (docs/control.md).");
+      "control", "Inverse models: the command that makes an identified model follow a reference (docs/how-to/control.md).");
 
   py::enum_<InverseStatus>(control, "InverseStatus", py::arithmetic(),
                            "What an inverse reports with a command: flags, exact (0) when the model follows the "
@@ -273,7 +273,7 @@ Per sample, given the reference output ``preview`` samples ahead, the command th
 follow it: the backlash inverse (P-H-W) or the output polynomial's inverse (H-W, Wiener), the linear
 block's inverse (exact where B is minimum phase, ZPETC where not), the input polynomial's inverse
 (Hammerstein, H-W, P-H-W) or the input hysteresis' (Prandtl-Ishlinskii Hammerstein, its plays' memory
-followed). docs/control.md.
+followed). docs/how-to/control.md.
 
 Parameters
 ----------
@@ -329,7 +329,7 @@ non-finite reference or one of preview samples or fewer. Returns InverseRun (com
 estimator, warm-started from ``model``; every ``rederive_every`` samples the inverse is derived
 again from the estimate, if the guard trusts it (the estimator has not diverged, trace(P) <=
 max_covariance_trace * n * p0, every pole inside stability_radius, the estimate has an inverse), and
-goes on from where the old one was. ``step`` is the inverse in use. docs/control.md, "Adaptive use".
+goes on from where the old one was. ``step`` is the inverse in use. docs/how-to/control.md, "Adaptive use".
 
 Parameters
 ----------

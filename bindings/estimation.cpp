@@ -402,7 +402,7 @@ model : one of bonl.MODELS
     Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
     c = 0 for output_error).
 method : {'output_error', 'equation_error', 'paper'}
-    As for identify; default 'output_error' (docs/algorithm.md).
+    As for identify; default 'output_error' (docs/explanation/algorithm.md).
 forgetting : float, tuple or 'adaptive', optional
     As for identify; default the method's ('adaptive' for output_error, the paper's schedule for
     the others).

@@ -290,7 +290,7 @@ void bind_tracking(py::module_& sub) {
       },
       py::arg("parameters") = py::none(), py::kw_only(), py::arg("method") = "paper",
       py::arg("reference_seed") = std::uint64_t{2020}, py::arg("noise_seed") = std::uint64_t{99},
-      "The tracking experiment, as ``bonl_demo --control`` runs it (docs/control.md).\n\n"
+      "The tracking experiment, as ``bonl_demo --control`` runs it (docs/how-to/control.md).\n\n"
       "The paper experiment's models are identified on the plant; then the plant, stepped with its sensor\n"
       "noise, tracks a reference joint velocity under a PI loop alone (SIMC from the ARX model), the PI\n"
       "loop plus each model's inverse as feedforward, and, while the plant changes at 40 s (pilot\n"
@@ -324,7 +324,7 @@ void bind_experiment(py::module_& m) {
         return experiment::run_paper_experiment(p, options);
       },
       py::arg("parameters") = py::none(), py::kw_only(), py::arg("robustness") = false,
-      "The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/plant.md).\n\n"
+      "The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/explanation/plant.md).\n\n"
       "Identification record from the paper's multi-sine, validation record from a smooth random\n"
       "signal (each 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated); every model of\n"
       "the experiment (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, and beside them the\n"

@@ -1,4 +1,4 @@
-// bonl._bonl.plant: the CVODE excavator dipper-joint plant (docs/plant.md) from Python. The
+// bonl._bonl.plant: the CVODE excavator dipper-joint plant (docs/explanation/plant.md) from Python. The
 // submodule itself; its parts are bound by plant_parameters.cpp (Parameters), excitation.cpp
 // (Command, the submodule excitation), plant_simulate.cpp (simulate, initial_state, derivative) and
 // plant_stepping.cpp (SteppingPlant, Measurement).
@@ -10,7 +10,7 @@ namespace bonl_python {
 void bind_plant(py::module_& m) {
   py::module_ sub = m.def_submodule(
       "plant",
-      "The excavator dipper-joint plant (docs/plant.md) integrated by SUNDIALS CVODE: parameters,\n"
+      "The excavator dipper-joint plant (docs/explanation/plant.md) integrated by SUNDIALS CVODE: parameters,\n"
       "command signals (submodule ``excitation``), ``simulate`` and ``SteppingPlant`` (one sample per\n"
       "call); the paper's experiment on it is ``bonl.experiment``.");
 

@@ -1,4 +1,4 @@
-// bonl.plant.Parameters: the plant's parameters (docs/plant.md) from one table of fields, and
+// bonl.plant.Parameters: the plant's parameters (docs/explanation/plant.md) from one table of fields, and
 // default_parameters, small_parameters.
 
 #include <pybind11/stl.h>
@@ -80,7 +80,7 @@ const std::vector<ParameterField>& parameter_fields() {
 
 std::string parameters_docstring() {
   std::string doc =
-      "Parameters of the excavator dipper-joint plant (docs/plant.md).\n\n"
+      "Parameters of the excavator dipper-joint plant (docs/explanation/plant.md).\n\n"
       "Valve, asymmetric cylinder, linkage and backlash of a 20 t excavator's stick cylinder by\n"
       "default; ``small_parameters()`` gives the 5-6 t machine. Every value can be overridden, as a\n"
       "keyword argument of the constructor or by assigning the attribute; ``validate()`` rejects\n"

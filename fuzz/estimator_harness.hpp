@@ -159,7 +159,7 @@ inline void print(const bonl::EstimatorOptions& o) {
                o.resolved_trace_ceiling(), long(o.recover_after));
 }
 
-/// With BONL_FUZZ_STATS set: how the inputs and updates ended, printed at exit (docs/fuzzing.md).
+/// With BONL_FUZZ_STATS set: how the inputs and updates ended, printed at exit (docs/lab/fuzzing.md).
 struct Outcomes {
   long bad_orders = 0, bad_options = 0, estimators = 0, status[4] = {0, 0, 0, 0};
   ~Outcomes() {

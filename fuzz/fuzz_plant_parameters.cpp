@@ -96,7 +96,7 @@ void print(const Parameters& p) {
 }
 
 /// validate(): true when accepted; a rejection must be an invalid_argument naming a field.
-/// With BONL_FUZZ_STATS set: how the inputs ended, printed at exit (docs/fuzzing.md quotes them).
+/// With BONL_FUZZ_STATS set: how the inputs ended, printed at exit (docs/lab/fuzzing.md quotes them).
 struct Outcomes {
   long rejected = 0, accepted = 0, simulated = 0, invalid_argument = 0, numerical_error = 0;
   ~Outcomes() {

@@ -2,7 +2,7 @@
 # Every measured data set in data/ by its SOURCE.md protocol (examples/datasets, one short script
 # each, public API only): bonl.select per model family on the estimation data, then the test data.
 # Writes docs/results/datasets/<data set>.json and the tables (docs/results/datasets_summary.md),
-# spliced into docs/measured_data.md, and the comparison with the literature (docs/benchmarks.md); then the tanks' figures again with the training output
+# spliced into docs/lab/measured_data.md, and the comparison with the literature (docs/lab/benchmarks.md); then the tanks' figures again with the training output
 # perturbed in its last digits (docs/results/datasets/perturbation.json and its table).
 # Needs `pip install .` (scripts/test.sh makes build/venv). About 15 minutes on 2 cores;
 # tests/python/test_datasets.py checks the committed figures.
@@ -29,11 +29,11 @@ for script in "${scripts[@]}"; do
   results+=("docs/results/datasets/$script.json")
 done
 "$python" examples/datasets/table.py "${results[@]}" > docs/results/datasets_summary.md
-bonl_splice_summary datasets_summary docs/results/datasets_summary.md docs/measured_data.md
+bonl_splice_summary datasets_summary docs/results/datasets_summary.md docs/lab/measured_data.md
 "$python" examples/datasets/comparison.py > docs/results/benchmarks_summary.md
-bonl_splice_summary benchmarks_summary docs/results/benchmarks_summary.md docs/benchmarks.md
+bonl_splice_summary benchmarks_summary docs/results/benchmarks_summary.md docs/lab/benchmarks.md
 step "examples/datasets/perturbation.py --select (the tanks with 1e-9 V more on the training output)"
 "$python" examples/datasets/perturbation.py --select --json docs/results/datasets/perturbation.json \
   --table docs/results/perturbation_summary.md
-bonl_splice_summary perturbation_summary docs/results/perturbation_summary.md docs/measured_data.md
-step "wrote docs/results/datasets/*.json, datasets_summary.md and benchmarks_summary.md, updated docs/measured_data.md and docs/benchmarks.md"
+bonl_splice_summary perturbation_summary docs/results/perturbation_summary.md docs/lab/measured_data.md
+step "wrote docs/results/datasets/*.json, datasets_summary.md and benchmarks_summary.md, updated docs/lab/measured_data.md and docs/lab/benchmarks.md"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The libFuzzer targets (fuzz/, docs/fuzzing.md): builds them with clang-14 into build/fuzz
+# The libFuzzer targets (fuzz/, docs/lab/fuzzing.md): builds them with clang-14 into build/fuzz
 # (ASan + UBSan, -fno-sanitize-recover=all, leak detection on) and runs each one.
 #
 #   bash scripts/fuzz.sh [--quick | --runs N | --seconds S] [target ...]

@@ -19,5 +19,5 @@ mkdir -p docs/results
   --markdown docs/results/measured_data_summary.md "$@"
 # The tables, spliced into every page that quotes them; tests/python/test_published_figures.py
 # re-identifies the chosen structures and checks the committed figures.
-bonl_splice_summary measured_data_summary docs/results/measured_data_summary.md docs/measured_data.md
-step "wrote docs/results/measured_data.json and measured_data_summary.md, updated docs/measured_data.md"
+bonl_splice_summary measured_data_summary docs/results/measured_data_summary.md docs/lab/measured_data.md
+step "wrote docs/results/measured_data.json and measured_data_summary.md, updated docs/lab/measured_data.md"

@@ -17,5 +17,5 @@ step "run bonl_online_accuracy"
 step "wrote docs/results/online_accuracy.json and docs/results/online_accuracy.md"
 
 # The summary table, spliced into every page that quotes it.
-bonl_splice_summary online_accuracy_summary docs/results/online_accuracy_summary.md docs/explanation/estimation_methods.md docs/algorithm.md
-step "updated the summary in docs/explanation/estimation_methods.md and docs/algorithm.md"
+bonl_splice_summary online_accuracy_summary docs/results/online_accuracy_summary.md docs/explanation/estimation_methods.md docs/explanation/algorithm.md
+step "updated the summary in docs/explanation/estimation_methods.md and docs/explanation/algorithm.md"

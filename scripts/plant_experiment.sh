@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The paper's experiment's published figures: runs bonl_demo (as scripts/demo.sh does) and writes
 # docs/results/plant_experiment.json (every MSE and parameter) and plant_experiment_summary.md (the
-# README's table), and the sweep (docs/sweep.csv, docs/sweep.svg, docs/results/sweep_summary.md), then
+# README's table), and the sweep (docs/results/sweep.csv, docs/results/sweep.svg, docs/results/sweep_summary.md), then
 # splices the tables into README.md and docs/explanation/paper_experiment.md between their markers.
 # tests/python/test_published_figures.py recomputes the figures and checks both.
 set -euo pipefail
@@ -21,16 +21,16 @@ bonl_splice_summary plant_experiment_summary docs/results/plant_experiment_summa
 step "wrote docs/results/plant_experiment.json and plant_experiment_summary.md, updated README.md and docs/explanation/paper_experiment.md"
 
 # The sweep of the pilot hysteresis and the pin backlash: the figure, its data and its table.
-step "run bonl_demo --sweep docs"
-./build/demo/examples/demo/bonl_demo --sweep docs --markdown docs/results/sweep_summary.md > /dev/null
+step "run bonl_demo --sweep docs/results"
+./build/demo/examples/demo/bonl_demo --sweep docs/results --markdown docs/results/sweep_summary.md > /dev/null
 bonl_splice_summary sweep_summary docs/results/sweep_summary.md docs/explanation/paper_experiment.md
-step "wrote docs/sweep.csv, docs/sweep.svg and docs/results/sweep_summary.md, updated docs/explanation/paper_experiment.md"
+step "wrote docs/results/sweep.csv, docs/results/sweep.svg and docs/results/sweep_summary.md, updated docs/explanation/paper_experiment.md"
 
-# The same experiment with the joint angle as the output, without and with an integrator (docs/plant.md).
+# The same experiment with the joint angle as the output, without and with an integrator (docs/explanation/plant.md).
 # Needs `pip install .` (scripts/test.sh makes build/venv).
 python=${PYTHON:-build/venv/bin/python}
 step "examples/joint_angle/joint_angle.py"
 "$python" examples/joint_angle/joint_angle.py --json docs/results/joint_angle.json \
   --markdown docs/results/joint_angle_summary.md > /dev/null
-bonl_splice_summary joint_angle_summary docs/results/joint_angle_summary.md docs/plant.md
-step "wrote docs/results/joint_angle.json and joint_angle_summary.md, updated docs/plant.md"
+bonl_splice_summary joint_angle_summary docs/results/joint_angle_summary.md docs/explanation/plant.md
+step "wrote docs/results/joint_angle.json and joint_angle_summary.md, updated docs/explanation/plant.md"

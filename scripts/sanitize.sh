@@ -3,7 +3,7 @@
 # build/asan). Any finding stops the test that made it (-fno-sanitize-recover=all) and fails the run.
 # Warnings are not errors here: GCC 12's -Wmaybe-uninitialized misfires inside libstdc++ under the
 # sanitizers; the main build (scripts/test.sh) keeps -Werror. -Og -g1 (line tables for the reports'
-# stack traces) builds in half the time of -O1 -g, and the tests run as fast (docs/performance.md).
+# stack traces) builds in half the time of -O1 -g, and the tests run as fast (docs/lab/performance.md).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh

@@ -1,4 +1,4 @@
-// bonl_demo: the paper's experiment on the simulated excavator dipper joint (docs/plant.md).
+// bonl_demo: the paper's experiment on the simulated excavator dipper joint (docs/explanation/plant.md).
 // Runs bonl::experiment::run_paper_experiment (every model of PaperModels identified with the
 // paper's orders and settings on the multi-sine record by the output-error method, bonl's default,
 // and the paper's, validated by free-run simulation on another trajectory; the online estimates
@@ -44,7 +44,7 @@ const char* kUsage =
     "               with --sweep, the sweep's table (docs/results/sweep_summary.md)\n"
     "  --sweep DIR  vary the pilot hysteresis (0-8%) and the pin backlash (0-20 mrad); writes\n"
     "               DIR/sweep.csv and DIR/sweep.svg (validation MSE of every model against each)\n"
-    "  --control    instead: the tracking experiment (docs/control.md): a reference joint velocity tracked\n"
+    "  --control    instead: the tracking experiment (docs/how-to/control.md): a reference joint velocity tracked\n"
     "               by a PI loop alone, with each identified model's inverse as feedforward, and with the\n"
     "               adaptive P-H-W feedforward while the plant changes; --json writes\n"
     "               {\"tracking_rms\": {\"PI\": ..., model name: ...}, \"plant_change\": {...}, ...},\n"
@@ -483,7 +483,7 @@ int sweep(const std::string& dir, const std::string& markdown) {
 
 void print_report(const PaperExperimentResult& result) {
   const bonl::plant::Parameters& parameters = result.parameters;
-  std::printf("Plant: 20 t excavator dipper joint (docs/plant.md), pilot hysteresis %.0f%%, pin backlash %.1f mrad.\n",
+  std::printf("Plant: 20 t excavator dipper joint (docs/explanation/plant.md), pilot hysteresis %.0f%%, pin backlash %.1f mrad.\n",
               100 * parameters.pilot_hysteresis, 1000 * parameters.joint_backlash);
   std::printf("Records: 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated. Identification: "
               "paper's multi-sine; validation: smooth random signal (1 Hz band).\n");

@@ -1,12 +1,12 @@
 """The paper's experiment with the joint angle as the output: what a position controller needs.
 
-The records of ``bonl.experiment.run_paper_experiment()`` (the simulated dipper joint, docs/plant.md)
+The records of ``bonl.experiment.run_paper_experiment()`` (the simulated dipper joint, docs/explanation/plant.md)
 carry the measured angle beside the velocity the paper's models are fitted on. Here the paper's four
 models, at the paper's orders (na = 3, nb = 2, nk = 8, r = r1 = 3), are identified on the
 identification record's angle, once without and once with an integrator (``ni = 1``: the angle
 integrates the joint's velocity), each with identify()'s defaults; each is then simulated from rest
 on the validation record's input and scored by the RMS of its angle error. Writes a results file and
-the table docs/plant.md quotes (tests/python/test_published_figures.py recomputes both).
+the table docs/explanation/plant.md quotes (tests/python/test_published_figures.py recomputes both).
 
     python examples/joint_angle/joint_angle.py --json docs/results/joint_angle.json \\
         --markdown docs/results/joint_angle_summary.md

@@ -11,7 +11,7 @@
 // files (bonl JSON) and the simulated outputs (CSV) into --out, the table into --json, the chosen
 // structures with their scores into --selection (docs/results/measured_data.json, which a test
 // re-identifies) and the tables with the published figures beside them into --markdown
-// (docs/results/measured_data_summary.md, quoted by docs/measured_data.md).
+// (docs/results/measured_data_summary.md, quoted by docs/lab/measured_data.md).
 
 #include <bonl/bonl.hpp>
 #include <bonl/io.hpp>
@@ -137,7 +137,7 @@ std::vector<Candidate> candidates(const Grid& grid, const std::vector<Offset>& o
 
 /// The estimator settings: a model without internal variables (ARX) is a linear regression, by least
 /// squares (forgetting 1, P(0) = 1e6 I); the block models by the equation-error method with the
-/// paper's settings, then refinement (the settings the published figures in docs/measured_data.md
+/// paper's settings, then refinement (the settings the published figures in docs/lab/measured_data.md
 /// were produced with; issue 18 redoes this example).
 template <class Model>
 bonl::IdentifyOptions settings() {

@@ -17,7 +17,7 @@
 //     --check FILE  compare what was computed with a results file written by --json (relative 2%,
 //                   values below 1e-9 count as equal); exit status 1 when one differs
 //
-// The committed results are docs/results/online_accuracy.json, .md and _summary.md (docs/algorithm.md's
+// The committed results are docs/results/online_accuracy.json, .md and _summary.md (docs/explanation/algorithm.md's
 // table; scripts/online_accuracy.sh writes all three); ctest runs --quick --check against the JSON.
 
 #include <bonl/bonl.hpp>
@@ -280,7 +280,7 @@ std::string markdown(const Json& results) {
       << "settings; `identify()`: offline, the recursive estimate refined by Levenberg-Marquardt.\n\n";
   out << "## Summary\n\n"
       << "Ranges over the systems of each kind (12 block models: 4 Hammerstein, 4 H-W, 4 P-H-W; 4 ARX) of the\n"
-      << "NRMSE, for noisy records of its median over the seeds. This table is also in docs/algorithm.md\n"
+      << "NRMSE, for noisy records of its median over the seeds. This table is also in docs/explanation/algorithm.md\n"
       << "(`online_accuracy_summary.md`).\n\n"
       << summary(results) << "\n";
   out << "## Noise-free, 4000 samples\n\n"
@@ -409,7 +409,7 @@ int main(int argc, char** argv) {
       std::ofstream out(markdown_path);
       out << markdown(results);
       if (!out) throw std::runtime_error("cannot write " + markdown_path);
-      // The summary alone, beside it (docs/algorithm.md includes it verbatim).
+      // The summary alone, beside it (docs/explanation/algorithm.md includes it verbatim).
       const std::string summary_path = markdown_path.substr(0, markdown_path.rfind(".md")) + "_summary.md";
       std::ofstream summary_out(summary_path);
       summary_out << summary(results);

@@ -4,7 +4,7 @@
 // is not minimum phase, two-segment input polynomial, Prandtl-Ishlinskii input hysteresis) and
 // InverseModel<Model>, which composes them for ARX, Hammerstein, H-W, P-H-W, Wiener and the
 // Prandtl-Ishlinskii Hammerstein model; AdaptiveInverse<Model>, the online estimator and the inverse
-// together, re-derived as the estimate changes. docs/control.md explains each.
+// together, re-derived as the estimate changes. docs/how-to/control.md explains each.
 
 #include "control/adaptive_inverse.hpp"
 #include "control/backlash_inverse.hpp"

@@ -42,7 +42,7 @@ COMMANDS: Sequence[tuple] = (
         "demo",
         "run the paper's experiment on the simulated excavator (Tables 1-2, Figs. 11-12)",
         "Identify ARX, Hammerstein, H-W and P-H-W with the paper's orders on the simulated 20 t "
-        "excavator's dipper joint (docs/plant.md), validate them by free-run simulation, print "
+        "excavator's dipper joint (docs/explanation/plant.md), validate them by free-run simulation, print "
         "Table 1 (parameters) and Table 2 (validation MSE of the velocity) for both estimator "
         "methods, and with --out DIR write fig11_velocity.png, fig12_residuals.png, tables.txt and "
         "results.json.",
@@ -74,7 +74,7 @@ COMMANDS: Sequence[tuple] = (
         "On the simulated excavator's dipper joint, track a reference joint velocity with a PI loop alone, "
         "with each identified model's inverse as feedforward, and with the adaptive P-H-W feedforward while "
         "the plant changes (pilot hysteresis x2, bulk modulus -30%); print the tracking RMS of each, with "
-        "--json FILE write them ({\"tracking_rms\": {...}}), with --figure FILE plot them (docs/control.md).",
+        "--json FILE write them ({\"tracking_rms\": {...}}), with --figure FILE plot them (docs/how-to/control.md).",
         _lazy("tracking", "add_arguments"),
         _lazy("tracking", "run"),
     ),

@@ -1,4 +1,4 @@
-"""Inverse models (docs/control.md): :class:`InverseModel` gives, per sample, the command that makes an
+"""Inverse models (docs/how-to/control.md): :class:`InverseModel` gives, per sample, the command that makes an
 identified model follow a reference output, and :meth:`InverseModel.commands` the commands for a whole
 reference; :class:`InverseStatus` says where a command cannot (saturation, dead band, out of range);
 :class:`AdaptiveInverse` runs the online estimator beside the inverse and derives it again as the

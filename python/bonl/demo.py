@@ -111,7 +111,7 @@ def format_report(result: Any) -> str:
     """
     parameters = result.parameters
     out = [
-        "Plant: 20 t excavator dipper joint (docs/plant.md), pilot hysteresis %.0f%%, pin backlash %.1f mrad."
+        "Plant: 20 t excavator dipper joint (docs/explanation/plant.md), pilot hysteresis %.0f%%, pin backlash %.1f mrad."
         % (100 * parameters.pilot_hysteresis, 1000 * parameters.joint_backlash),
         "Records: 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated. Identification: "
         "paper's multi-sine; validation: smooth random signal (1 Hz band).",

@@ -1,4 +1,4 @@
-"""The paper's experiment on the simulated excavator dipper joint (docs/plant.md).
+"""The paper's experiment on the simulated excavator dipper joint (docs/explanation/plant.md).
 
 - :func:`run_paper_experiment`: what ``bonl_demo`` runs, in one call: the identification and the
   validation records, every model of the experiment identified with the paper's orders by the
@@ -8,7 +8,7 @@
   :class:`Record`: each model is named by its class name (``result.method("paper").models["ARX"]``);
 - :func:`run_tracking_experiment`: what ``bonl_demo --control`` runs: a reference joint velocity
   tracked by a PI loop alone, with each identified model's inverse as feedforward, and with the
-  adaptive P-H-W feedforward while the plant changes (docs/control.md); :class:`TrackingResult`,
+  adaptive P-H-W feedforward while the plant changes (docs/how-to/control.md); :class:`TrackingResult`,
   :class:`TrackingRun`;
 - :func:`published_score`: the paper's own Table 2, for comparison;
 - :func:`low_pass`, :func:`differentiate`: the records' signal processing.

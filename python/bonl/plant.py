@@ -1,4 +1,4 @@
-"""The excavator dipper-joint plant (docs/plant.md), integrated by SUNDIALS CVODE.
+"""The excavator dipper-joint plant (docs/explanation/plant.md), integrated by SUNDIALS CVODE.
 
 A valve with dead band and pilot-stage hysteresis, an asymmetric cylinder, the linkage to the
 joint angle, pin backlash and an inclinometer: the plant the paper's experiment is run on.

@@ -1,4 +1,4 @@
-"""``python -m bonl control``: the tracking experiment (docs/control.md), as ``bonl_demo --control``
+"""``python -m bonl control``: the tracking experiment (docs/how-to/control.md), as ``bonl_demo --control``
 runs it. A reference joint velocity is tracked on the simulated plant by a PI loop alone, by the PI
 loop plus each identified model's inverse as feedforward, and, while the plant changes mid-run, by the
 PI loop plus the adaptive P-H-W feedforward. Prints the tracking RMS of each; ``--json FILE`` writes

@@ -260,7 +260,7 @@ TrackingResult run_tracking_experiment(const plant::Parameters& parameters, cons
         FixedFeedforward<Model> fixed{control::InverseModel<Model>(entry.model, inverse)};
         result.runs.push_back(track(parameters, result, reference, change, fixed, Model::kName));
         if constexpr (control::InverseModel<Model>::kHasBacklash) {
-          // Beside it, the backlash inverse's exact switch (band 0), for comparison (docs/control.md).
+          // Beside it, the backlash inverse's exact switch (band 0), for comparison (docs/how-to/control.md).
           if (change || options.backlash_band_per_c == 0.0) return;
           control::InverseOptions exact = inverse;
           exact.backlash_band_per_c = 0.0;

@@ -1,6 +1,6 @@
 // The plant integrated with SUNDIALS CVODE (BDF, Newton, dense direct solver, exact Jacobian) one
 // output sample at a time, with the command, the pilot hysteresis, the load and the pin backlash on
-// the command grid (docs/plant.md). The spool's linear lag is solved exactly on the grid; CVODE
+// the command grid (docs/explanation/plant.md). The spool's linear lag is solved exactly on the grid; CVODE
 // integrates the other four states across the grid points, interpolates them there and stops at the
 // end of each output sample and where the load changes.
 

@@ -1,6 +1,6 @@
 #pragma once
 // Private to src/plant: the plant's integration one output sample at a time, the one core that
-// simulate (a loop over it) and SteppingPlant (one sample per step) share (docs/plant.md).
+// simulate (a loop over it) and SteppingPlant (one sample per step) share (docs/explanation/plant.md).
 
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>

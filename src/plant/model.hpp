@@ -1,6 +1,6 @@
 #pragma once
 // Private to src/plant: the plant's right-hand side with every derived constant precomputed, so
-// that CVODE's calls allocate nothing and call no std::function (docs/plant.md, equations 3-6).
+// that CVODE's calls allocate nothing and call no std::function (docs/explanation/plant.md, equations 3-6).
 
 #include <algorithm>
 #include <cmath>

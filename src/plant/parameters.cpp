@@ -1,5 +1,5 @@
 // Parameters of the dipper-joint plant: the 5-6 t set, validation and derived quantities
-// (docs/plant.md).
+// (docs/explanation/plant.md).
 
 #include "bonl/plant/parameters.hpp"
 

@@ -60,7 +60,7 @@ void check_updates_allocate_nothing(const Model& structure, const std::optional<
           }) == 0);
     // The Wiener-Hammerstein model's equation-error recursion wanders under forgetting 0.98 (its two
     // blocks' poles are told apart only through the polynomial) into f = 0, b2 = 0, where P loses
-    // positiveness: those updates are refused and reported (docs/algorithm.md); allocation-free still.
+    // positiveness: those updates are refused and reported (docs/explanation/algorithm.md); allocation-free still.
     const bool refusals_expected = std::string(Model::kName) == "WienerHammerstein" &&
                                    method == bonl::Method::EquationError && forgetting.has_value();
     if (!refusals_expected) CHECK(estimator.health().failures == 0);

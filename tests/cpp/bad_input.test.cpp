@@ -1,4 +1,4 @@
-// Bad input, tried everywhere: each TEST_CASE backs the rows of docs/bad_input.md whose IDs start
+// Bad input, tried everywhere: each TEST_CASE backs the rows of docs/reference/bad_input.md whose IDs start
 // its name (M = models and blocks, E = estimator and identify, S = metrics and signals, J = JSON
 // model files; the plant's rows are in plant_bad_input.test.cpp, which links bonl::plant). Every
 // case checks the exception's type and that its message names what was wrong. The last cases check

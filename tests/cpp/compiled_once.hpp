@@ -3,7 +3,7 @@
 // (identify, select, the refinement, the recursive estimate, the known systems) are compiled once,
 // in compiled_once.cpp, and declared `extern template` here so that the suites that include
 // test_support.hpp do not compile them again. They were compiled in up to 20 suites each, which
-// cost the CI's two builds about a quarter of their time (docs/performance.md, "The CI's time").
+// cost the CI's two builds about a quarter of their time (docs/lab/performance.md, "The CI's time").
 //
 // They are instantiated for every model of bonl::Models, and known_system for every model at the
 // paper's fixed orders (bonl::PaperOrders) too, by the model's index: an explicit instantiation names

@@ -65,7 +65,7 @@ TEST_CASE("the inverse models step without allocating") {
 
 TEST_CASE("the adaptive inverse steps and updates without allocating between its derivations") {
   // Fixed orders (the paper's P-H-W): the estimator's update allocates nothing; only the derivation
-  // every rederive_every samples does (docs/control.md).
+  // every rederive_every samples does (docs/how-to/control.md).
   const auto model = known_phw();
   bonl::control::AdaptiveInverseOptions options;
   options.inverse.command_min = -1.0;

@@ -1,6 +1,6 @@
 // bonl::control::InverseModel (bonl/control/inverse_model.hpp): model.simulate(commands(r)) follows r
 // for every model where the inverse is exact, and the non-minimum-phase, out-of-range, dead-band and
-// bad-input cases do what docs/control.md says.
+// bad-input cases do what docs/how-to/control.md says.
 
 #include <bonl/control.hpp>
 

@@ -1,5 +1,5 @@
 // Bad input to the experiment's records (bonl::experiment), the P1 (acquire) and P16-P17 rows of
-// docs/bad_input.md; the plant's rows are in plant_bad_input.test.cpp. Every case checks the
+// docs/reference/bad_input.md; the plant's rows are in plant_bad_input.test.cpp. Every case checks the
 // exception's type and that its message names what was wrong; the last case checks that the
 // caller's arrays are never modified.
 

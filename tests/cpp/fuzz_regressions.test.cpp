@@ -1,4 +1,4 @@
-// Reproducers of what the libFuzzer targets (fuzz/, docs/fuzzing.md) found in the estimator,
+// Reproducers of what the libFuzzer targets (fuzz/, docs/lab/fuzzing.md) found in the estimator,
 // reduced to plain inputs. All three were fixed in Rls::update (rls.hpp); these keep them fixed.
 // (The plant's reproducers are in plant_fuzz_regressions.test.cpp, which links bonl::plant.)
 

@@ -126,7 +126,7 @@ TEMPLATE_LIST_TEST_CASE("a model with integrators runs as its denominator multip
     // P-H-W is left out: its predictor stores x clipped to the measured y +- c, and with an integrator
     // each clip enters the differenced lags as a step that 1 / A(1) (about 10 for its known system)
     // amplifies, so a rounding error of 1e-12 grows to 0.4 over 1500 samples (measured; without
-    // integrators A is stable and it decays). docs/algorithm.md says so.
+    // integrators A is stable and it decays). docs/explanation/algorithm.md says so.
     if constexpr (!has_backlash<Model>()) {
       CHECK(relative_difference(model.predict(u, y), y) <= 1e-9);
       const Eigen::Index past = u.size() / 3;

@@ -1,4 +1,4 @@
-// Bad input to the plant (bonl::plant), the P rows of docs/bad_input.md; the rest of the table is
+// Bad input to the plant (bonl::plant), the P rows of docs/reference/bad_input.md; the rest of the table is
 // in bad_input.test.cpp, the experiment's (P1 acquire, P16-P17) in experiment_bad_input.test.cpp. A
 // separate file because only tests/cpp/plant_*.test.cpp link bonl::plant.
 // Every case checks the exception's type and that its message names what was wrong; the last case

@@ -1,4 +1,4 @@
-// Reproducers of what the libFuzzer targets (fuzz/, docs/fuzzing.md) found in the plant, reduced
+// Reproducers of what the libFuzzer targets (fuzz/, docs/lab/fuzzing.md) found in the plant, reduced
 // to plain inputs. (The plant_ prefix links bonl::plant.)
 
 #include <catch2/catch.hpp>

@@ -158,7 +158,7 @@ TEMPLATE_LIST_TEST_CASE("with constant forgetting a step in the parameters is tr
   // 1950 (P-H-W) samples to get back under 1% NRMSE; on the online systems 700 to 2800
   // (docs/results/online_accuracy.md). Issue 16 asked for 1500: not met for the third-order fronts,
   // whose slow valley between numerator and denominator the estimator crawls along
-  // (docs/algorithm.md). The bound holds what is measured.
+  // (docs/explanation/algorithm.md). The bound holds what is measured.
   const TestType before = known<TestType>();
   const TestType after = with_parameter_step(before);
 

@@ -1,4 +1,4 @@
-"""Bad input, tried everywhere: each test backs the rows of docs/bad_input.md whose IDs its name
+"""Bad input, tried everywhere: each test backs the rows of docs/reference/bad_input.md whose IDs its name
 carries (M models and blocks, E estimator and identify, S metrics, J JSON model files, P plant,
 Y conversions of Python arguments, A the caller's arrays). Every check asserts the exception's type
 and that its message names what was wrong; fixed seeds throughout."""

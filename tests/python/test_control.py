@@ -1,6 +1,6 @@
 """bonl.control: the inverse models from Python, against scipy.signal.lfilter for the linear inverses
 and against the models' own simulation (model.simulate(commands(r)) == r) for the others; bad input is
-a ValueError with the inverse untouched (docs/bad_input.md, C rows)."""
+a ValueError with the inverse untouched (docs/reference/bad_input.md, C rows)."""
 
 import numpy as np
 import pytest

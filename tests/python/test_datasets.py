@@ -61,12 +61,12 @@ def test_the_summary_is_the_table_of_the_results_files():
     table = _script("table")
     table_text = "\n\n".join(table.table(_results(name)) for name in SCRIPTS)
     assert (ROOT / "docs" / "results" / "datasets_summary.md").read_text() == table_text + "\n"
-    page = (ROOT / "docs" / "measured_data.md").read_text()
+    page = (ROOT / "docs" / "lab" / "measured_data.md").read_text()
     assert table_text in page
 
 
 def test_the_comparison_with_the_literature_is_what_the_results_files_give():
-    """docs/results/benchmarks_summary.md (docs/benchmarks.md) from the committed results and each script's
+    """docs/results/benchmarks_summary.md (docs/lab/benchmarks.md) from the committed results and each script's
     COMPARISONS; every data set has a row, each compared test is one the script scores, and the Silverbox
     compares all three tests of its protocol."""
     comparison = _script("comparison")
@@ -115,7 +115,7 @@ def test_the_chosen_tanks_structures_give_their_committed_figures_on_perturbed_r
         assert [row["unperturbed"], *row["perturbed"]] == pytest.approx([old["unperturbed"], *old["perturbed"]],
                                                                         rel=1e-9), model
     assert rerun["PseudoHammersteinWiener"]["spread"] < 0.05
-    page = (ROOT / "docs" / "measured_data.md").read_text()
+    page = (ROOT / "docs" / "lab" / "measured_data.md").read_text()
     assert perturbation.table(committed) in page
     assert (ROOT / "docs" / "results" / "perturbation_summary.md").read_text() == perturbation.table(committed) + "\n"
 
@@ -173,16 +173,16 @@ def test_the_wiener_hammerstein_model_file_simulates_the_record_from_rest_to_its
 
 
 def test_the_prose_quotes_the_wiener_hammerstein_figure_the_results_give():
-    """README.md, docs/measured_data.md and docs/algorithm.md quote the W-H model's test RMS in mV in
+    """README.md, docs/lab/measured_data.md and docs/explanation/algorithm.md quote the W-H model's test RMS in mV in
     their text (not in a generated table): it must be the committed results file's, to three decimals;
     and the prose that compares it with the published record quotes the ratio the results give."""
     row = next(row for row in _results("wiener_hammerstein")["rows"] if row["model"] == "WienerHammerstein")
     rms = row["test_rms"]["samples 101 001-188 000"]
     quoted = "%.3f mV" % (rms * 1e3)
-    for page in (ROOT / "README.md", ROOT / "docs" / "measured_data.md", ROOT / "docs" / "algorithm.md"):
+    for page in (ROOT / "README.md", ROOT / "docs" / "lab" / "measured_data.md", ROOT / "docs" / "explanation" / "algorithm.md"):
         assert quoted in page.read_text(), f"{page.name} should quote {quoted}"
     ratio = "%.2f times" % (rms / _script("wiener_hammerstein").COMPARISONS[0].best[1])
-    for page in (ROOT / "docs" / "benchmarks.md", ROOT / "docs" / "measured_data.md", ROOT / "docs" / "algorithm.md"):
+    for page in (ROOT / "docs" / "lab" / "benchmarks.md", ROOT / "docs" / "lab" / "measured_data.md", ROOT / "docs" / "explanation" / "algorithm.md"):
         assert ratio in page.read_text(), f"{page.name} should quote {ratio} the published record"
 
 
@@ -209,7 +209,7 @@ def test_the_silverbox_nonlinear_feedback_model_file_gives_its_figures_on_every_
     row, linear = rows["NonlinearFeedback"], rows["ARX"]
     for test in _script("silverbox").make().tests:
         assert row["test_rms"][test.name] < 0.2 * linear["test_rms"][test.name], test.name
-        # docs/measured_data.md: below 0.5 mV on each test.
+        # docs/lab/measured_data.md: below 0.5 mV on each test.
         assert row["test_rms"][test.name] <= 0.5e-3, test.name
 
 
@@ -226,7 +226,7 @@ def test_the_emps_friction_drive_model_file_gives_its_figures_and_beats_the_line
 
 
 def test_the_emps_diagnosis_in_the_docs_is_what_the_records_and_the_model_file_give():
-    """docs/benchmarks.md explains the EMPS's test figure: the two records share their reference and
+    """docs/lab/benchmarks.md explains the EMPS's test figure: the two records share their reference and
     their outputs nearly coincide, while the test's input carries the controller's compensation of force
     pulses the model does not see; fed the estimation record's input, the model file scores about half
     its test figure against the test's output. The quoted figures are computed here from the data."""
@@ -236,11 +236,11 @@ def test_the_emps_diagnosis_in_the_docs_is_what_the_records_and_the_model_file_g
     outputs = float(np.sqrt(np.mean((test.y - y) ** 2)))
     inputs = float(np.sqrt(np.mean((test.u - u) ** 2)))
     pulse_free = dataclasses.replace(test, u=u).rms(model)
-    page = (ROOT / "docs" / "benchmarks.md").read_text()
+    page = (ROOT / "docs" / "lab" / "benchmarks.md").read_text()
     for quoted in ("%.3f mm" % (outputs * 1e3), "%.2f (%.0f %% of the input's"
                    % (inputs, 100 * inputs / np.std(test.u)), "%.2f mm" % (pulse_free * 1e3),
                    "%.2f mm" % (rows["NonlinearFeedback"]["test_rms"][test.name] * 1e3)):
-        assert quoted in page, f"docs/benchmarks.md should quote {quoted}"
+        assert quoted in page, f"docs/lab/benchmarks.md should quote {quoted}"
     assert outputs < 0.05 * pulse_free < 0.05 * rows["NonlinearFeedback"]["test_rms"][test.name]
 
 

@@ -1,7 +1,7 @@
 """bonl.plant: parameters, excitation and simulate (the experiment on the plant: test_experiment.py).
 
 The plant is checked against an independent integrator: its right-hand side written again below
-straight from docs/plant.md (plain Python, not bonl's derivative), integrated with scipy's Radau
+straight from docs/explanation/plant.md (plain Python, not bonl's derivative), integrated with scipy's Radau
 interval by interval on the 1 kHz command grid, with the pilot-stage play operator reproduced.
 """
 

@@ -15,19 +15,19 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 QUOTES = [
     ("online_accuracy_summary", ROOT / "docs" / "results" / "online_accuracy_summary.md",
-     [ROOT / "docs" / "explanation" / "estimation_methods.md", ROOT / "docs" / "algorithm.md"]),
+     [ROOT / "docs" / "explanation" / "estimation_methods.md", ROOT / "docs" / "explanation" / "algorithm.md"]),
     ("plant_experiment_summary", ROOT / "docs" / "results" / "plant_experiment_summary.md",
      [ROOT / "README.md", ROOT / "docs" / "explanation" / "paper_experiment.md"]),
     ("sweep_summary", ROOT / "docs" / "results" / "sweep_summary.md",
      [ROOT / "docs" / "explanation" / "paper_experiment.md"]),
     ("measured_data_summary", ROOT / "docs" / "results" / "measured_data_summary.md",
-     [ROOT / "docs" / "measured_data.md"]),
+     [ROOT / "docs" / "lab" / "measured_data.md"]),
     ("tracking_summary", ROOT / "docs" / "results" / "tracking_summary.md",
-     [ROOT / "docs" / "control.md"]),
-    ("benchmarks_summary", ROOT / "docs" / "results" / "benchmarks_summary.md", [ROOT / "docs" / "benchmarks.md"]),
-    ("joint_angle_summary", ROOT / "docs" / "results" / "joint_angle_summary.md", [ROOT / "docs" / "plant.md"]),
+     [ROOT / "docs" / "how-to" / "control.md"]),
+    ("benchmarks_summary", ROOT / "docs" / "results" / "benchmarks_summary.md", [ROOT / "docs" / "lab" / "benchmarks.md"]),
+    ("joint_angle_summary", ROOT / "docs" / "results" / "joint_angle_summary.md", [ROOT / "docs" / "explanation" / "plant.md"]),
     ("bench_summary", ROOT / "docs" / "results" / "bench_summary.md",
-     [ROOT / "docs" / "performance.md"]),
+     [ROOT / "docs" / "lab" / "performance.md"]),
 ]
 
 
@@ -101,12 +101,12 @@ def plant_of(parameter, value):
 
 
 def committed_sweep():
-    with open(ROOT / "docs" / "sweep.csv", newline="") as f:
+    with open(ROOT / "docs" / "results" / "sweep.csv", newline="") as f:
         return list(csv.DictReader(f))
 
 
 def test_the_sweep_gives_its_committed_figures():
-    """docs/sweep.csv (bonl_demo --sweep docs, scripts/plant_experiment.sh; the figure docs/sweep.svg is
+    """docs/results/sweep.csv (bonl_demo --sweep docs, scripts/plant_experiment.sh; the figure docs/results/sweep.svg is
     drawn from the same run) is what the sweep gives today: every model's validation MSE for both
     methods and P-H-W's c at every point, to the file's ten digits."""
     rows = committed_sweep()
@@ -126,7 +126,7 @@ def test_the_sweep_gives_its_committed_figures():
 
 
 def test_the_sweep_summary_is_its_results_file():
-    """The sweep table of docs/explanation/paper_experiment.md (sweep_summary.md) holds docs/sweep.csv's output-error MSEs to three digits."""
+    """The sweep table of docs/explanation/paper_experiment.md (sweep_summary.md) holds docs/results/sweep.csv's output-error MSEs to three digits."""
     rows = {(r["parameter"], float(r["value"])): r for r in committed_sweep() if r["method"] == "output_error"}
     table = table_rows((ROOT / "docs" / "results" / "sweep_summary.md").read_text())
     assert len(table) == 11
@@ -210,7 +210,7 @@ def test_the_benchmark_summary_is_the_committed_full_run():
 def test_the_joint_angle_models_give_their_committed_figures():
     """docs/results/joint_angle.json (examples/joint_angle/joint_angle.py): the paper's four models on
     the simulated joint's angle, without and with an integrator, recomputed to 1e-9 relative; the table
-    docs/plant.md quotes is the one the results give."""
+    docs/explanation/plant.md quotes is the one the results give."""
     import importlib.util
     spec = importlib.util.spec_from_file_location("joint_angle", ROOT / "examples" / "joint_angle" / "joint_angle.py")
     joint_angle = importlib.util.module_from_spec(spec)

@@ -13,7 +13,7 @@
 // recover within its first half, or a rich phase passes without a single accepted update (the
 // estimator has stopped learning: the recovery time cannot see that, since a stalled estimator's
 // innovation is as large in the second half of a phase as in the first). Figures are in
-// docs/reliability.md.
+// docs/lab/reliability.md.
 //
 //   bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X] [--seed S]
 //             [--method output_error|equation_error|paper] [--json FILE]

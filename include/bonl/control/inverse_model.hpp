@@ -52,7 +52,7 @@ struct InverseOptions {
   /// P-H-W: the backlash inverse's transition band, in the output's units (0: the exact switch).
   double backlash_band = 0.0;
   /// P-H-W: added to backlash_band, times the model's backlash half-width c (1: a band of c, which
-  /// scales with the model; what the tracking experiment uses, docs/control.md).
+  /// scales with the model; what the tracking experiment uses, docs/how-to/control.md).
   double backlash_band_per_c = 0.0;
 };
 

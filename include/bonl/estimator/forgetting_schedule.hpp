@@ -7,7 +7,7 @@
 //   that grows with the record while the prediction error is stationary, and is cut back while the
 //   error is still falling (the estimate is converging: the old samples were linearised at a worse
 //   estimate), rising markedly (the plant changed), or as large as the output's own variation (the
-//   model explains little yet). See AdaptiveMemory below and docs/algorithm.md.
+//   model explains little yet). See AdaptiveMemory below and docs/explanation/algorithm.md.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -21,7 +21,7 @@ namespace bonl {
 /// The forgetting factor lambda over time, of one of two kinds: steps (`initial` for the first
 /// `initial_samples` samples, `final` afterwards: the paper's 0.98 for 200 samples, then 1) or an
 /// adaptive memory (the output-error method's default: lambda = 1 - 1 / L with a memory L that grows
-/// while the prediction error is stationary and is cut back while it changes). docs/algorithm.md.
+/// while the prediction error is stationary and is cut back while it changes). docs/explanation/algorithm.md.
 struct ForgettingSchedule {
   /// The two kinds: steps, adaptive memory.
   enum class Kind { Steps, AdaptiveMemory };

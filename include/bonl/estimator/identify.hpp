@@ -119,7 +119,7 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
   // unset). Both are continuous functions of the data, so the result does not jump when the data
   // change in their last digit. The paper method's estimate is not a start: its internal variables
   // come from its own free run and switch with the backlash, and on the cascaded tanks a change of
-  // 1e-9 V in the output moved it by O(1) and the refined P-H-W between minima (docs/algorithm.md).
+  // 1e-9 V in the output moved it by O(1) and the refined P-H-W between minima (docs/explanation/algorithm.md).
   // A start whose recursion broke down numerically is dropped; if both did, the error is reported.
   IdentifyOptions other_options = options;
   other_options.method = options.method == Method::OutputError ? Method::EquationError : Method::OutputError;

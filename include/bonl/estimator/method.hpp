@@ -11,7 +11,7 @@ namespace bonl {
 enum class Method {
   /// bonl's default: a recursive prediction-error method on the free-run (output) error. Per sample
   /// the model is simulated one step with the current estimate, its output's sensitivities to theta
-  /// are propagated through each block, and one Gauss-Newton step is taken (docs/algorithm.md).
+  /// are propagated through each block, and one Gauss-Newton step is taken (docs/explanation/algorithm.md).
   /// Not biased by white output noise; exact on noise-free data.
   OutputError,
   /// The equation-error method: internal variables projected onto what the measured output allows

@@ -38,15 +38,15 @@ struct EstimatorOptions {
   /// every `internal_refresh` samples, not from the running estimate (see Estimator::update).
   Eigen::Index internal_refresh = 100;
 
-  // Numerical safeguards (docs/reference/numerical_safeguards.md and docs/reliability.md).
+  // Numerical safeguards (docs/reference/numerical_safeguards.md and docs/lab/reliability.md).
   /// trace(P) is kept at or below trace_ceiling * trace(P(0)) = trace_ceiling * n * p0 by reducing
   /// the forgetting where it would grow P beyond that (no covariance wind-up under poor excitation).
   /// Must be >= 1; infinity turns it off (the paper's algorithm exactly as written). Unset, the
   /// method's default: 1 for equation_error and paper, "never less certain than at the start" (larger
   /// ceilings let P's condition number grow with them: at 100 the paper method's P lost positive
-  /// definiteness to round-off in the 1e8-sample soak test, docs/reliability.md); 100 for output_error,
+  /// definiteness to round-off in the 1e8-sample soak test, docs/lab/reliability.md); 100 for output_error,
   /// whose P(0) is small and whose short memory while converging needs room in the weakly excited
-  /// directions (docs/algorithm.md).
+  /// directions (docs/explanation/algorithm.md).
   std::optional<double> trace_ceiling;
   /// After this many consecutive refused updates (UpdateStatus::NumericalFailure) the estimator
   /// resets P to p0 I itself, keeping theta (counted in health().recoveries). 0: never; the caller
@@ -73,7 +73,7 @@ struct EstimatorOptions {
     return trace_ceiling ? *trace_ceiling : (method == Method::OutputError ? 10.0 : 1.0);
   }
 
-  /// Throws std::invalid_argument for a setting out of range (docs/bad_input.md lists them).
+  /// Throws std::invalid_argument for a setting out of range (docs/reference/bad_input.md lists them).
   void validate() const {
     resolved_forgetting().validate();
     const double p0_value = resolved_p0();
@@ -362,7 +362,7 @@ class Estimator {
     return Scalar(m_forgetting.at(m_sample));
   }
 
-  /// Method::OutputError (docs/algorithm.md): simulate the model one step with the current estimate,
+  /// Method::OutputError (docs/explanation/algorithm.md): simulate the model one step with the current estimate,
   /// take one Gauss-Newton step on the simulation error with the output's sensitivities as the
   /// regressor, keep the estimate valid (c >= 0, the linear block stable), then store the step and
   /// move the stored simulation to first order along the change of the estimate.

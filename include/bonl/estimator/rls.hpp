@@ -7,7 +7,7 @@
 // is commutative, so P stays exactly symmetric by construction without a triangular view (whose
 // generic kernels cost 4x more at the paper's sizes). The paper's (I - K phi') P / lambda is the same
 // matrix in exact arithmetic. (Written as h h' with h = g sqrt(c), which saves the multiplication by
-// c per entry, the square root lies on the critical path and the update is slower: docs/performance.md.)
+// c per entry, the square root lies on the critical path and the update is slower: docs/lab/performance.md.)
 // An update that would make the denominator or a diagonal entry of P non-positive, or a number
 // non-finite, is refused and leaves the state untouched.
 //
@@ -97,7 +97,7 @@ BONL_FLATTEN bool rls_update_fixed_length(Storage& M, Scalar* theta, const Scala
   const Eigen::Index n = std::min(count, Eigen::Index(kLength));
   // Over the whole fixed length, each entry read only below n: a loop GCC neither turns into
   // memcpy calls (a loop over the n entries became two, a sizeable share of a small update:
-  // docs/performance.md) nor reads past n in.
+  // docs/lab/performance.md) nor reads past n in.
   Column padded_phi;
   Column padded_theta;
   for (Eigen::Index i = 0; i < kLength; ++i) {
@@ -242,7 +242,7 @@ class Rls {
       // Run-time sizes up to 32 parameters run the kernel of their storage length, fixed at compile
       // time: whole SIMD registers and locals in registers, what makes the fixed sizes fast. Five
       // lengths cover 1 to 32 parameters; a kernel per exact size compiled 32 of them, which came to
-      // dominate the build of every translation unit using a run-time size (docs/performance.md).
+      // dominate the build of every translation unit using a run-time size (docs/lab/performance.md).
       // Above 32, the generic kernel.
       // One case per padded length up to kMaxCompiledSize: the constructor allocates the generic
       // kernel's scratch only above it, so a length without its case here would run on none.

@@ -1,5 +1,5 @@
 #pragma once
-// The records of an experiment on the simulated plant, as docs/plant.md specifies them: excite,
+// The records of an experiment on the simulated plant, as docs/explanation/plant.md specifies them: excite,
 // repeat with independent sensor noise, average the angles, low-pass them (first order, 10 Hz),
 // differentiate to the angular velocity y [rad/s]; an identification record from the paper's
 // multi-sine and a validation record from a different trajectory.

@@ -1,5 +1,5 @@
 #pragma once
-// From model to controller on the simulated plant (docs/control.md, "Tracking on the plant"): the
+// From model to controller on the simulated plant (docs/how-to/control.md, "Tracking on the plant"): the
 // dipper joint tracks a reference joint velocity under
 //   (a) a PI loop alone,
 //   (b) the PI loop plus the feedforward of each model of the paper's experiment that has an inverse
@@ -24,14 +24,14 @@
 
 namespace bonl::experiment {
 
-/// What the tracking experiment runs (docs/control.md): the reference, the duration, the plant's
+/// What the tracking experiment runs (docs/how-to/control.md): the reference, the duration, the plant's
 /// change and the identification method of the models that feed forward.
 struct TrackingOptions {
   double sample_time = 0.01;  ///< [s], the experiment's 100 Hz
   double cutoff_hz = 10.0;    ///< the measured angle's first-order low-pass (the records')
   /// The reference joint velocity: a smooth random signal (plant::excitation::smooth_random) of this
   /// bandwidth and RMS with period `period`, repeated, and started smoothly over `ramp`. Fixed before
-  /// any controller was run on it (docs/control.md).
+  /// any controller was run on it (docs/how-to/control.md).
   double reference_bandwidth_hz = 0.5;  ///< half the identification multi-sine's top tone
   double reference_rms = 0.1;           ///< [rad/s], about the validation record's velocity RMS
   double period = 20.0;                 ///< [s]
@@ -45,7 +45,7 @@ struct TrackingOptions {
   std::uint64_t noise_seed = 99;  ///< the plant's sensor noise
   /// The models that feed forward: the paper experiment's, identified by this method.
   Method method = Method::Paper;
-  /// P-H-W: the backlash inverse's transition band, per unit of the model's c (docs/control.md).
+  /// P-H-W: the backlash inverse's transition band, per unit of the model's c (docs/how-to/control.md).
   double backlash_band_per_c = 1.0;
   /// The adaptive feedforward's estimator and guard (defaults: adaptive_defaults()); its `inverse`
   /// is replaced by the experiment's (the valve's command range, the band of backlash_band_per_c).
@@ -97,7 +97,7 @@ struct TrackingResult {
 Eigen::VectorXd tracking_reference(const TrackingOptions& options, Eigen::Index samples);
 
 /// The experiment with the models of `identified` (identify_paper_models' result) on the plant
-/// `parameters`. The PI is designed from the identified ARX model by Skogestad's SIMC rule (docs/control.md).
+/// `parameters`. The PI is designed from the identified ARX model by Skogestad's SIMC rule (docs/how-to/control.md).
 TrackingResult run_tracking_experiment(const plant::Parameters& parameters, const MethodResult& identified,
                                        const TrackingOptions& options = {});
 

@@ -1,13 +1,13 @@
 #pragma once
 // Parameters of the excavator dipper-joint plant (valve + asymmetric cylinder + linkage +
-// backlash), as specified in docs/plant.md (copied from the project's design). Every value can be
+// backlash), as specified in docs/explanation/plant.md (copied from the project's design). Every value can be
 // overridden; validate() rejects non-physical ones with a message that names the parameter.
 // The comment after each member gives plant.md's symbol and unit.
 
 namespace bonl::plant {
 
 /// The excavator dipper-joint plant's parameters (valve, asymmetric cylinder, linkage, backlash) as
-/// docs/plant.md specifies them, each member's comment giving the symbol and unit; validate() rejects
+/// docs/explanation/plant.md specifies them, each member's comment giving the symbol and unit; validate() rejects
 /// non-physical values with a message that names the parameter.
 struct Parameters {
   // Cylinder

@@ -2,7 +2,7 @@
 // The plant one sample at a time: an object that holds the CVODE state and advances one output
 // sample per command, `measurement = plant.step(command)`, for a controller or an online estimator
 // in the loop. It is the core simulate itself runs on (simulate is a loop over it), so the same
-// command sequence gives the same trajectory, sample for sample (docs/plant.md, "Stepping").
+// command sequence gives the same trajectory, sample for sample (docs/explanation/plant.md, "Stepping").
 
 #include <cstdint>
 #include <memory>

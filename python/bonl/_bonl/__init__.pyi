@@ -13,7 +13,11 @@ from . import experiment
 from . import control
 __all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
-    pass
+    """
+    Numerical trouble found while computing: a diverging simulation, a covariance that lost
+    positiveness, a non-finite intermediate result. The message says where. Bad input raises
+    ValueError instead. A subclass of ArithmeticError.
+    """
 class ARX:
     """
     ARX model y(k) = -sum a_j y(k-j) + sum_{i=0..nb} b_i u(k-nk-i).
@@ -1836,7 +1840,7 @@ class Estimator:
         Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
         c = 0 for output_error).
     method : {'output_error', 'equation_error', 'paper'}
-        As for identify; default 'output_error' (docs/algorithm.md).
+        As for identify; default 'output_error' (docs/explanation/algorithm.md).
     forgetting : float, tuple or 'adaptive', optional
         As for identify; default the method's ('adaptive' for output_error, the paper's schedule for
         the others).

@@ -1,5 +1,5 @@
 """
-Inverse models: the command that makes an identified model follow a reference (docs/control.md).
+Inverse models: the command that makes an identified model follow a reference (docs/how-to/control.md).
 """
 from __future__ import annotations
 import bonl._bonl
@@ -131,7 +131,7 @@ class InverseModel:
     follow it: the backlash inverse (P-H-W) or the output polynomial's inverse (H-W, Wiener), the linear
     block's inverse (exact where B is minimum phase, ZPETC where not), the input polynomial's inverse
     (Hammerstein, H-W, P-H-W) or the input hysteresis' (Prandtl-Ishlinskii Hammerstein, its plays' memory
-    followed). docs/control.md.
+    followed). docs/how-to/control.md.
     
     Parameters
     ----------
@@ -246,7 +246,7 @@ class AdaptiveInverse:
     estimator, warm-started from ``model``; every ``rederive_every`` samples the inverse is derived
     again from the estimate, if the guard trusts it (the estimator has not diverged, trace(P) <=
     max_covariance_trace * n * p0, every pole inside stability_radius, the estimate has an inverse), and
-    goes on from where the old one was. ``step`` is the inverse in use. docs/control.md, "Adaptive use".
+    goes on from where the old one was. ``step`` is the inverse in use. docs/how-to/control.md, "Adaptive use".
     
     Parameters
     ----------

@@ -381,7 +381,7 @@ def published_score(name: str) -> typing.Any:
     """
 def run_paper_experiment(parameters: typing.Any = None, *, robustness: bool = False) -> PaperExperimentResult:
     """
-    The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/plant.md).
+    The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/explanation/plant.md).
     
     Identification record from the paper's multi-sine, validation record from a smooth random
     signal (each 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated); every model of
@@ -410,7 +410,7 @@ def run_paper_experiment(parameters: typing.Any = None, *, robustness: bool = Fa
     """
 def run_tracking_experiment(parameters: typing.Any = None, *, method: str = 'paper', reference_seed: typing.SupportsInt | typing.SupportsIndex = 2020, noise_seed: typing.SupportsInt | typing.SupportsIndex = 99) -> TrackingResult:
     """
-    The tracking experiment, as ``bonl_demo --control`` runs it (docs/control.md).
+    The tracking experiment, as ``bonl_demo --control`` runs it (docs/how-to/control.md).
     
     The paper experiment's models are identified on the plant; then the plant, stepped with its sensor
     noise, tracks a reference joint velocity under a PI loop alone (SIMC from the ARX model), the PI

@@ -229,7 +229,7 @@ class FrontKeyTerms {
   /// Pushes u(k), writes the front's regressor into phi.head(front size) and returns
   /// x(k) = regressor . theta over those entries. x is summed from the values as they are written,
   /// not by reading phi back: a vector load of entries just stored one by one stalls on
-  /// store-to-load forwarding (docs/performance.md).
+  /// store-to-load forwarding (docs/lab/performance.md).
   template <typename Theta, typename Phi>
   Scalar begin(const Theta& theta, Scalar u, Phi& phi) noexcept {
     m_u.push(u);

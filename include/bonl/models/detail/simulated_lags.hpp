@@ -11,7 +11,7 @@
 // correct(delta): after the estimate moved by delta, the stored lags are what the simulation with the
 // old estimate gave; to first order the new estimate would have given x + (dx/dtheta)' delta, so
 // they are moved there. Measured on the known systems: this recovers most of what re-simulating the
-// whole record with the new estimate would (docs/algorithm.md), at na dot products per sample.
+// whole record with the new estimate would (docs/explanation/algorithm.md), at na dot products per sample.
 //
 // With ni integrators (detail/integrators.hpp) the recursion above runs on z = (1 - q^-1)^ni x, and
 //   x(k) = z(k) + carried(k),   d x(k) / d theta = d z(k) / d theta - sum_i d_i d x(k-i) / d theta,

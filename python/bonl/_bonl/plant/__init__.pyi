@@ -1,5 +1,5 @@
 """
-The excavator dipper-joint plant (docs/plant.md) integrated by SUNDIALS CVODE: parameters,
+The excavator dipper-joint plant (docs/explanation/plant.md) integrated by SUNDIALS CVODE: parameters,
 command signals (submodule ``excitation``), ``simulate`` and ``SteppingPlant`` (one sample per
 call); the paper's experiment on it is ``bonl.experiment``.
 """
@@ -11,7 +11,7 @@ from . import excitation
 __all__: tuple = ('Parameters', 'default_parameters', 'small_parameters', 'Command', 'excitation', 'simulate', 'initial_state', 'derivative', 'SteppingPlant', 'Measurement')
 class Parameters:
     """
-    Parameters of the excavator dipper-joint plant (docs/plant.md).
+    Parameters of the excavator dipper-joint plant (docs/explanation/plant.md).
     
     Valve, asymmetric cylinder, linkage and backlash of a 20 t excavator's stick cylinder by
     default; ``small_parameters()`` gives the 5-6 t machine. Every value can be overridden, as a

@@ -8,7 +8,7 @@ from benchmark import DATA, Benchmark, Test, main
 from comparison import Comparison
 
 
-#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+#: docs/lab/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
 COMPARISONS = (Comparison(test="validation multisine", protocol="the benchmark's own (SOURCE.md): from rest",
                           best=("decoupled PNLSS, Esfahani et al. 2017", 1.87e-5)),)
 

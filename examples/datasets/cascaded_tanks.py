@@ -1,7 +1,7 @@
 """Cascaded tanks (Schoukens et al. 2016; data/cascaded-tanks/SOURCE.md): estimate on (uEst, yEst),
 simulate (uVal, yVal) after the benchmark's 5-sample state-initialisation window (SOURCE.md; the
 earlier nonlinear-benchmarks versions' window: 1.0.1's 50 samples make the chosen P-H-W's figure move
-by 15% when the training output changes in its last digits, docs/benchmarks.md). Both records start
+by 15% when the training output changes in its last digits, docs/lab/benchmarks.md). Both records start
 from the same state, not from rest at zero: the model's operating point is the estimation record's
 first sample or the mean of the record (identify's operating_point="initial" or "mean"), chosen like
 the orders."""
@@ -12,7 +12,7 @@ from benchmark import DATA, Benchmark, Test, main
 from comparison import Comparison
 
 
-#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+#: docs/lab/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
 COMPARISONS = (Comparison(test="validation record", protocol="SOURCE.md (nonlinear-benchmarks before 1.0.1): 5-sample window",
                           best=("grey box with overflow, Rogers et al. 2017", 0.18)),)
 

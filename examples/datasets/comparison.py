@@ -1,4 +1,4 @@
-"""bonl against the literature on every measured data set (docs/benchmarks.md). For each data set and
+"""bonl against the literature on every measured data set (docs/lab/benchmarks.md). For each data set and
 each test its script compares (``COMPARISONS``):
 
 - bonl's figure: the model ``bonl.select`` would pick across every model family on the estimation data

@@ -10,7 +10,7 @@ from benchmark import DATA, Benchmark, Test, main
 from comparison import Comparison
 
 
-#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+#: docs/lab/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
 COMPARISONS = (Comparison(  # SOURCE.md gives no figures for this split
     test="samples 261-500", protocol="split of the GP literature (SOURCE.md); 10-sample window of "
     "nonlinear-benchmarks 1.0.1"),)

@@ -7,7 +7,7 @@ from benchmark import DATA, Benchmark, Test, main
 from comparison import Comparison
 
 
-#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+#: docs/lab/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
 COMPARISONS = (Comparison(
     test="samples 513-1024", protocol="SOURCE.md: from rest over the whole record",
     best=("one-hidden-layer neural network", 0.47),

@@ -9,7 +9,7 @@ from benchmark import DATA, Benchmark, Test, main
 from comparison import Comparison
 
 
-#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+#: docs/lab/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
 #: SUBNET's figures are the paper's as cited in the project's issue tracker; SOURCE.md quotes 5.79 and
 #: 2.04 mV from the authors' repository and flags that the two disagree.
 _PROTOCOL = "nonlinear-benchmarks 1.0.1: 50-sample window"

@@ -13,7 +13,7 @@ def load():
     return data["uBenchMark"], data["yBenchMark"]
 
 
-#: docs/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
+#: docs/lab/benchmarks.md: the published figures beside bonl's (from SOURCE.md).
 COMPARISONS = (Comparison(
     test="samples 101 001-188 000",
     protocol="the benchmark's own (SOURCE.md): from rest, the first 1 000 samples not scored",

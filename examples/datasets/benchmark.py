@@ -73,6 +73,9 @@ class Benchmark:
     #: a family's structures set up before selection, by its name (knots, an operating point that is
     #: physics, not data): called on each candidate, from the estimation data only
     prepare: Dict[str, Callable[[object], None]] = dataclasses.field(default_factory=dict)
+    #: bonl.select's criterion: "validation" (the held-out tail of the estimation data, scored with the
+    #: tests' window) or "aic"/"bic" (the free run over the whole estimation record)
+    criterion: str = "validation"
 
     def grid_of(self, family) -> Optional[Dict[str, Sequence[int]]]:
         """The orders ``family`` is selected over here, or None where this data set does not run it."""
@@ -109,7 +112,9 @@ def _run(benchmark, families):
             benchmark.prepare.get(family.__name__, lambda structure: None)(candidate)
         identify = benchmark.family_identify.get(family.__name__, benchmark.identify)
         start = time.perf_counter()
-        selections = [(bonl.select(candidates, benchmark.estimation, window=benchmark.window, **options), options)
+        scoring = (dict(window=benchmark.window) if benchmark.criterion == "validation"
+                   else dict(criterion=benchmark.criterion))
+        selections = [(bonl.select(candidates, benchmark.estimation, **scoring, **options), options)
                       for options in identify]
         selection, options = min(selections, key=lambda pair: pair[0].table[0].score)
         seconds = time.perf_counter() - start
@@ -120,7 +125,7 @@ def _run(benchmark, families):
             "orders": bonl.named_orders(best),
             "identify": options,
             "candidates": len(candidates) * len(identify),
-            "check_rms": math.sqrt(chosen.score),
+            "check_rms": math.sqrt(chosen.score if benchmark.criterion == "validation" else chosen.fit_mse),
             "test_rms": {test.name: test.rms(best) for test in benchmark.tests},
             "test_rms_from_rest": {test.name: test.rms(best, from_rest=True) for test in benchmark.tests if test.window},
             "test_inputs_outside_range": {test.name: best.extrapolated_samples(test.u) for test in benchmark.tests},
@@ -139,6 +144,7 @@ def _run(benchmark, families):
            if benchmark.family_orders else {}),
         **({"family_identify": benchmark.family_identify} if benchmark.family_identify else {}),
         "identify": benchmark.identify,
+        **({"criterion": benchmark.criterion} if benchmark.criterion != "validation" else {}),
         "tests": [{"name": t.name, "samples": int(t.u.size), "window": t.window, "skip": t.skip}
                   for t in benchmark.tests],
         "published": benchmark.published,

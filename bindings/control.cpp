@@ -349,7 +349,7 @@ Raises ValueError for bad options or a model without an inverse.)doc");
       .def("step", &AnyAdaptive::step, py::arg("reference"),
            "The command for the reference ahead, from the inverse in use (as InverseModel.step).")
       .def("update", &AnyAdaptive::update, py::arg("u"), py::arg("y"),
-           "One sample of the plant: the command applied and the output measured. Returns the estimator's\n"
+           "One sample of the plant: u the command applied and y the output measured. Returns the estimator's\n"
            "UpdateStatus (rejected_non_finite for a NaN or infinite value: nothing changes).")
       .def("rederive", &AnyAdaptive::rederive,
            "Derive the inverse from the estimate now, if the guard trusts it; returns whether it is in use.")

@@ -457,7 +457,8 @@ UpdateStatus, for one sample; UpdateResults for arrays (``status``, an int8 arra
       .def(
           "reset_to",
           [](AnyEstimator& self, const py::object& theta) { self.reset_to(to_vector(theta, "theta")); },
-          py::arg("theta"), "Restart from a given estimate (a warm start), P = p0 I.")
+          py::arg("theta"), "Restart from the estimate theta (a warm start: the model's parameter vector, e.g. an identified\n"
+          "model's theta), P = p0 I, internal variables at rest. ValueError for theta of another length.")
       .def("start_pass", &AnyEstimator::start_pass,
            "A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.")
       .def_property_readonly("last_prediction", &AnyEstimator::last_prediction,

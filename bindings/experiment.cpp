@@ -265,7 +265,8 @@ void bind_tracking(py::module_& sub) {
                     "plant change.")
       .def("run", &experiment::TrackingResult::run, py::arg("controller"), py::arg("plant_changes") = false,
            py::return_value_policy::reference_internal,
-           "The run of ``controller`` with or without the plant change.\n\nRaises\n------\nValueError\n"
+           "The run of ``controller`` (its label, e.g. \"PI + P-H-W\"), with the plant change at 40 s when\n"
+           "``plant_changes`` is true, else without.\n\nRaises\n------\nValueError\n"
            "    When there is no such run.")
       .def_property_readonly(
           "tracking_rms",

@@ -17,7 +17,7 @@ void bind_metrics(py::module_& m) {
       py::arg("y"), py::arg("yhat"), "Mean squared error, mean((y - yhat)^2).");
   metrics.def(
       "rmse", pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::rmse(y, yhat); }),
-      py::arg("y"), py::arg("yhat"), "Root mean squared error.");
+      py::arg("y"), py::arg("yhat"), "Root mean squared error of yhat against y, sqrt(mean((y - yhat)^2)).");
   metrics.def(
       "nrmse",
       pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::nrmse(y, yhat); }),

@@ -156,7 +156,8 @@ void bind_common(py::class_<Model>& cls) {
       .def(
           "to_json", [](const Model& model, int indent) { return bonl::io::to_json(model, indent); },
           py::arg("indent") = -1,
-          "str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).")
+          "str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent\n"
+          "spaces per level of nesting, -1 (the default) for one line.")
       .def(py::pickle([](const Model& model) { return bonl::io::to_json(model); },
                       [](const std::string& text) { return bonl::io::model_from_json<Model>(text); }))
       .def("__copy__", [](const Model& model) { return Model(model); })

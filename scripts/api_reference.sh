@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds the API reference, offline, warnings as errors: the C++ headers' comments with Doxygen
-# (docs/api/Doxyfile) into build/api/cpp, and the installed Python package's docstrings with pdoc into
+# Builds the API reference, offline, warnings as errors: the C++ headers' comments and the
+# documentation's pages (docs/) with Doxygen (docs/api/Doxyfile) into build/api/cpp, and the installed Python package's docstrings with pdoc into
 # build/api/python. Fails on an undocumented public C++ class or member, a broken comment, or a
 # warning from pdoc. The Python package and pdoc come from scripts/test.sh's build/venv, or
 #   PYTHON=/path/to/python scripts/api_reference.sh

@@ -82,7 +82,8 @@ class Selection:
 def grid(model_class: type, **orders: Iterable[int]) -> List[Any]:
     """Every structure of ``model_class`` over the lists of orders given by name (one value or a list
     per order; every order of ``model_class.ORDERS`` must be given but those of
-    ``model_class.ORDER_DEFAULTS``, the integrators ``ni``, which take their default)."""
+    ``model_class.ORDER_DEFAULTS``, the integrators ``ni``, which take their default). Returns the
+    structures, a list to pass to :func:`select`; ValueError for an order unknown or missing."""
     if model_class not in _bonl.MODELS:
         raise ValueError(f"bonl: grid: model_class must be one of bonl.MODELS, got {model_class!r}")
     names = model_class.ORDERS
@@ -141,7 +142,7 @@ def _held_out(samples: int, fraction: float) -> int:
 
 def named_orders(structure: Any) -> Dict[str, int]:
     """The structure's orders by name, as its model file writes them: an order at its default
-    (``ORDER_DEFAULTS``, the integrators ``ni = 0``) is left out."""
+    (``ORDER_DEFAULTS``, the integrators ``ni = 0``) is left out. Returns a dict, name to order."""
     defaults = type(structure).ORDER_DEFAULTS
     return {name: value for name, value in zip(type(structure).ORDERS, structure.orders)
             if defaults.get(name) != value}

@@ -108,7 +108,8 @@ class ARX:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
+        spaces per level of nesting, -1 (the default) for one line.
         """
     @property
     def a(self) -> typing.Any:
@@ -286,7 +287,8 @@ class Hammerstein:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
+        spaces per level of nesting, -1 (the default) for one line.
         """
     @property
     def a(self) -> typing.Any:
@@ -489,7 +491,8 @@ class HammersteinWiener:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
+        spaces per level of nesting, -1 (the default) for one line.
         """
     @property
     def a(self) -> typing.Any:
@@ -703,7 +706,8 @@ class PseudoHammersteinWiener:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
+        spaces per level of nesting, -1 (the default) for one line.
         """
     @property
     def a(self) -> typing.Any:
@@ -908,7 +912,8 @@ class Wiener:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
+        spaces per level of nesting, -1 (the default) for one line.
         """
     @property
     def a(self) -> typing.Any:
@@ -1111,7 +1116,8 @@ class WienerHammerstein:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
+        spaces per level of nesting, -1 (the default) for one line.
         """
     @property
     def a1(self) -> typing.Any:
@@ -1365,7 +1371,8 @@ class NonlinearFeedback:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
+        spaces per level of nesting, -1 (the default) for one line.
         """
     @property
     def a(self) -> typing.Any:
@@ -1620,7 +1627,8 @@ class PrandtlIshlinskiiHammerstein:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
+        spaces per level of nesting, -1 (the default) for one line.
         """
     @property
     def a(self) -> typing.Any:
@@ -1893,7 +1901,8 @@ class Estimator:
         """
     def reset_to(self, theta: typing.Any) -> None:
         """
-        Restart from a given estimate (a warm start), P = p0 I.
+        Restart from the estimate theta (a warm start: the model's parameter vector, e.g. an identified
+        model's theta), P = p0 I, internal variables at rest. ValueError for theta of another length.
         """
     def start_pass(self) -> None:
         """

@@ -296,7 +296,7 @@ class AdaptiveInverse:
         """
     def update(self, u: typing.Any, y: typing.Any) -> bonl._bonl.UpdateStatus:
         """
-        One sample of the plant: the command applied and the output measured. Returns the estimator's
+        One sample of the plant: u the command applied and y the output measured. Returns the estimator's
         UpdateStatus (rejected_non_finite for a NaN or infinite value: nothing changes).
         """
     @property

@@ -284,7 +284,8 @@ class TrackingResult:
     """
     def run(self, controller: str, plant_changes: bool = False) -> TrackingRun:
         """
-        The run of ``controller`` with or without the plant change.
+        The run of ``controller`` (its label, e.g. "PI + P-H-W"), with the plant change at 40 s when
+        ``plant_changes`` is true, else without.
         
         Raises
         ------

@@ -18,5 +18,5 @@ def nrmse(y: typing.Any, yhat: typing.Any) -> float:
     """
 def rmse(y: typing.Any, yhat: typing.Any) -> float:
     """
-    Root mean squared error.
+    Root mean squared error of yhat against y, sqrt(mean((y - yhat)^2)).
     """

@@ -222,3 +222,24 @@ def test_the_joint_angle_models_give_their_committed_figures():
         assert new["validation_rms"] == pytest.approx(old["validation_rms"], rel=1e-9), (new["model"], new["ni"])
         assert new["json"]["orders"].get("ni", 0) == new["ni"]
     assert joint_angle.table(committed) == (ROOT / "docs" / "results" / "joint_angle_summary.md").read_text()
+
+
+def test_the_experiment_page_quotes_the_robustness_check():
+    """docs/explanation/paper_experiment.md's robustness counts: on how many of the further validation
+    trajectories one model's MSE is below another's, per method, as the experiment gives them."""
+    result = bonl.experiment.run_paper_experiment(robustness=True)
+    counts = {}
+    for method in ("output_error", "paper"):
+        mse = {name: result.method(method).models[name].robustness_mse for name in result.model_names}
+        n = result.robustness_trajectories
+        assert n == 8 and all(len(v) == n for v in mse.values())
+        counts[method] = {(a, b): sum(x < y for x, y in zip(mse[a], mse[b])) for a in mse for b in mse}
+    ours, paper = counts["output_error"], counts["paper"]
+    phw, pih = "PseudoHammersteinWiener", "PrandtlIshlinskiiHammerstein"
+    text = " ".join((ROOT / "docs" / "explanation" / "paper_experiment.md").read_text().split())
+    assert ("bonl's P-H-W beats its Hammerstein on %d of 8, but Hammerstein beats ARX on only %d of 8; with the "
+            "paper's estimator on %d of 8 and %d of 8." % (ours[phw, "Hammerstein"], ours["Hammerstein", "ARX"],
+                                                           paper[phw, "Hammerstein"], paper["Hammerstein", "ARX"])) in text
+    assert ("P-I-H beats P-H-W on %d of 8 and Hammerstein on %d of 8 with bonl's estimator, on %d of 8 and %d of 8 "
+            "with the paper's." % (ours[pih, phw], ours[pih, "Hammerstein"], paper[pih, phw],
+                                   paper[pih, "Hammerstein"])) in text

@@ -160,6 +160,9 @@ def _fit(structure: Any, records: List[Tuple[np.ndarray, np.ndarray]], criterion
     t0 = time.perf_counter()
     split = [len(u) - _held_out(len(u), fraction) if criterion == "validation" else len(u) for u, _ in records]
     fit_records = [(u[:s], y[:s]) for (u, y), s in zip(records, split)]
+    if sum(split) <= structure.num_params:  # identify would refuse it: a failed candidate, not bad input
+        return _failed(structure, f"bonl: select: {structure.num_params} parameters cannot be fitted on the "
+                       f"{sum(split)} samples of the fit part", time.perf_counter() - t0)
     try:
         model = _bonl.identify(structure, fit_records, **options)
     except _bonl.NumericalError as error:

@@ -52,6 +52,7 @@ def test_the_quick_data_sets_select_the_same_structures_again(name):
     module = _script(name)
     committed = _results(name)
     rerun = _script("benchmark").run(module.make())
+    assert [row["model"] for row in rerun["rows"]] == [row["model"] for row in committed["rows"]]
     for old, new in zip(committed["rows"], rerun["rows"]):
         assert (new["model"], new["orders"], new["identify"]) == (old["model"], old["orders"], old["identify"])
         assert new["test_rms"] == pytest.approx(old["test_rms"], rel=1e-9), new["model"]
@@ -96,10 +97,18 @@ def test_the_headline_is_the_selection_on_the_estimation_data_not_the_best_test_
 
 
 def test_the_committed_cluster_run_ranked_64_candidates_identically():
+    """The committed run of the 64-candidate grid locally and on a Dask cluster
+    (examples/datasets/wiener_hammerstein_on_dask.py): its two tables, compared here row by row (the
+    file's own flags are not trusted), rank the same candidates in the same order with the same
+    scores, none failed. tests/python/test_select.py runs a grid on a live cluster."""
     run = json.loads((ROOT / "docs" / "results" / "select_on_dask.json").read_text())
-    assert run["candidates"] == len(run["local"]) == len(run["local_cluster"]) == 64
-    assert run["local"] == run["local_cluster"] and run["identical_rankings"] and run["identical_best_theta"]
-    assert all(row["error"] is None for row in run["local"])
+    local, cluster = run["local"], run["local_cluster"]
+    assert len(local) == len(cluster) == run["candidates"] == 64
+    assert [row["orders"] for row in local] == [row["orders"] for row in cluster]
+    assert [row["score"] for row in local] == [row["score"] for row in cluster]
+    assert [row["score"] for row in local] == sorted(row["score"] for row in local)
+    assert len({json.dumps(row["orders"], sort_keys=True) for row in local}) == 64
+    assert all(row["error"] is None for row in local + cluster)
 
 
 def test_the_chosen_tanks_structures_give_their_committed_figures_on_perturbed_records():

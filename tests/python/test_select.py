@@ -121,6 +121,23 @@ def test_a_candidate_the_executor_fails_is_reported_and_the_rest_are_kept():
     np.testing.assert_array_equal(given.best.theta, local.best.theta)
 
 
+def test_a_candidate_with_more_parameters_than_the_fit_part_has_samples_is_ranked_as_failed():
+    """Ranked last with why, the others kept, as C++'s bonl::select does; only when every candidate is
+    too large does the selection fail."""
+    truth = bonl.ARX(1, 1, 0, b=[0.5, 0.3], a=[-0.4])
+    u = np.random.default_rng(3).uniform(-1, 1, 40)
+    y = truth.simulate(u)
+    large = bonl.ARX(20, 20, 0)  # 41 parameters, 30 samples in the fit part
+    selection = bonl.select([bonl.ARX(1, 1, 0), large], u, y)
+    assert selection.table[0].orders == {"na": 1, "nb": 1, "nk": 0}
+    assert selection.table[-1].orders == bonl.named_orders(large) and selection.table[-1].model is None
+    assert selection.table[-1].score == math.inf
+    assert "41 parameters cannot be fitted on the 30 samples" in selection.table[-1].error
+    np.testing.assert_allclose(selection.best.theta, truth.theta, atol=1e-9)
+    with pytest.raises(bonl.NumericalError, match="every candidate failed"):
+        bonl.select([large], u, y)
+
+
 def test_progress_bar_on_request(capsys):
     _, u, y = _system()
     bonl.select(_candidates()[:2], u, y, progress=True)

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the API reference, offline, warnings as errors: the C++ headers' comments and the
-# documentation's pages (docs/) with Doxygen (docs/api/Doxyfile) into build/api/cpp, and the installed Python package's docstrings with pdoc into
-# build/api/python. Fails on an undocumented public C++ class or member, a broken comment, or a
-# warning from pdoc. The Python package and pdoc come from scripts/test.sh's build/venv, or
+# documentation's pages (docs/) with Doxygen (docs/api/Doxyfile) into build/api/cpp, and the
+# installed Python package's docstrings with pdoc into build/api/python. Fails on an undocumented public C++ class or member, a broken comment, or a
+# warning from pdoc. The Python package and pdoc come from build/venv (made here when scripts/test.sh
+# has not made it), or
 #   PYTHON=/path/to/python scripts/api_reference.sh
 # with bonl and pdoc importable by that interpreter.
 set -euo pipefail
@@ -10,6 +11,15 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh
 python=${PYTHON:-build/venv/bin/python}
 
+# One command from a fresh clone: the packages (doxygen among them), and, unless PYTHON names an
+# interpreter of one's own, build/venv with the package and pdoc as scripts/test.sh makes it.
+bonl_ensure_deps
+if [[ -z ${PYTHON:-} ]] && ! build/venv/bin/python -c 'import bonl, pdoc' 2>/dev/null; then
+  step "Python: the package and pdoc in build/venv"
+  [[ -x build/venv/bin/python ]] || python3 -m venv build/venv
+  build/venv/bin/python -m pip install -q --disable-pip-version-check numpy pdoc==16.0.0
+  build/venv/bin/python -m pip install -q --disable-pip-version-check .
+fi
 command -v doxygen >/dev/null || { echo "api_reference: doxygen is not installed (scripts/deps.sh)" >&2; exit 1; }
 "$python" -c 'import bonl, pdoc' || {
   echo "api_reference: $python cannot import bonl and pdoc (scripts/test.sh installs both)" >&2

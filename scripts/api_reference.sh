@@ -16,9 +16,7 @@ python=${PYTHON:-build/venv/bin/python}
 bonl_ensure_deps
 if [[ -z ${PYTHON:-} ]] && ! build/venv/bin/python -c 'import bonl, pdoc' 2>/dev/null; then
   step "Python: the package and pdoc in build/venv"
-  [[ -x build/venv/bin/python ]] || python3 -m venv build/venv
-  build/venv/bin/python -m pip install -q --disable-pip-version-check numpy pdoc==16.0.0
-  build/venv/bin/python -m pip install -q --disable-pip-version-check .
+  bonl_venv_install numpy pdoc==16.0.0
 fi
 command -v doxygen >/dev/null || { echo "api_reference: doxygen is not installed (scripts/deps.sh)" >&2; exit 1; }
 "$python" -c 'import bonl, pdoc' || {

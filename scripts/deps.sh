@@ -59,6 +59,14 @@ bonl_ensure_fuzz_deps() {
   fi
 }
 
+# build/venv with the given PyPI packages and this package installed from the working tree (pip
+# install .), as scripts/test.sh, bench/run and scripts/api_reference.sh need it: bonl_venv_install PACKAGE...
+bonl_venv_install() {
+  [[ -x build/venv/bin/python ]] || python3 -m venv build/venv
+  build/venv/bin/python -m pip install -q --disable-pip-version-check "$@"
+  build/venv/bin/python -m pip install -q --disable-pip-version-check .
+}
+
 # Configures build/examples (Release, examples only) and builds one example target, for the scripts
 # that run an example: bonl_build_example TARGET.
 bonl_build_example() {

@@ -29,9 +29,7 @@ step "install to a temporary prefix, build and run examples/consumer against it"
 bash examples/consumer/check.sh build/ci
 
 step "Python: build and install the package in a virtual environment (build/venv)"
-[[ -x build/venv/bin/python ]] || python3 -m venv build/venv
-build/venv/bin/python -m pip install -q --disable-pip-version-check numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm padasip pdoc==16.0.0
-build/venv/bin/python -m pip install -q --disable-pip-version-check .
+bonl_venv_install numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm padasip pdoc==16.0.0
 
 step "pytest"
 pytest_status=0

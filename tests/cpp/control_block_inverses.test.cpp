@@ -223,7 +223,7 @@ TEST_CASE("the Prandtl-Ishlinskii input's inverse keeps to where w is monotone f
   // f' = 0.04 + 0.02 u - 0.015 u^2 (the paper_orders known system) is negative beyond its roots
   // (0.02 -+ sqrt(0.0028)) / 0.03; the play's weight is positive, so f' is the least slope.
   const bonl::PrandtlIshlinskiiInput<double> block(vec({0.001, 0.04, 0.01, -0.005}), vec({0.4}), vec({0.03}));
-  const PrandtlIshlinskiiInverse<double> inverse(block, -3.0, 3.0);
+  PrandtlIshlinskiiInverse<double> inverse(block, -3.0, 3.0);
   CHECK(inverse.upper() == Approx((0.02 + std::sqrt(0.0028)) / 0.03).epsilon(1e-9));
   CHECK(inverse.lower() == Approx((0.02 - std::sqrt(0.0028)) / 0.03).epsilon(1e-9));
   CHECK(inverse(1.0).status == InverseStatus::Saturated);

@@ -101,6 +101,15 @@ class PlayOperators {
     return m_state;
   }
 
+  /// sum_i g_i play_{r_i}(P_i, v): the output step(v) would give for the weights g, the plays left
+  /// as they are.
+  template <typename G>
+  Scalar output_for(Scalar v, const Eigen::MatrixBase<G>& g) const noexcept {
+    Scalar sum = Scalar(0);
+    for (Eigen::Index i = 0; i < m_state.size(); ++i) sum += g[i] * play(m_state[i], v, m_thresholds[i]);
+    return sum;
+  }
+
   /// sum_i g_i P_i(k) for the weights g (np of them).
   template <typename G>
   Scalar output(const Eigen::MatrixBase<G>& g) const noexcept {

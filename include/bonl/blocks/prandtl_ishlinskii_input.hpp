@@ -64,13 +64,7 @@ class PrandtlIshlinskiiInput {
     return polynomial(u) + m_plays.output(m_g);
   }
   /// The w that step(u) would give, the plays left as they are.
-  Scalar peek(Scalar u) const noexcept {
-    const auto& state = m_plays.state();
-    const auto& thresholds = m_plays.thresholds();
-    Scalar sum = Scalar(0);
-    for (Eigen::Index i = 0; i < state.size(); ++i) sum += m_g[i] * Plays::play(state[i], u, thresholds[i]);
-    return polynomial(u) + sum;
-  }
+  Scalar peek(Scalar u) const noexcept { return polynomial(u) + m_plays.output_for(u, m_g); }
   /// sum_l f_l u^l (Horner's scheme).
   Scalar polynomial(Scalar u) const noexcept {
     Scalar w = Scalar(0);

@@ -95,8 +95,9 @@ class PrandtlIshlinskiiInverse {
   }
 
   /// The command for w with the plays' current memory: {u, status}. Exact when the block gives w to
-  /// rounding. The memory is not changed (advance() does that).
-  InverseStep<Scalar> operator()(Scalar w) const noexcept {
+  /// rounding. The memory is not changed (advance() does that); not const because it solves in the
+  /// inverse's own scratch polynomial (no allocation per sample), so one inverse serves one thread.
+  InverseStep<Scalar> operator()(Scalar w) noexcept {
     const Scalar s = m_direction;
     Scalar lo = m_lo, hi = m_hi;
     const Scalar at_lo = m_block.peek(lo);
@@ -166,7 +167,7 @@ class PrandtlIshlinskiiInverse {
   }
 
   Block m_block;
-  mutable VectorX m_piece;  // scratch: the polynomial of the piece being solved (sized once)
+  VectorX m_piece;  // scratch: the polynomial of the piece being solved (sized once)
   Scalar m_lo = Scalar(0), m_hi = Scalar(0);
   Scalar m_direction = Scalar(1);
 };

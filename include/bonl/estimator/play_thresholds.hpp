@@ -35,6 +35,15 @@ typename Model::Thresholds play_thresholds_from_data(const Model& structure,
   return Model::Plays::spread_thresholds(structure.np(), (high - low) / Scalar(2));
 }
 
+/// `structure` with its plays' thresholds placed by the data rule over the records' inputs, its
+/// parameters untouched.
+template <class Model>
+Model with_thresholds_from_data(const Model& structure, const Records<typename Model::Scalar>& records) {
+  Model placed = structure;
+  placed.set_thresholds(play_thresholds_from_data(structure, records));
+  return placed;
+}
+
 /// identify()'s start for a PrandtlIshlinskiiHammerstein model beside its recursive estimates (the
 /// model's identify_starts): the structure with the data rule's thresholds, estimated recursively
 /// (Method::OutputError). None where the structure already has those thresholds (its own recursive
@@ -42,10 +51,8 @@ typename Model::Thresholds play_thresholds_from_data(const Model& structure,
 template <class Model>
 std::vector<Model> prandtl_ishlinskii_starts(const Model& structure, const Records<typename Model::Scalar>& records) {
   std::vector<Model> starts;
-  const typename Model::Thresholds placed = play_thresholds_from_data(structure, records);
-  if (placed == structure.thresholds()) return starts;
-  Model ruled = structure;
-  ruled.set_thresholds(placed);
+  const Model ruled = with_thresholds_from_data(structure, records);
+  if (ruled.thresholds() == structure.thresholds()) return starts;
   try {
     starts.push_back(estimate_recursively(ruled, records, IdentifyOptions{}));
   } catch (const NumericalError&) {

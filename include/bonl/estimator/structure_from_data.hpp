@@ -19,14 +19,12 @@ Model structure_from_data(const Model& structure, const Records<typename Model::
 }
 
 /// The Prandtl-Ishlinskii Hammerstein model: its plays' thresholds placed by the data rule over the
-/// records' inputs (play_thresholds_from_data, identify's extra start), its parameters untouched.
+/// records' inputs (with_thresholds_from_data, identify's extra start), its parameters untouched.
 /// The records' inputs in the structure's units (the half-range does not depend on the operating point).
 template <typename Scalar, int Na, int Nb, int R, int Np>
 PrandtlIshlinskiiHammerstein<Scalar, Na, Nb, R, Np> structure_from_data(
     const PrandtlIshlinskiiHammerstein<Scalar, Na, Nb, R, Np>& structure, const Records<Scalar>& records) {
-  PrandtlIshlinskiiHammerstein<Scalar, Na, Nb, R, Np> placed = structure;
-  placed.set_thresholds(play_thresholds_from_data(structure, records));
-  return placed;
+  return with_thresholds_from_data(structure, records);
 }
 
 }  // namespace bonl

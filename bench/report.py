@@ -22,8 +22,8 @@ import sys
 
 PHW_PARAMS = 14
 # The models are those the benchmarks name (update/<Model::kName>/...), in the order they ran. The
-# --json key <model>_update_ns is issue 5's, the equation-error update (the default method then); the
-# output-error method (the default since issue 16) adds <model>_update_output_error_ns.
+# --json key <model>_update_ns is the equation-error update (the target's fixed-size figure); the
+# output-error method, the default, adds <model>_update_output_error_ns.
 PHW = "PseudoHammersteinWiener"
 METHODS = (("", "output_error"), ("/equation_error", "equation_error"), ("/paper", "paper"))
 # Records the P-H-W structure does not fit (bench_data.hpp, update/<P-H-W>/<sizes>/double/<data>).
@@ -232,7 +232,7 @@ def main() -> int:
     mismatch_table = table(["P-H-W update, output_error, double, on data it does not fit", "ns/sample",
                             "vs the known system", "ceiling limited", "step shortened"], rows)
 
-    # --- Run-time sizes and the Python streaming call (issue 19) ------------------------------------
+    # --- Run-time sizes and the Python streaming call ------------------------------------------------
     # Per model and method (double): the fixed-size update, the run-time-size one and their ratio; the
     # Python call over a whole record (Estimator.update(u_array, y_array)) per sample, and its ratio to
     # the C++ run-time-size update (Python always uses run-time sizes). The extension is compiled
@@ -372,9 +372,9 @@ def main() -> int:
     flat["phw_vs_padasip"] = speedup
     flat["phw_vs_textbook"] = tb / phw if (tb and phw) else None
     targets = [
-        ("P-H-W update, equation_error (fixed, double; issue 5)", phw, "<= 60 ns", phw is not None and phw <= 60,
+        ("P-H-W update, equation_error (fixed, double)", phw, "<= 60 ns", phw is not None and phw <= 60,
          f"{phw:.1f} ns"),
-        ("P-H-W update, output_error, as a multiple of equation_error (issue 16)",
+        ("P-H-W update, output_error, as a multiple of equation_error",
          phw_output_error / phw if (phw and phw_output_error) else None, "<= 2x",
          phw is not None and phw_output_error is not None and phw_output_error <= 2 * phw,
          f"{phw_output_error / phw:.2f}x ({phw_output_error:.1f} ns)" if (phw and phw_output_error) else "-"),
@@ -383,11 +383,11 @@ def main() -> int:
         ("Python identify, 5000 samples (paper method)", flat["python_identify_5000_ms"], "<= 2 ms",
          flat["python_identify_5000_ms"] <= 2.0, f"{flat['python_identify_5000_ms']:.3f} ms"),
         ("plant real-time factor", rtf, ">= 1000", rtf is not None and rtf >= 1000, f"{rtf:,.0f}"),
-        ("estimator update, run-time over fixed size, worst model and method (issue 19)", worst_sizes, "<= 1.3x",
+        ("estimator update, run-time over fixed size, worst model and method", worst_sizes, "<= 1.3x",
          worst_sizes is not None and worst_sizes <= 1.3, f"{worst_sizes:.2f}x" if worst_sizes else "-"),
-        ("RLS core, run-time over fixed size, worst of 4 to 32 parameters (issue 19)", worst_rls, "<= 1.3x",
+        ("RLS core, run-time over fixed size, worst of 4 to 32 parameters", worst_rls, "<= 1.3x",
          worst_rls is not None and worst_rls <= 1.3, f"{worst_rls:.2f}x" if worst_rls else "-"),
-        ("Python update over a record per sample, over the C++ run-time-size update built alike, worst (issue 19)",
+        ("Python update over a record per sample, over the C++ run-time-size update built alike, worst",
          worst_streaming, "<= 1.2x", worst_streaming is not None and worst_streaming <= 1.2,
          f"{worst_streaming:.2f}x" if worst_streaming else "-"),
     ]

@@ -260,3 +260,44 @@ def test_the_bouc_wen_nonlinear_feedback_model_file_gives_its_figures_on_every_t
     row, linear = rows["NonlinearFeedback"], rows["ARX"]
     for test in _script("bouc_wen").make().tests:
         assert row["test_rms"][test.name] < linear["test_rms"][test.name], test.name
+
+
+FEED_FORWARD = ("ARX", "Hammerstein", "HammersteinWiener", "PseudoHammersteinWiener", "Wiener")
+
+
+def test_the_measured_data_page_says_what_the_results_files_give():
+    """The sentences of docs/lab/measured_data.md that read the tables: the feed-forward chains within 4 %
+    of ARX on Bouc-Wen and the Silverbox; the nonlinear-feedback model an order of magnitude below ARX on
+    every Silverbox test and about half of it on Bouc-Wen; the one-linear-block models on the
+    Wiener-Hammerstein circuit at 21 mV and more; the EMPS's test input outside the estimation range on
+    172 samples and its H-W hundreds of metres off; its block models without an integrator several times
+    dynoNet's figure."""
+    text = " ".join((ROOT / "docs" / "lab" / "measured_data.md").read_text().split())
+
+    def rows(name):
+        return {row["model"]: row for row in _results(name)["rows"]}
+
+    worst = 0.0
+    for name in ("bouc_wen", "silverbox"):
+        by_model = rows(name)
+        for test, linear in by_model["ARX"]["test_rms"].items():
+            worst = max(worst, *(abs(by_model[m]["test_rms"][test] / linear - 1) for m in FEED_FORWARD))
+            ratio = by_model["NonlinearFeedback"]["test_rms"][test] / linear
+            assert ratio < 0.1 if name == "silverbox" else 0.4 < ratio < 0.6, (name, test, ratio)
+    assert worst < 0.04 and "within 4 % of ARX" in text
+    assert "an order of magnitude below ARX on every Silverbox test and about half of ARX on Bouc-Wen" in text
+
+    one_block = min(row["test_rms"]["samples 101 001-188 000"] for model, row in rows("wiener_hammerstein").items()
+                    if model != "WienerHammerstein")
+    assert "stay at %d mV and more" % math.floor(one_block * 1e3) in text
+
+    emps = rows("emps")
+    outside = {n for row in emps.values() for n in row["test_inputs_outside_range"].values()}
+    assert outside == {172} and "(172 samples outside the range `identify` saw" in text
+    assert emps["HammersteinWiener"]["test_rms"]["pulses record"] > 100  # m: "hundreds of metres off"
+    dynonet = _script("emps").COMPARISONS[0].best[1]
+    assert all(emps[m]["test_rms"]["pulses record"] > 3 * dynonet for m in FEED_FORWARD if m != "ARX")
+    assert "several times dynoNet's figure and more" in text
+    # docs/lab/benchmarks.md: the Bouc-Wen selection's loop has eight play operators.
+    assert rows("bouc_wen")["NonlinearFeedback"]["orders"]["np"] == 8
+    assert "the loop with eight play operators" in (ROOT / "docs" / "lab" / "benchmarks.md").read_text()

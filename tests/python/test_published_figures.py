@@ -243,3 +243,23 @@ def test_the_experiment_page_quotes_the_robustness_check():
     assert ("P-I-H beats P-H-W on %d of 8 and Hammerstein on %d of 8 with bonl's estimator, on %d of 8 and %d of 8 "
             "with the paper's." % (ours[pih, phw], ours[pih, "Hammerstein"], paper[pih, phw],
                                    paper[pih, "Hammerstein"])) in text
+
+
+def test_the_measured_data_page_quotes_the_committed_check_scores_and_blocks():
+    """docs/lab/measured_data.md, "Where we stand": the check scores it quotes are
+    docs/results/measured_data.json's to three digits, and the actuator's H-W, identified again on the
+    estimation data at its chosen structure, has the output polynomial the page writes out."""
+    md = load_measured_data_example()
+    committed = json.loads((ROOT / "docs" / "results" / "measured_data.json").read_text())
+    text = " ".join((ROOT / "docs" / "lab" / "measured_data.md").read_text().split())
+    act = {name: "%.3f" % row["check_rms"] for name, row in committed["actuator"].items()}
+    assert ("P-H-W models fit the check part better than H-W does (%s and %s against %s;"
+            % (act["Hammerstein"], act["PseudoHammersteinWiener"], act["HammersteinWiener"])) in text
+    assert "H-W wins on check (%.3f)" % committed["cascaded_tanks"]["HammersteinWiener"]["check_rms"] in text
+    chosen = committed["actuator"]["HammersteinWiener"]
+    actuator = md.load_actuator()
+    model = bonl.identify(md.structure(bonl.HammersteinWiener, chosen["orders"]), actuator["u"][:512],
+                          actuator["y"][:512], **md.settings(bonl.HammersteinWiener))
+    q = model.q
+    assert q[0] == 1.0 and len(q) == 3
+    assert "`y = x + %.3f x² - %.4f x³`" % (q[1], -q[2]) in text

@@ -152,3 +152,13 @@ def test_every_relative_link_of_the_documentation_resolves():
             if not (page.parent / target.split("#")[0]).exists():
                 broken.append(f"{page.relative_to(ROOT)}: {target}")
     assert not broken, "links to nothing:\n" + "\n".join(broken)
+
+
+def test_the_documentation_names_no_issues():
+    """The README, the pages under docs/ and the benchmark report say what things are, not which issue
+    asked for them: an issue number belongs in a commit message (CHANGELOG.md takes the history)."""
+    texts = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md")), ROOT / "bench" / "RESULTS.md",
+             ROOT / "bench" / "RESULTS.json", ROOT / "bench" / "report.py"]
+    named = [f"{path.relative_to(ROOT)}: {match.group(0)}" for path in texts
+             for match in re.finditer(r"(?i)\bissues? \d+|\(issue\b|(?<![\w&])#\d+\b", path.read_text())]
+    assert not named, "issue numbers in the documentation:\n" + "\n".join(named)

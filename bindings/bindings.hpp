@@ -11,6 +11,7 @@ namespace py = pybind11;
 
 void bind_models(py::module_& m);      // models.cpp: one class per model of bonl::Models, MODELS, the warnings
 void bind_estimation(py::module_& m);  // estimation.cpp: identify, Estimator, UpdateStatus
+void bind_selection(py::module_& m);   // selection.cpp: what bonl.select runs (C++'s bonl::score_candidate, select)
 void bind_metrics(py::module_& m);     // metrics.cpp: submodule metrics (mse, rmse, nrmse, nrmse_fit)
 void bind_io(py::module_& m);          // io.cpp: to_json on the models, load_model
 void bind_plant(py::module_& m);       // plant.cpp: submodule plant, with the four below

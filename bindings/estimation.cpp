@@ -162,46 +162,19 @@ bonl::OperatingPointSource operating_point_source(const py::object& value) {
                               std::string(py::str(py::repr(value))));
 }
 
-/// identify(model, [(u1, y1), (u2, y2), ...]): the records' inputs and outputs, each checked by its index.
-void read_records(const py::object& records, std::vector<Eigen::VectorXd>& inputs, std::vector<Eigen::VectorXd>& outputs) {
-  const char* usage = "identify(model, u, y) for one record, identify(model, [(u1, y1), (u2, y2), ...]) for several";
-  bonl::detail::require(!py::isinstance<py::array>(records) && py::isinstance<py::sequence>(records) &&
-                            !py::isinstance<py::str>(records),
-                        std::string("y must be a 1-D array of real numbers, got None (") + usage + ")");
-  const py::sequence list = records.cast<py::sequence>();
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string name = "records[" + std::to_string(i) + "]";
-    const py::object item = list[i];
-    bonl::detail::require(!py::isinstance<py::array>(item) && py::isinstance<py::sequence>(item) &&
-                              !py::isinstance<py::str>(item) && py::len(item) == 2,
-                          name + " must be a pair (u, y): " + usage);
-    const py::sequence pair = item.cast<py::sequence>();
-    inputs.push_back(to_vector(pair[0], (name + ".u").c_str()));
-    outputs.push_back(to_vector(pair[1], (name + ".y").c_str()));
-  }
-}
-
 template <class Model>
 void def_identify(py::module_& m) {
-  m.def(
-      "identify",
+  def_with_identify_arguments(
+      m, "identify",
       [](const Model& model, const py::object& u, const py::object& y, int passes, const std::string& method,
          const py::object& forgetting, std::optional<double> p0, double c0, int refine_iterations, bool normalise,
          const py::object& operating_point) {
-        bonl::IdentifyOptions options;
-        static_cast<bonl::EstimatorOptions&>(options) = estimator_options({method, forgetting, p0, c0, std::nullopt});
-        options.passes = passes;
-        options.refine_iterations = refine_iterations;
-        options.normalise = normalise;
-        options.operating_point = operating_point_source(operating_point);
+        const bonl::IdentifyOptions options =
+            identify_options({passes, method, forgetting, p0, c0, refine_iterations, normalise, operating_point});
         std::vector<Eigen::VectorXd> inputs, outputs;
-        if (!y.is_none()) {
-          inputs.push_back(to_vector(u, "u"));
-          outputs.push_back(to_vector(y, "y"));
-          bonl::detail::require_record(inputs[0], outputs[0], model.num_params());
-        } else {
-          read_records(u, inputs, outputs);
-        }
+        read_records(u, y, "identify(model, u, y) for one record, identify(model, [(u1, y1), (u2, y2), ...]) for several",
+                     inputs, outputs);
+        if (!y.is_none()) bonl::detail::require_record(inputs[0], outputs[0], model.num_params());
         bonl::Records<double> records;
         for (std::size_t i = 0; i < inputs.size(); ++i) records.emplace_back(inputs[i], outputs[i]);
         Model identified = [&] {
@@ -217,10 +190,7 @@ void def_identify(py::module_& m) {
         }
         return identified;
       },
-      py::arg("model"), py::arg("u"), py::arg("y") = py::none(), py::kw_only(), py::arg("passes") = 1,
-      py::arg("method") = "output_error", py::arg("forgetting") = py::none(), py::arg("p0") = py::none(),
-      py::arg("c0") = 0.01, py::arg("refine_iterations") = 100, py::arg("normalise") = true,
-      py::arg("operating_point") = py::none(), kIdentifyDoc);
+      py::arg("model"), py::arg("u"), py::arg("y") = py::none(), py::kw_only(), kIdentifyDoc);
 }
 
 /// What Estimator.update returns for a record: one status code per sample and, where asked, the
@@ -356,6 +326,39 @@ void def_estimator_init(py::class_<AnyEstimator>& cls) {
 }
 
 }  // namespace
+
+bonl::IdentifyOptions identify_options(const IdentifyArguments& arguments) {
+  bonl::IdentifyOptions options;
+  static_cast<bonl::EstimatorOptions&>(options) =
+      estimator_options({arguments.method, arguments.forgetting, arguments.p0, arguments.c0, std::nullopt});
+  options.passes = arguments.passes;
+  options.refine_iterations = arguments.refine_iterations;
+  options.normalise = arguments.normalise;
+  options.operating_point = operating_point_source(arguments.operating_point);
+  return options;
+}
+
+void read_records(const py::object& u, const py::object& y, const char* usage, std::vector<Eigen::VectorXd>& inputs,
+                  std::vector<Eigen::VectorXd>& outputs) {
+  if (!y.is_none()) {
+    inputs.push_back(to_vector(u, "u"));
+    outputs.push_back(to_vector(y, "y"));
+    return;
+  }
+  bonl::detail::require(!py::isinstance<py::array>(u) && py::isinstance<py::sequence>(u) && !py::isinstance<py::str>(u),
+                        std::string("y must be a 1-D array of real numbers, got None (") + usage + ")");
+  const py::sequence list = u.cast<py::sequence>();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string name = "records[" + std::to_string(i) + "]";
+    const py::object item = list[i];
+    bonl::detail::require(!py::isinstance<py::array>(item) && py::isinstance<py::sequence>(item) &&
+                              !py::isinstance<py::str>(item) && py::len(item) == 2,
+                          name + " must be a pair (u, y): " + usage);
+    const py::sequence pair = item.cast<py::sequence>();
+    inputs.push_back(to_vector(pair[0], (name + ".u").c_str()));
+    outputs.push_back(to_vector(pair[1], (name + ".y").c_str()));
+  }
+}
 
 void bind_estimation(py::module_& m) {
   py::enum_<bonl::UpdateStatus>(m, "UpdateStatus", "What one online update did.")

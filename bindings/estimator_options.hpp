@@ -1,13 +1,18 @@
 #pragma once
-// The estimator's keyword arguments as Estimator, identify and control.AdaptiveInverse take them
-// (estimation.cpp defines them): one parsing, one set of messages.
+// The estimator's keyword arguments as Estimator, identify and control.AdaptiveInverse take them,
+// identify's as identify and bonl.select (selection.cpp) take them, and the records identify and
+// bonl.select read (estimation.cpp defines them): one parsing, one set of messages.
 
 #include <pybind11/pybind11.h>
 
+#include <Eigen/Core>
+#include <bonl/estimator/identify_options.hpp>
 #include <bonl/estimator/recursive_estimator.hpp>
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace bonl_python {
 namespace py = pybind11;
@@ -26,5 +31,34 @@ struct OptionArguments {
 
 /// The options, validated (std::invalid_argument, a ValueError, naming the bad one).
 bonl::EstimatorOptions estimator_options(const OptionArguments& arguments);
+
+/// identify's keyword arguments (bonl.select passes them on), in the order identify takes them.
+struct IdentifyArguments {
+  int passes;
+  std::string method;
+  py::object forgetting;
+  std::optional<double> p0;
+  double c0;
+  int refine_iterations;
+  bool normalise;
+  py::object operating_point;
+};
+
+/// The options, validated (std::invalid_argument, a ValueError, naming the bad one).
+bonl::IdentifyOptions identify_options(const IdentifyArguments& arguments);
+
+/// scope.def(name, f, extra..., identify's keyword arguments with their defaults): f takes the
+/// parameters `extra` names, then IdentifyArguments' in its order.
+template <class Scope, typename Func, typename... Extra>
+void def_with_identify_arguments(Scope& scope, const char* name, Func&& f, const Extra&... extra) {
+  scope.def(name, std::forward<Func>(f), extra..., py::arg("passes") = 1, py::arg("method") = "output_error",
+            py::arg("forgetting") = py::none(), py::arg("p0") = py::none(), py::arg("c0") = 0.01,
+            py::arg("refine_iterations") = 100, py::arg("normalise") = true, py::arg("operating_point") = py::none());
+}
+
+/// The records of identify(model, u, y) and select(candidates, u, y): (u, y) for one record, or with y
+/// None, u a list of (u, y) pairs, each checked by its index; `usage` shows both forms in the messages.
+void read_records(const py::object& u, const py::object& y, const char* usage, std::vector<Eigen::VectorXd>& inputs,
+                  std::vector<Eigen::VectorXd>& outputs);
 
 }  // namespace bonl_python

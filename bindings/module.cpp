@@ -7,6 +7,7 @@ PYBIND11_MODULE(_bonl, m) {
   m.attr("__version__") = BONL_VERSION_STRING;
   bonl_python::bind_models(m);
   bonl_python::bind_estimation(m);
+  bonl_python::bind_selection(m);
   bonl_python::bind_metrics(m);
   bonl_python::bind_io(m);
   bonl_python::bind_plant(m);

@@ -4,15 +4,16 @@ of a grid and ranks them.
 - :func:`grid`: the structures of one model class over lists of orders,
   ``grid(bonl.HammersteinWiener, na=[1, 2, 3], nb=[0, 1], nk=[0], r=[2, 3], r1=[2, 3])``;
 - :func:`select`: identifies each candidate and scores it. ``criterion="validation"`` (the default)
-  fits on the first part of every record and scores the free-run simulation error on the held-out
-  last part (each record simulated whole, from rest, and scored on its tail only; or, with
-  ``window=n``, the tail simulated after its first n samples as a test record with a
-  state-initialisation window is);
+  fits on the first part of every record (the last ``validation_fraction`` of its samples, rounded
+  half away from zero, held out) and scores the free-run simulation error on the held-out last part
+  (each record simulated whole, from rest, and scored on its tail only; or, with ``window=n``, the
+  tail simulated after its first n samples as a test record with a state-initialisation window is);
   ``criterion="aic"`` or ``"bic"`` fits on all the data and scores ``N log(mse) + 2 p`` or
   ``N log(mse) + p log(N)`` of the free-run simulation. The best candidate is refitted on all the
-  data. Candidates run in parallel: on the local cores by default (``identify`` releases the GIL),
-  or on any :class:`concurrent.futures.Executor`, such as a Dask cluster's
-  (``distributed.Client(...).get_executor()``).
+  data. Each candidate is scored by C++'s ``bonl::score_candidate`` (``include/bonl/estimator/select.hpp``,
+  the scoring C++'s ``bonl::select`` runs too), which releases the GIL; Python runs the candidates in
+  parallel: on the local cores by default, or on any :class:`concurrent.futures.Executor`, such as a
+  Dask cluster's (``distributed.Client(...).get_executor()``).
 
 Examples
 --------
@@ -31,21 +32,14 @@ import concurrent.futures
 import dataclasses
 import itertools
 import math
-import numbers
 import os
 import sys
 import time
-import warnings
-from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
-
-import numpy as np
+from typing import Any, Dict, Iterable, List, Optional
 
 from . import _bonl
 
 __all__ = ["Candidate", "Selection", "grid", "select"]
-
-CRITERIA = ("validation", "aic", "bic")
-
 
 @dataclasses.dataclass(frozen=True)
 class Candidate:
@@ -98,48 +92,6 @@ def grid(model_class: type, **orders: Iterable[int]) -> List[Any]:
     return [model_class(*combination) for combination in itertools.product(*values)]
 
 
-def _records(u: Any, y: Any) -> List[Tuple[np.ndarray, np.ndarray]]:
-    if y is not None:
-        return [(np.asarray(u, dtype=float), np.asarray(y, dtype=float))]
-    if isinstance(u, np.ndarray) or not isinstance(u, Sequence) or isinstance(u, str):
-        raise ValueError("bonl: select: y must be a 1-D array of real numbers, got None "
-                         "(select(candidates, u, y) for one record, select(candidates, [(u1, y1), ...]) for several)")
-    out = []
-    for i, item in enumerate(u):
-        if isinstance(item, np.ndarray) or not isinstance(item, Sequence) or len(item) != 2:
-            raise ValueError(f"bonl: select: records[{i}] must be a pair (u, y)")
-        out.append((np.asarray(item[0], dtype=float), np.asarray(item[1], dtype=float)))
-    return out
-
-
-def _simulation_mse(model: Any, records: Sequence[Tuple[np.ndarray, np.ndarray]], start: Sequence[int],
-                    window: int = 0) -> float:
-    """Free-run MSE of each record over its samples from start[i] on: the record simulated whole from
-    rest, or, with a window, its samples from start[i] on simulated after their first ``window``
-    samples (measured, Model.simulate's initial) and scored after them."""
-    squared, count = 0.0, 0
-    for (u, y), first in zip(records, start):
-        try:
-            if window:
-                past = (u[first:first + window], y[first:first + window])
-                error = y[first + window:] - model.simulate(u[first + window:], initial=past)
-            else:
-                error = y[first:] - model.simulate(u)[first:]
-        except _bonl.NumericalError:
-            return math.inf
-        # numpy's own pairwise sum, not BLAS's dot: BLAS splits the sum by its thread count, which a
-        # Dask worker sets to 1, and the scores must not depend on where a candidate ran.
-        squared += float(np.sum(error * error))
-        count += error.size
-    mse = squared / count if count else math.inf
-    return mse if math.isfinite(mse) else math.inf
-
-
-def _held_out(samples: int, fraction: float) -> int:
-    """The length of a record's held-out part under criterion 'validation'."""
-    return max(1, int(round(fraction * samples)))
-
-
 def named_orders(structure: Any) -> Dict[str, int]:
     """The structure's orders by name, as its model file writes them: an order at its default
     (``ORDER_DEFAULTS``, the integrators ``ni = 0``) is left out. Returns a dict, name to order."""
@@ -154,31 +106,13 @@ def _failed(structure: Any, error: str, seconds: float) -> Candidate:
                      seconds, error, None)
 
 
-def _fit(structure: Any, records: List[Tuple[np.ndarray, np.ndarray]], criterion: str, fraction: float,
-         window: int, options: Dict[str, Any]) -> Candidate:
-    """Identifies one candidate and scores it (runs where the executor puts it: keep it top-level)."""
+def _score(structure: Any, data: Any) -> Candidate:
+    """Identifies one candidate and scores it, C++'s bonl::score_candidate on the checked data (runs
+    where the executor puts it: keep it top-level)."""
     t0 = time.perf_counter()
-    split = [len(u) - _held_out(len(u), fraction) if criterion == "validation" else len(u) for u, _ in records]
-    fit_records = [(u[:s], y[:s]) for (u, y), s in zip(records, split)]
-    if sum(split) <= structure.num_params:  # identify would refuse it: a failed candidate, not bad input
-        return _failed(structure, f"bonl: select: {structure.num_params} parameters cannot be fitted on the "
-                       f"{sum(split)} samples of the fit part", time.perf_counter() - t0)
-    try:
-        model = _bonl.identify(structure, fit_records, **options)
-    except _bonl.NumericalError as error:
-        return _failed(structure, str(error), time.perf_counter() - t0)
-    fit_mse = _simulation_mse(model, fit_records, [0] * len(records))
-    validation = _simulation_mse(model, records, split, window) if criterion == "validation" else None
-    n = sum(len(u) for u, _ in fit_records)
-    p = structure.num_params
-    if criterion == "validation":
-        score = validation
-    elif not (fit_mse > 0 and math.isfinite(fit_mse)):
-        score = -math.inf if fit_mse == 0 else math.inf
-    else:
-        score = n * math.log(fit_mse) + (2 * p if criterion == "aic" else p * math.log(n))
-    return Candidate(type(structure).__name__, named_orders(structure), p, score, fit_mse, validation,
-                     time.perf_counter() - t0, None, model)
+    score, fit_mse, validation_mse, error, model = _bonl._score_candidate(structure, data)
+    return Candidate(type(structure).__name__, named_orders(structure), structure.num_params, score, fit_mse,
+                     validation_mse, time.perf_counter() - t0, error, model)
 
 
 def _progress(total: int, progress: Optional[bool]):
@@ -208,14 +142,17 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
         The estimation data.
     criterion : {'validation', 'aic', 'bic'}
         'validation' (default): the free-run simulation MSE on the last ``validation_fraction`` of every
-        record, the candidate fitted on the rest. 'aic', 'bic': information criteria of the free-run
-        simulation error on all the data.
+        record (its samples times the fraction, rounded half away from zero, at least 1), the candidate
+        fitted on the rest. 'aic', 'bic': information criteria of the free-run simulation error on all
+        the data. Every candidate is scored by C++'s ``bonl::score_candidate``, as ``bonl::select``
+        scores it; one that cannot be fitted (more parameters than its fit part has samples, or an
+        identification that fails) is ranked last with the reason.
     window : int, default 0
         criterion 'validation': each held-out part is scored the way a test record with a
         state-initialisation window of this many samples is: simulated after its first ``window``
         samples, which set the model's state (``Model.simulate(u, initial=...)``), instead of as the
         continuation of the whole record simulated from rest. Give the window of the test protocol
-        the model will be judged by.
+        the model will be judged by; it must be shorter than every held-out part.
     executor : concurrent.futures.Executor, optional
         Where the candidates run; default: threads on the local cores. A Dask cluster's
         ``client.get_executor()`` spreads a large grid over many machines.
@@ -236,56 +173,34 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
     for i, structure in enumerate(structures):
         if type(structure) not in _bonl.MODELS:
             raise ValueError(f"bonl: select: candidates[{i}] must be a bonl model, got {type(structure).__name__}")
-    if criterion not in CRITERIA:
-        raise ValueError(f"bonl: select: criterion must be one of {', '.join(CRITERIA)}, got {criterion!r}")
-    if not (isinstance(validation_fraction, (int, float)) and 0.0 < validation_fraction < 1.0):
-        raise ValueError(f"bonl: select: validation_fraction must be in (0, 1), got {validation_fraction!r}")
-    records = _records(u, y)
-    if isinstance(window, bool) or not isinstance(window, numbers.Integral) or window < 0:
-        raise ValueError(f"bonl: select: window must be an integer >= 0, got {window!r}")
-    window = int(window)
-    if window and criterion != "validation":
-        raise ValueError(f"bonl: select: window applies to criterion 'validation' only, got criterion {criterion!r}")
-    for i, (u_i, _) in enumerate(records):
-        held_out = _held_out(len(u_i), validation_fraction)
-        if window and held_out <= window:
-            raise ValueError(f"bonl: select: records[{i}]'s held-out part ({held_out} samples) must be longer "
-                             f"than the window ({window})")
+    # The records and options checked once, in C++ (ValueError naming the bad one).
+    data = _bonl._selection_data(u, y, criterion=criterion, validation_fraction=validation_fraction, window=window,
+                                 **identify_options)
 
     own = executor is None
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) if own else executor
     bar = _progress(len(structures), progress)
-    # Candidates are judged by their scores, not by warnings: the held-out part may leave the fitted
-    # part's input range, and poor candidates may be barely damped. The filters are set here, in the
-    # calling thread, for the local workers (warnings.catch_warnings is not thread-safe); the refitted
-    # best model warns as identify() does.
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", _bonl.ExtrapolationWarning)
-        warnings.simplefilter("ignore", _bonl.StabilityWarning)
-        try:
-            futures = [pool.submit(_fit, s, records, criterion, validation_fraction, window, identify_options)
-                       for s in structures]
-            index = {future: i for i, future in enumerate(futures)}
-            rows: List[Optional[Candidate]] = [None] * len(futures)
-            for future in concurrent.futures.as_completed(futures):
-                i = index[future]
-                try:
-                    rows[i] = future.result()
-                except ValueError:
-                    raise  # bad input (an identify option, a record): the same for every candidate
-                except Exception as error:  # the executor lost this candidate: report it, keep the rest
-                    rows[i] = _failed(structures[i], f"executor: {type(error).__name__}: {error}", math.nan)
-                if bar is not None:
-                    bar.update(1)
-        finally:
-            if own:
-                pool.shutdown()
+    try:
+        futures = [pool.submit(_score, s, data) for s in structures]
+        index = {future: i for i, future in enumerate(futures)}
+        rows: List[Optional[Candidate]] = [None] * len(futures)
+        for future in concurrent.futures.as_completed(futures):
+            i = index[future]
+            try:
+                rows[i] = future.result()
+            except Exception as error:  # the executor lost this candidate: report it, keep the rest
+                rows[i] = _failed(structures[i], f"executor: {type(error).__name__}: {error}", math.nan)
             if bar is not None:
-                bar.close()
-    # Best first; ties (and failures, all inf) keep the candidates' order.
+                bar.update(1)
+    finally:
+        if own:
+            pool.shutdown()
+        if bar is not None:
+            bar.close()
+    # Best first; ties (and failures, all inf) keep the candidates' order, as bonl::select ranks them.
     order = sorted(range(len(rows)), key=lambda i: rows[i].score)
     table = [rows[i] for i in order]
     if table[0].error is not None:
         raise _bonl.NumericalError("bonl: select: every candidate failed; the first: " + table[0].error)
-    best = _bonl.identify(structures[order[0]], records, **identify_options)
+    best = _bonl.identify(structures[order[0]], u, y, **identify_options)
     return Selection(criterion, table, best)

@@ -1,15 +1,29 @@
-// Order selection in C++ (estimator/select.hpp), as Python's bonl.select.
+// Order selection in C++ (estimator/select.hpp), which Python's bonl.select runs candidate by candidate
+// (tests/python/test_select.py compares the two tables).
 // Oracles: data from a known structure, whose orders the selection must find among wrong ones;
-// the same selection on one thread and on two (identical tables); a candidate that cannot be fitted
-// reported in its row while the others are kept.
+// the same selection on one thread and on two (identical tables); each row the candidate scored alone;
+// the held-out score recomputed from identify and simulate (from rest and after a window); a candidate
+// that cannot be fitted reported in its row while the others are kept.
 
 #include "test_support.hpp"
 
+#include <cstdint>
+#include <limits>
+#include <utility>
 #include <vector>
 
 using namespace bonl_test;
 
 namespace {
+
+/// The known system Model "small" driven by random levels held `hold` samples (seed), its output with
+/// white noise (seed + 1): (u, y).
+template <class Model>
+std::pair<Eigen::VectorXd, Eigen::VectorXd> noisy_record(Eigen::Index samples, Eigen::Index hold, double noise,
+                                                         std::uint64_t seed) {
+  const Eigen::VectorXd u = bonl::signals::random_levels(samples, hold, 1.0, seed);
+  return {u, known_system<Model>("small").simulate(u) + bonl::signals::white_noise(u.size(), noise, seed + 1)};
+}
 
 std::vector<bonl::Hammersteind> delay_grid() {
   std::vector<bonl::Hammersteind> grid;
@@ -40,9 +54,7 @@ TEST_CASE("select finds the delay of a known system and ranks the others behind 
 }
 
 TEST_CASE("select gives the same table on one thread and on two", "[select]") {
-  const bonl::Hammersteind truth = known_system<bonl::Hammersteind>("small");
-  const Eigen::VectorXd u = bonl::signals::random_levels(1500, 5, 1.0, 73);
-  const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.02, 74);
+  const auto [u, y] = noisy_record<bonl::Hammersteind>(1500, 5, 0.02, 73);
   const bonl::Records<double> records{{u, y}};
   bonl::SelectOptions one, two;
   one.threads = 1;
@@ -66,7 +78,7 @@ TEST_CASE("select reports a candidate that cannot be fitted in its row and keeps
   CHECK(selection.table[0].structure.na() == 2);
   CHECK(selection.table[0].error.empty());
   CHECK(selection.table[1].structure.na() == 20);
-  CHECK_THAT(selection.table[1].error, Catch::Matchers::Contains("longer together than the number of parameters"));
+  CHECK_THAT(selection.table[1].error, Catch::Matchers::Contains("41 parameters cannot be fitted on the 30 samples"));
   CHECK_FALSE(selection.table[1].model.has_value());
 
   CHECK_THROWS_WITH(bonl::select(std::vector<bonl::ARXd>{}, records), Catch::Matchers::Contains("candidates is empty"));
@@ -78,4 +90,62 @@ TEST_CASE("select reports a candidate that cannot be fitted in its row and keeps
   CHECK_THROWS_WITH(bonl::select(grid, bonl::Records<double>{{u, short_y}}),
                     Catch::Matchers::Contains("records[0].u and records[0].y must have the same length"));
   CHECK_THROWS_AS(bonl::select(std::vector<bonl::ARXd>{bonl::ARXd(20, 20, 0)}, records), bonl::NumericalError);
+}
+
+TEST_CASE("each row of select's table is score_candidate's for that candidate", "[select]") {
+  const auto [u, y] = noisy_record<bonl::Hammersteind>(1200, 5, 0.02, 76);
+  const bonl::Records<double> records{{u, y}};
+  bonl::SelectOptions options;
+  options.window = 6;
+  const bonl::SelectionData<double> data(records, options);
+  const auto selection = bonl::select(delay_grid(), data);
+  for (const auto& row : selection.table) {
+    const auto alone = bonl::score_candidate(row.structure, data);
+    CHECK(alone.score == row.score);
+    CHECK(alone.fit_mse == row.fit_mse);
+    CHECK(alone.validation_mse == row.validation_mse);
+  }
+}
+
+TEST_CASE("the held-out part is the fraction of the record rounded half away from zero", "[select]") {
+  CHECK(bonl::held_out_samples(10, 0.25) == 3);  // 2.5: Python's round() would give 2
+  CHECK(bonl::held_out_samples(250, 0.25) == 63);
+  CHECK(bonl::held_out_samples(6, 0.25) == 2);
+  CHECK(bonl::held_out_samples(3, 0.1) == 1);  // at least one sample
+  const auto [u, y] = noisy_record<bonl::ARXd>(10, 1, 0.01, 78);
+  const bonl::Records<double> records{{u, y}};
+  const bonl::SelectionData<double> data(records, {});
+  CHECK(data.split() == std::vector<Eigen::Index>{7});
+  // Fitted on the first 7 samples, scored on the last 3 of the record simulated whole.
+  const auto row = bonl::score_candidate(bonl::ARXd(1, 1, 0), data);
+  const bonl::ARXd fitted = bonl::identify(bonl::ARXd(1, 1, 0), bonl::Records<double>{records[0].head(7)});
+  const Eigen::VectorXd error = (y - fitted.simulate(u)).tail(3);
+  CHECK(near(row.validation_mse, error.squaredNorm() / 3.0, 1e-12));
+  // Seven parameters on seven samples: failed, with why.
+  const auto large = bonl::score_candidate(bonl::ARXd(3, 3, 0), data);
+  CHECK(large.score == std::numeric_limits<double>::infinity());
+  CHECK_FALSE(large.model.has_value());
+  CHECK(large.error == "bonl: select: 7 parameters cannot be fitted on the 7 samples of the fit part");
+}
+
+TEST_CASE("with a window the held-out part is scored after its first samples", "[select]") {
+  const auto [u, y] = noisy_record<bonl::Hammersteind>(800, 5, 0.02, 80);
+  const bonl::Records<double> records{{u, y}};
+  bonl::SelectOptions options;
+  options.window = 7;
+  const auto row = bonl::score_candidate(bonl::Hammersteind(2, 1, 2, 2), bonl::SelectionData<double>(records, options));
+  const bonl::Hammersteind fitted = bonl::identify(bonl::Hammersteind(2, 1, 2, 2), bonl::Records<double>{records[0].head(600)});
+  const Eigen::VectorXd after = fitted.simulate(u.tail(193), u.segment(600, 7), y.segment(600, 7));
+  CHECK(near(row.validation_mse, (y.tail(193) - after).squaredNorm() / 193.0, 1e-12));
+
+  options.window = 200;  // the held-out part is 200 samples
+  CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
+                    Catch::Matchers::Contains("records[0]'s held-out part (200 samples) must be longer than the window (200)"));
+  options.window = -1;
+  CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
+                    Catch::Matchers::Contains("window must be an integer >= 0, got -1"));
+  options.window = 5;
+  options.criterion = bonl::SelectionCriterion::AIC;
+  CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
+                    Catch::Matchers::Contains("window applies to criterion 'validation' only, got criterion 'aic'"));
 }

@@ -1,5 +1,6 @@
 """bonl.select and bonl.grid: order and structure selection, ranked by criteria recomputed here from
-bonl.identify and free-run simulation, on the local cores, on a given executor and on a Dask cluster."""
+bonl.identify and free-run simulation, on the local cores, on a given executor and on a Dask cluster;
+and the same table as C++'s bonl::select gives."""
 
 import concurrent.futures
 import math
@@ -53,6 +54,57 @@ def test_scores_are_the_criteria_recomputed_from_identify_and_free_run_simulatio
     mse = float(np.mean((y - fitted.simulate(u)) ** 2))
     assert row.fit_mse == pytest.approx(mse, rel=1e-12)
     assert row.score == pytest.approx(u.size * math.log(mse) + structure.num_params * math.log(u.size), rel=1e-12)
+
+
+def _same_table(python, cpp):
+    """The ranked tables of bonl.select and of C++'s bonl::select (bonl._bonl._select): the same
+    candidates in the same order, the same failures, the same figures to 1e-12 relative."""
+    cpp_table, cpp_best = cpp
+    assert [(r.name, r.orders) for r in python.table] == [(type(s).__name__, bonl.named_orders(s)) for s, _ in cpp_table]
+    for row, (_, (score, fit_mse, validation_mse, error, model)) in zip(python.table, cpp_table):
+        assert row.error == error
+        assert (row.model is None) == (model is None)
+        assert row.score == pytest.approx(score, rel=1e-12)
+        assert row.fit_mse == pytest.approx(fit_mse, rel=1e-12)
+        assert row.validation_mse == (None if validation_mse is None else pytest.approx(validation_mse, rel=1e-12))
+    np.testing.assert_allclose(python.best.theta, cpp_best.theta, rtol=1e-12)
+
+
+def _ten_samples():
+    """A record of 10 samples: at validation_fraction 0.25 the held-out part is 2.5 rounded half away
+    from zero, 3 samples (Python's round() gave 2), so 7 parameters cannot be fitted on its fit part."""
+    truth = bonl.ARX(1, 1, 0, b=[0.5, 0.3], a=[-0.4])
+    u = np.random.default_rng(4).uniform(-1, 1, 10)
+    return u, truth.simulate(u) + np.random.default_rng(5).normal(0, 0.01, u.size)
+
+
+@pytest.mark.parametrize("case", ["ten samples", "window", "several records, aic", "bic"])
+def test_python_and_cpp_select_give_the_same_table(case):
+    truth, u, y = _system()
+    records, options = [(u, y)], {}
+    candidates = bonl.grid(bonl.Hammerstein, na=[1, 2], nb=[1], nk=[1, 2, 3], r=[2]) + [bonl.Hammerstein(1, 2500, 0, 2)]
+    if case == "ten samples":
+        records = [_ten_samples()]
+        candidates = bonl.grid(bonl.ARX, na=[1, 2, 3], nb=[1, 3], nk=[0])  # ARX(3, 3, 0): 7 parameters
+    elif case == "window":
+        options = dict(window=7)
+    elif case == "several records, aic":
+        records = [(u[:1001], y[:1001]), (u[1001:], truth.simulate(u[1001:]))]
+        options = dict(criterion="aic", passes=2)
+    else:
+        options = dict(criterion="bic", validation_fraction=0.3)
+    python = bonl.select(candidates, records, **options)
+    cpp = bonl._bonl._select(candidates, bonl._bonl._selection_data(records, **options))
+    _same_table(python, cpp)
+    failed = [row for row in python.table if row.error is not None]
+    assert len(failed) == 1 and python.table[-1] is failed[0] and failed[0].score == math.inf
+    if case == "ten samples":
+        assert failed[0].orders == {"na": 3, "nb": 3, "nk": 0}
+        assert failed[0].error == "bonl: select: 7 parameters cannot be fitted on the 7 samples of the fit part"
+        (fit_u, fit_y), = records
+        row = next(r for r in python.table if r.orders == {"na": 1, "nb": 1, "nk": 0})
+        fitted = bonl.identify(bonl.ARX(1, 1, 0), fit_u[:7], fit_y[:7])
+        assert row.validation_mse == pytest.approx(float(np.mean((fit_y - fitted.simulate(fit_u))[7:] ** 2)), rel=1e-12)
 
 
 def test_with_a_window_the_held_out_part_is_scored_after_its_first_samples():

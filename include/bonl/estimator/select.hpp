@@ -1,14 +1,18 @@
 #pragma once
-// Order selection: identify every candidate structure of a grid and rank them, as Python's
-// bonl.select does (python/bonl/selection.py).
+// Order selection: identify every candidate structure of a grid and rank them. score_candidate() is
+// the one scoring of a candidate, which select() runs on threads and Python's bonl.select
+// (python/bonl/selection.py) runs on its executors.
 // - SelectionCriterion::Validation (the default) fits each candidate on the first part of every record
-//   and scores the mean squared free-run simulation error on the held-out last part (each record
-//   simulated whole, from rest, and scored on its tail only);
+//   (the last round(fraction n) samples, half away from zero, at least 1, held out) and scores the mean
+//   squared free-run simulation error on the held-out last part: each record simulated whole, from
+//   rest, and scored on its tail only; or, with a window of m samples, the held-out part simulated
+//   after its first m samples (measured, as a test record's state-initialisation window) and scored
+//   after them;
 // - AIC and BIC fit on all the data and score N log(mse) + 2 p or N log(mse) + p log(N) of the
 //   free-run simulation error.
-// The candidates run on `threads` threads; the best is refitted on all the data. A candidate whose
-// identification breaks down (NumericalError) is kept in the table with its message and an infinite
-// score; the others are unaffected.
+// The best is refitted on all the data. A candidate that cannot be fitted (more parameters than its
+// fit part has samples) or whose identification throws (NumericalError, ...) is kept in the table with
+// the reason and an infinite score; the others are unaffected.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -34,12 +38,26 @@ namespace bonl {
 /// by Akaike's or the Bayesian information criterion on the fitted data (AIC, BIC).
 enum class SelectionCriterion { Validation, AIC, BIC };
 
-/// What select() is told: the criterion, the held-out fraction, the threads, the identification's
-/// options.
+/// The name of a criterion, as Python spells it: "validation", "aic", "bic".
+inline const char* to_string(SelectionCriterion criterion) {
+  switch (criterion) {
+    case SelectionCriterion::AIC: return "aic";
+    case SelectionCriterion::BIC: return "bic";
+    case SelectionCriterion::Validation: break;
+  }
+  return "validation";
+}
+
+/// What select() is told: the criterion, the held-out fraction, the window, the threads, the
+/// identification's options.
 struct SelectOptions {
   SelectionCriterion criterion = SelectionCriterion::Validation;  ///< how the candidates are ranked
   double validation_fraction = 0.25;  ///< the held-out last part of every record, in (0, 1)
-  unsigned threads = 0;               ///< 0: one per hardware thread
+  /// Validation only: each held-out part is scored as a test record with a state-initialisation window
+  /// of this many samples is (simulated after them, from their measured values, and scored after
+  /// them) instead of as the continuation of its record simulated from rest; 0: no window.
+  Eigen::Index window = 0;
+  unsigned threads = 0;               ///< select()'s threads; 0: one per hardware thread
   IdentifyOptions identify;           ///< for every identification
 };
 
@@ -53,7 +71,7 @@ struct SelectionCandidate {
   double score = std::numeric_limits<double>::infinity();  ///< lower is better; infinity when it failed
   double fit_mse = std::numeric_limits<double>::infinity();  ///< free-run MSE on the data it was fitted on
   double validation_mse = std::numeric_limits<double>::quiet_NaN();  ///< held-out MSE (Validation only)
-  std::string error;               ///< why the identification failed; empty when it did not
+  std::string error;               ///< why the candidate has no model; empty when it has one
   std::optional<Model> model;      ///< the identified model (none when it failed)
 };
 
@@ -66,92 +84,147 @@ struct Selection {
   Model best;                                    ///< the best structure identified on all the records
 };
 
+/// The length of a record of `samples` samples' held-out part: fraction * samples rounded half away
+/// from zero (std::lround), at least 1.
+inline Eigen::Index held_out_samples(Eigen::Index samples, double fraction) {
+  return std::max<Eigen::Index>(1, static_cast<Eigen::Index>(std::lround(fraction * static_cast<double>(samples))));
+}
+
+/// The records and options of a selection, checked once, and the part of each record the candidates
+/// are fitted on: what score_candidate() and select() take. It views the records (their vectors must
+/// outlive it).
+template <typename Scalar = double>
+class SelectionData {
+ public:
+  /// Checks the records and the options (std::invalid_argument naming the bad one) and splits every
+  /// record into its fit part and its held-out part (under AIC and BIC the fit part is all of it).
+  SelectionData(const Records<Scalar>& records, const SelectOptions& options) : m_records(records), m_options(options) {
+    const bool validation = options.criterion == SelectionCriterion::Validation;
+    detail::require(options.validation_fraction > 0.0 && options.validation_fraction < 1.0,
+                    "select: validation_fraction must be in (0, 1), got " +
+                        detail::format_number(options.validation_fraction));
+    detail::require(options.window >= 0, "select: window must be an integer >= 0, got " + std::to_string(options.window));
+    detail::require(options.window == 0 || validation,
+                    std::string("select: window applies to criterion 'validation' only, got criterion '") +
+                        to_string(options.criterion) + "'");
+    options.identify.validate();
+    detail::require_records(records, 0);
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      const std::string name = "records[" + std::to_string(i) + "]";
+      const Eigen::Index n = records[i].u.size();
+      detail::require(n > 1, name + " must have at least 2 samples");
+      const Eigen::Index held_out = held_out_samples(n, options.validation_fraction);
+      detail::require(held_out > options.window, "select: " + name + "'s held-out part (" + std::to_string(held_out) +
+                                                     " samples) must be longer than the window (" +
+                                                     std::to_string(options.window) + ")");
+      m_split.push_back(validation ? n - held_out : n);
+      m_fit_records.push_back(records[i].head(m_split.back()));
+      m_fit_samples += m_split.back();
+    }
+  }
+
+  const Records<Scalar>& records() const noexcept { return m_records; }          ///< all the records
+  const Records<Scalar>& fit_records() const noexcept { return m_fit_records; }  ///< their fit parts
+  /// Where each record's held-out part starts (its length under AIC and BIC).
+  const std::vector<Eigen::Index>& split() const noexcept { return m_split; }
+  Eigen::Index fit_samples() const noexcept { return m_fit_samples; }  ///< the fit parts' samples together
+  const SelectOptions& options() const noexcept { return m_options; }  ///< the options, checked
+
+ private:
+  Records<Scalar> m_records;
+  Records<Scalar> m_fit_records;
+  std::vector<Eigen::Index> m_split;
+  Eigen::Index m_fit_samples = 0;
+  SelectOptions m_options;
+};
+
 namespace detail {
 
-/// Mean squared free-run error of each record simulated whole from rest, over its samples from
-/// start[i] on; infinity where the simulation diverges.
+/// Mean squared free-run error of each record over its samples from start[i] on: the record simulated
+/// whole from rest, or, with a window, its samples from start[i] on simulated after their first
+/// `window` samples (measured, Model::simulate's past) and scored after them. Infinity where a
+/// simulation diverges.
 template <class Model>
 double tail_simulation_mse(const Model& model, const Records<typename Model::Scalar>& records,
-                           const std::vector<Eigen::Index>& start) {
+                           const std::vector<Eigen::Index>& start, Eigen::Index window) {
   double squared = 0.0;
   double count = 0.0;
   typename Model::VectorX simulated;
   for (std::size_t i = 0; i < records.size(); ++i) {
-    if (!model.try_simulate(records[i].u, simulated)) return std::numeric_limits<double>::infinity();
-    const Eigen::Index n = records[i].y.size() - start[i];
-    squared += static_cast<double>((records[i].y.tail(n) - simulated.tail(n)).squaredNorm());
+    const Eigen::Index first = start[i] + window;
+    const Eigen::Index n = records[i].y.size() - first;
+    if (window > 0) {
+      try {
+        simulated = model.simulate(records[i].u.tail(n), records[i].u.segment(start[i], window),
+                                   records[i].y.segment(start[i], window));
+      } catch (const NumericalError&) {
+        return std::numeric_limits<double>::infinity();
+      }
+    } else if (model.try_simulate(records[i].u, simulated)) {
+      simulated = simulated.tail(n).eval();
+    } else {
+      return std::numeric_limits<double>::infinity();
+    }
+    squared += static_cast<double>((records[i].y.tail(n) - simulated).squaredNorm());
     count += static_cast<double>(n);
   }
   const double mse = count > 0.0 ? squared / count : std::numeric_limits<double>::infinity();
   return std::isfinite(mse) ? mse : std::numeric_limits<double>::infinity();
 }
 
+}  // namespace detail
+
+/// Identifies one candidate structure on the data's fit parts and scores it by the data's criterion:
+/// its row of the selection's table. A candidate with more parameters than the fit parts have samples,
+/// or whose identification throws, gets an infinite score, no model and the reason in `error`.
 template <class Model>
-SelectionCandidate<Model> fit_candidate(const Model& structure, const Records<typename Model::Scalar>& records,
-                                        const SelectOptions& options) {
+SelectionCandidate<Model> score_candidate(const Model& structure, const SelectionData<typename Model::Scalar>& data) {
   SelectionCandidate<Model> row(structure);
-  const bool validation = options.criterion == SelectionCriterion::Validation;
-  std::vector<Eigen::Index> split, zeros(records.size(), 0);
-  Records<typename Model::Scalar> fit_records;
-  for (const auto& record : records) {
-    const Eigen::Index n = record.u.size();
-    const Eigen::Index held_out =
-        std::max<Eigen::Index>(1, static_cast<Eigen::Index>(std::lround(options.validation_fraction * double(n))));
-    split.push_back(validation ? n - held_out : n);
-    fit_records.push_back(record.head(split.back()));
+  const SelectOptions& options = data.options();
+  const Eigen::Index p = structure.num_params();
+  if (data.fit_samples() <= p) {  // identify would refuse it: a failed candidate, not bad input
+    row.error = "bonl: select: " + std::to_string(p) + " parameters cannot be fitted on the " +
+                std::to_string(data.fit_samples()) + " samples of the fit part";
+    return row;
   }
   try {
-    row.model = identify(structure, fit_records, options.identify);
-  } catch (const std::exception& error) {  // NumericalError; or a record's first part too short for it
+    row.model = identify(structure, data.fit_records(), options.identify);
+  } catch (const std::exception& error) {  // NumericalError; or a structure this data cannot fit
     row.error = error.what();
     return row;
   }
-  row.fit_mse = tail_simulation_mse(*row.model, fit_records, zeros);
-  if (validation) {
-    row.validation_mse = tail_simulation_mse(*row.model, records, split);
+  row.fit_mse = detail::tail_simulation_mse(*row.model, data.fit_records(),
+                                            std::vector<Eigen::Index>(data.records().size(), 0), 0);
+  if (options.criterion == SelectionCriterion::Validation) {
+    row.validation_mse = detail::tail_simulation_mse(*row.model, data.records(), data.split(), options.window);
     row.score = row.validation_mse;
     return row;
   }
-  double samples = 0.0;
-  for (const auto& record : fit_records) samples += static_cast<double>(record.u.size());
-  const double p = static_cast<double>(structure.num_params());
+  const double samples = static_cast<double>(data.fit_samples());
+  const double parameters = static_cast<double>(p);
   if (row.fit_mse == 0.0) {
     row.score = -std::numeric_limits<double>::infinity();
   } else if (std::isfinite(row.fit_mse)) {
     row.score = samples * std::log(row.fit_mse) +
-                (options.criterion == SelectionCriterion::AIC ? 2.0 * p : p * std::log(samples));
+                (options.criterion == SelectionCriterion::AIC ? 2.0 * parameters : parameters * std::log(samples));
   }
   return row;
 }
 
-}  // namespace detail
-
-/// Identifies every candidate structure on the records, ranks them by options.criterion and
-/// refits the best on all the records. Throws std::invalid_argument for no candidates, bad options
-/// or bad records, NumericalError if every candidate failed.
+/// Scores every candidate structure (score_candidate(), on data.options().threads threads), ranks them
+/// best first and refits the best on all the records. Throws std::invalid_argument for no candidates,
+/// NumericalError if every candidate failed.
 template <class Model>
-Selection<Model> select(const std::vector<Model>& candidates, const Records<typename Model::Scalar>& records,
-                        const SelectOptions& options = {}) {
+Selection<Model> select(const std::vector<Model>& candidates, const SelectionData<typename Model::Scalar>& data) {
   detail::require(!candidates.empty(), "select: candidates is empty");
-  detail::require(options.validation_fraction > 0.0 && options.validation_fraction < 1.0,
-                  "select: validation_fraction must be in (0, 1), got " +
-                      detail::format_number(options.validation_fraction));
-  options.identify.validate();
-  detail::require_records(records, 0);
-  for (std::size_t i = 0; i < records.size(); ++i) {
-    detail::require(records[i].u.size() > 1, "records[" + std::to_string(i) + "] must have at least 2 samples");
-  }
-
   std::vector<SelectionCandidate<Model>> rows(candidates.size(), SelectionCandidate<Model>(candidates.front()));
   std::atomic<std::size_t> next{0};
   const auto work = [&] {
-    for (std::size_t i = next++; i < candidates.size(); i = next++) {
-      rows[i] = detail::fit_candidate(candidates[i], records, options);
-    }
+    for (std::size_t i = next++; i < candidates.size(); i = next++) rows[i] = score_candidate(candidates[i], data);
   };
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads =
-      std::min<std::size_t>(options.threads == 0 ? hardware : options.threads, candidates.size());
+  const unsigned asked = data.options().threads;
+  const std::size_t threads = std::min<std::size_t>(asked == 0 ? hardware : asked, candidates.size());
   std::vector<std::thread> pool;
   for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
@@ -166,8 +239,16 @@ Selection<Model> select(const std::vector<Model>& candidates, const Records<type
   if (!table.front().model) {
     throw NumericalError("bonl: select: every candidate failed; the first: " + table.front().error);
   }
-  Model best = identify(candidates[order.front()], records, options.identify);
-  return {options.criterion, std::move(table), std::move(best)};
+  Model best = identify(candidates[order.front()], data.records(), data.options().identify);
+  return {data.options().criterion, std::move(table), std::move(best)};
+}
+
+/// select() on the records with the options, checked here (std::invalid_argument for bad options or
+/// bad records).
+template <class Model>
+Selection<Model> select(const std::vector<Model>& candidates, const Records<typename Model::Scalar>& records,
+                        const SelectOptions& options = {}) {
+  return select(candidates, SelectionData<typename Model::Scalar>(records, options));
 }
 
 }  // namespace bonl

@@ -4,6 +4,7 @@ bonl: identification of block-oriented nonlinear models (C++ core).
 from __future__ import annotations
 from bonl import ExtrapolationWarning
 from bonl import StabilityWarning
+import collections.abc
 import numpy
 import numpy.typing
 import typing
@@ -2014,6 +2015,98 @@ class UpdateResults:
         """
         numpy.ndarray (samples, n) or None: theta after each sample (when asked for)
         """
+class _SelectionData:
+    """
+    The records and options of a selection, checked once (bonl::SelectionData); made by _selection_data.
+    """
+    def __getstate__(self) -> tuple[list, str, float, int, int, str, typing.Any, float | None, float, int, bool, typing.Any]:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+@typing.overload
+def _score_candidate(structure: ARX, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
+def _score_candidate(structure: Hammerstein, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
+def _score_candidate(structure: HammersteinWiener, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
+def _score_candidate(structure: PseudoHammersteinWiener, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
+def _score_candidate(structure: Wiener, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
+def _score_candidate(structure: WienerHammerstein, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
+def _score_candidate(structure: NonlinearFeedback, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
+def _score_candidate(structure: PrandtlIshlinskiiHammerstein, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[ARX], data: _SelectionData) -> tuple[list, ARX]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[Hammerstein], data: _SelectionData) -> tuple[list, Hammerstein]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[HammersteinWiener], data: _SelectionData) -> tuple[list, HammersteinWiener]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[PseudoHammersteinWiener], data: _SelectionData) -> tuple[list, PseudoHammersteinWiener]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[Wiener], data: _SelectionData) -> tuple[list, Wiener]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[WienerHammerstein], data: _SelectionData) -> tuple[list, WienerHammerstein]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[NonlinearFeedback], data: _SelectionData) -> tuple[list, NonlinearFeedback]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[PrandtlIshlinskiiHammerstein], data: _SelectionData) -> tuple[list, PrandtlIshlinskiiHammerstein]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+def _selection_data(u: typing.Any, y: typing.Any = None, *, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> _SelectionData:
+    """
+    bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. The keyword arguments after window are identify's.
+    """
 @typing.overload
 def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> ARX:
     """

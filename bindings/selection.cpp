@@ -1,0 +1,150 @@
+// Selection in Python: bonl.select (python/bonl/selection.py) checks its data once into a
+// _SelectionData and runs C++'s bonl::score_candidate on each candidate (_score_candidate, the GIL
+// released) on its executors; _select is C++'s whole bonl::select, which tests compare it with.
+
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <bonl/estimator.hpp>
+#include <bonl/models.hpp>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "estimator_options.hpp"
+
+namespace bonl_python {
+namespace {
+
+/// The records (owned) and options of a selection, checked once by bonl::SelectionData, and the
+/// arguments they came from, for pickling (a Dask worker receives it with each candidate).
+struct SelectionArguments {
+  std::vector<Eigen::VectorXd> inputs, outputs;
+  std::string criterion;
+  double validation_fraction;
+  Eigen::Index window;
+  IdentifyArguments identify;
+  std::optional<bonl::SelectionData<double>> data;  // views inputs and outputs
+};
+
+bonl::SelectionCriterion criterion_from_string(const std::string& name) {
+  for (const auto criterion :
+       {bonl::SelectionCriterion::Validation, bonl::SelectionCriterion::AIC, bonl::SelectionCriterion::BIC}) {
+    if (name == bonl::to_string(criterion)) return criterion;
+  }
+  bonl::detail::fail("select: criterion must be one of validation, aic, bic, got '" + name + "'");
+}
+
+/// window=: an integer (Python's or numpy's, not a bool); its range bonl::SelectionData checks.
+Eigen::Index window_from(const py::object& window) {
+  bonl::detail::require(!py::isinstance<py::bool_>(window) && PyIndex_Check(window.ptr()),
+                        "select: window must be an integer >= 0, got " + std::string(py::str(py::repr(window))));
+  return window.cast<Eigen::Index>();
+}
+
+std::unique_ptr<SelectionArguments> make_selection(std::vector<Eigen::VectorXd> inputs,
+                                                   std::vector<Eigen::VectorXd> outputs, const std::string& criterion,
+                                                   double validation_fraction, Eigen::Index window,
+                                                   const IdentifyArguments& identify) {
+  auto held = std::make_unique<SelectionArguments>(
+      SelectionArguments{std::move(inputs), std::move(outputs), criterion, validation_fraction, window, identify, {}});
+  bonl::SelectOptions options;
+  options.criterion = criterion_from_string(criterion);
+  options.validation_fraction = validation_fraction;
+  options.window = window;
+  options.identify = identify_options(identify);
+  bonl::Records<double> records;
+  for (std::size_t i = 0; i < held->inputs.size(); ++i) records.emplace_back(held->inputs[i], held->outputs[i]);
+  held->data.emplace(records, options);
+  return held;
+}
+
+/// A row as bonl.select reads it: (score, fit_mse, validation_mse or None, error or None, model or None).
+template <class Model>
+py::tuple row_tuple(const bonl::SelectionCandidate<Model>& row) {
+  const bool validation = row.model && !std::isnan(row.validation_mse);
+  return py::make_tuple(row.score, row.fit_mse, validation ? py::cast(row.validation_mse) : py::none(),
+                        row.error.empty() ? py::none() : py::cast(row.error),
+                        row.model ? py::cast(*row.model) : py::none());
+}
+
+template <class Model>
+void def_selection(py::module_& m) {
+  m.def(
+      "_score_candidate",
+      [](const Model& structure, const SelectionArguments& selection) {
+        const auto row = [&] {
+          py::gil_scoped_release release;
+          return bonl::score_candidate(structure, *selection.data);
+        }();
+        return row_tuple(row);
+      },
+      py::arg("structure"), py::arg("data"),
+      "bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. "
+      "Returns (score, fit_mse, validation_mse or None, error or None, model or None).");
+  m.def(
+      "_select",
+      [](const std::vector<Model>& candidates, const SelectionArguments& selection) {
+        auto result = [&] {
+          py::gil_scoped_release release;
+          return bonl::select(candidates, *selection.data);
+        }();
+        py::list table;
+        for (const auto& row : result.table) table.append(py::make_tuple(row.structure, row_tuple(row)));
+        return py::make_tuple(table, result.best);
+      },
+      py::arg("candidates"), py::arg("data"),
+      "C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the "
+      "rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.");
+}
+
+}  // namespace
+
+void bind_selection(py::module_& m) {
+  py::class_<SelectionArguments> cls(m, "_SelectionData",
+                                     "The records and options of a selection, checked once (bonl::SelectionData); "
+                                     "made by _selection_data.");
+  cls.def(py::pickle(
+      [](const SelectionArguments& s) {
+        py::list records;
+        for (std::size_t i = 0; i < s.inputs.size(); ++i) {
+          records.append(py::make_tuple(to_numpy(s.inputs[i]), to_numpy(s.outputs[i])));
+        }
+        const IdentifyArguments& a = s.identify;
+        return py::make_tuple(records, s.criterion, s.validation_fraction, s.window, a.passes, a.method, a.forgetting,
+                              a.p0, a.c0, a.refine_iterations, a.normalise, a.operating_point);
+      },
+      [](const py::tuple& t) {
+        std::vector<Eigen::VectorXd> inputs, outputs;
+        read_records(t[0], py::none(), "", inputs, outputs);
+        return make_selection(std::move(inputs), std::move(outputs), t[1].cast<std::string>(), t[2].cast<double>(),
+                              t[3].cast<Eigen::Index>(),
+                              {t[4].cast<int>(), t[5].cast<std::string>(), t[6], t[7].cast<std::optional<double>>(),
+                               t[8].cast<double>(), t[9].cast<int>(), t[10].cast<bool>(), t[11]});
+      }));
+  def_with_identify_arguments(
+      m, "_selection_data",
+      [](const py::object& u, const py::object& y, const std::string& criterion, double validation_fraction,
+         const py::object& window, int passes, const std::string& method, const py::object& forgetting,
+         std::optional<double> p0, double c0, int refine_iterations, bool normalise, const py::object& operating_point) {
+        std::vector<Eigen::VectorXd> inputs, outputs;
+        read_records(u, y,
+                     "select(candidates, u, y) for one record, select(candidates, [(u1, y1), (u2, y2), ...]) for several",
+                     inputs, outputs);
+        return make_selection(std::move(inputs), std::move(outputs), criterion, validation_fraction, window_from(window),
+                              {passes, method, forgetting, p0, c0, refine_iterations, normalise, operating_point});
+      },
+      py::arg("u"), py::arg("y") = py::none(), py::kw_only(), py::arg("criterion") = "validation",
+      py::arg("validation_fraction") = 0.25, py::arg("window") = 0,
+      "bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. "
+      "The keyword arguments after window are identify's.");
+  bonl::for_each_model(bonl::Models{}, [&m](auto tag) { def_selection<typename decltype(tag)::type>(m); });
+}
+
+}  // namespace bonl_python

@@ -33,17 +33,22 @@ long heap_allocations_in(Body&& body) {
   return bonl_test::allocations() + g_eigen_allocations - before;
 }
 
-/// Updates `structure` on a noisy record, with both methods, and checks that they allocate nothing,
+/// Updates `structure` on a noisy record, with every method (the output-error one also with its
+/// window refinement), and checks that they allocate nothing,
 /// refuse nothing and leave the covariance exactly symmetric.
 template <class Model>
 void check_updates_allocate_nothing(const Model& structure, const std::optional<bonl::ForgettingSchedule>& forgetting) {
   INFO(Model::kName);
   const Eigen::VectorXd u = bonl::signals::random_levels(3000, 5, 1.0, 3);
   const Eigen::VectorXd y = structure.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 4);
-  for (bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
+  // The output-error method twice: the recursion alone and with the window refinement.
+  for (int run = 0; run < 4; ++run) {
+    const bonl::Method method = run < 2 ? bonl::Method::OutputError : run == 2 ? bonl::Method::EquationError : bonl::Method::Paper;
     bonl::EstimatorOptions options;
     options.method = method;
     options.forgetting = forgetting;
+    options.window.enabled = run == 1;
+    INFO("method " << bonl::to_string(method) << (run == 1 ? " with the window refinement" : ""));
     bonl::Estimator<Model> estimator(structure, options);
     CHECK(heap_allocations_in([&] {
             for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);

@@ -121,9 +121,13 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
   // come from its own free run and switch with the backlash, and on the cascaded tanks a change of
   // 1e-9 V in the output moved it by O(1) and the refined P-H-W between minima (docs/explanation/algorithm.md).
   // A start whose recursion broke down numerically is dropped; if both did, the error is reported.
-  IdentifyOptions other_options = options;
+  // The starts' recursions run without the window refinement: the refinement below re-simulates
+  // the whole record, which the window does for the recent samples only, at a cost.
+  IdentifyOptions start_options = options;
+  start_options.window.enabled = false;
+  IdentifyOptions other_options = start_options;
   other_options.method = options.method == Method::OutputError ? Method::EquationError : Method::OutputError;
-  const IdentifyOptions* settings[] = {&options, &other_options};
+  const IdentifyOptions* settings[] = {&start_options, &other_options};
   std::vector<Model> starts;
   std::string failures;
   for (const IdentifyOptions* start : settings) {

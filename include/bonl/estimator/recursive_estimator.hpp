@@ -19,6 +19,7 @@
 #include "forgetting_schedule.hpp"
 #include "method.hpp"
 #include "rls.hpp"
+#include "window_refinement.hpp"
 
 namespace bonl {
 
@@ -44,9 +45,9 @@ struct EstimatorOptions {
   /// Must be >= 1; infinity turns it off (the paper's algorithm exactly as written). Unset, the
   /// method's default: 1 for equation_error and paper, "never less certain than at the start" (larger
   /// ceilings let P's condition number grow with them: at 100 the paper method's P lost positive
-  /// definiteness to round-off in the 1e8-sample soak test, docs/lab/reliability.md); 100 for output_error,
+  /// definiteness to round-off in the 1e8-sample soak test, docs/lab/reliability.md); 10 for output_error,
   /// whose P(0) is small and whose short memory while converging needs room in the weakly excited
-  /// directions (docs/explanation/algorithm.md).
+  /// directions (docs/explanation/algorithm.md: 100 made P indefinite in the soak test).
   std::optional<double> trace_ceiling;
   /// After this many consecutive refused updates (UpdateStatus::NumericalFailure) the estimator
   /// resets P to p0 I itself, keeping theta (counted in health().recoveries). 0: never; the caller
@@ -61,6 +62,9 @@ struct EstimatorOptions {
   /// P-H-W: c is held at 0 for this many samples after each start from rest (the model's
   /// OutputErrorTerms).
   Eigen::Index backlash_hold = 200;
+  /// Levenberg-Marquardt over windows of recent samples, in slices beside the recursion, whose
+  /// estimate it replaces where it simulates newer data better (estimator/window_refinement.hpp).
+  WindowRefinementOptions window;
 
   /// The forgetting schedule, p0 and trace ceiling in force: the ones set, or the method's defaults.
   ForgettingSchedule resolved_forgetting() const {
@@ -88,6 +92,7 @@ struct EstimatorOptions {
     detail::require(stability_radius > 0.0 && stability_radius <= 1.0,
                     "stability_radius must be in (0, 1], got " + detail::format_number(stability_radius));
     detail::require(backlash_hold >= 0, "backlash_hold must be >= 0");
+    window.validate();
   }
 };
 
@@ -109,6 +114,7 @@ struct EstimatorHealth {
   Eigen::Index recoveries = 0;             ///< automatic covariance resets (EstimatorOptions::recover_after)
   Eigen::Index internal_restarts = 0;      ///< internal variables restarted because they became non-finite
   Eigen::Index projections = 0;            ///< output_error updates shortened to keep the linear block stable
+  WindowRefinementCounts window;           ///< what the output-error method's window refinement did
 };
 
 /// Recorded history of an estimator (Estimator::start_recording): one column / entry per update,
@@ -158,7 +164,12 @@ class Estimator {
         m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
     m_u0 = static_cast<Scalar>(structure.u0());
     m_y0 = static_cast<Scalar>(structure.y0());
-    if (options.method == Method::OutputError) m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
+    if (options.method == Method::OutputError) {
+      m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
+      if (options.window.enabled) {
+        m_window.emplace(structure, options.window, options.backlash_hold, options.stability_radius, m_p0);
+      }
+    }
     reset();
   }
 
@@ -332,6 +343,7 @@ class Estimator {
     m_recorded = 0;
     m_total_samples = 0;
     m_prediction = Scalar(0);
+    if (m_window) m_window->reset(m_rls.theta(), m_outputs);
   }
 
   void restart_internals() noexcept {
@@ -342,6 +354,7 @@ class Estimator {
     m_last_outlier = false;
     m_theta_internal = m_rls.theta();
     m_since_refresh = 0;
+    if (m_window) m_window->restart(m_rls.theta(), m_outputs);
   }
 
   /// recover() without clearing diverged(). The data histories are kept: they are fine unless
@@ -402,10 +415,30 @@ class Estimator {
       // refuse every update for thousands of samples). Restart the simulation from rest instead.
       ++m_health.internal_restarts;
       m_outputs.reset();
-      return finish(failure(), simulated.internal);
+      status = failure();
     }
-    m_outputs.accept(m_step);
+    if (status == UpdateStatus::Updated) {
+      m_outputs.accept();
+      m_outputs.correct(m_step);
+    }
+    if (m_window) refine_window(u, y, error, lambda);
     return finish(status, simulated.internal);
+  }
+
+  /// The window refinement's slice for this sample, and its swap where it has one: its estimate,
+  /// covariance (within the trace ceiling) and free run replace the recursion's.
+  void refine_window(Scalar u, Scalar y, Scalar error, Scalar lambda) noexcept {
+    m_window->push(u, y, error);
+    const double memory = lambda < Scalar(1) ? 1.0 / (1.0 - static_cast<double>(lambda))
+                                             : std::numeric_limits<double>::infinity();
+    if (m_window->advance(m_rls.theta(), m_outputs, memory)) {
+      const auto& covariance = m_window->covariance();
+      const Scalar trace = covariance.trace();
+      const Scalar factor = trace > m_max_trace ? m_max_trace / trace : Scalar(1);
+      m_rls.assign(m_window->theta(), factor * covariance);
+      m_outputs = m_window->run();
+    }
+    m_health.window = m_window->counts();
   }
 
   /// theta = previous + m_step left the stability region: halve the step until it is back inside
@@ -476,6 +509,7 @@ class Estimator {
   Scalar m_u0 = Scalar(0), m_y0 = Scalar(0);  // the structure's operating point
   typename Model::KeyTerms m_terms;           // equation_error and paper
   typename Model::OutputErrorTerms m_outputs; // output_error
+  std::optional<WindowRefinement<Model>> m_window;  // output_error, unless options.window.enabled is false
   Rls<Scalar, Model::kNumParams> m_rls;
   Params m_theta_internal;  // equation_error: the copy of theta the internal variables use
   Params m_step;            // output_error: the change of theta in the current update

@@ -191,6 +191,16 @@ class Rls {
     m_state.scale = Scalar(1);
   }
 
+  /// theta and P given, as they are (P symmetric positive definite of this size, theta finite: the
+  /// caller's to ensure): the estimate swapped for another one, with the covariance that goes with
+  /// it (the window refinement's). Allocation-free; the padding of the storage stays zero.
+  template <typename T, typename C>
+  void assign(const Eigen::MatrixBase<T>& theta, const Eigen::MatrixBase<C>& P) noexcept {
+    m_theta = theta;
+    m_M.topLeftCorner(size(), size()) = P;
+    m_state.scale = Scalar(1);
+  }
+
   /// One update with regressor phi, target y and forgetting factor lambda in (0, 1]; forgetting is
   /// reduced where it would lift trace(P) above max_trace (see the top of this file).
   /// Returns false, with theta and P untouched, when the update is numerically unsafe.

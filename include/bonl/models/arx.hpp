@@ -164,10 +164,11 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
     }
     /// Moves the run on by the step just taken, with theta unchanged (a refinement's Jacobian pass).
     void accept() noexcept { m_linear.commit(m_psi); }
-    /// Moves the run on by the step just taken after the estimate moved by delta: the stored
-    /// sensitivities correct the stored past to first order, as if the run had used the new theta.
-    void accept(const Params& delta) noexcept {
-      accept();
+    /// Moves the stored run to first order along a change delta of the estimate: the stored
+    /// sensitivities correct the stored past as if the run had used theta + delta. The online
+    /// estimator calls it after accept() once its update moved theta; the window refinement calls it
+    /// on a copy of a run to start that run for another theta.
+    void correct(const Params& delta) noexcept {
       m_linear.correct(delta);
     }
     /// Whether the linear block's poles with theta lie inside the circle of the given radius (the

@@ -106,9 +106,8 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     }
     /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_front.commit(); }
-    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
-    void accept(const Params& delta) noexcept {
-      accept();
+    /// \copydoc ARX::OutputErrorTerms::correct
+    void correct(const Params& delta) noexcept {
       m_front.correct(delta);
     }
     /// \copydoc ARX::OutputErrorTerms::stable

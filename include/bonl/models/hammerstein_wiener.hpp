@@ -132,9 +132,8 @@ class HammersteinWiener
     }
     /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_front.commit(); }
-    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
-    void accept(const Params& delta) noexcept {
-      accept();
+    /// \copydoc ARX::OutputErrorTerms::correct
+    void correct(const Params& delta) noexcept {
       m_front.correct(delta.head(m_front_size));
     }
     /// \copydoc ARX::OutputErrorTerms::stable

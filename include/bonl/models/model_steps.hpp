@@ -4,8 +4,10 @@
 //   KeyTerms(model, KeyTermMethod)  step(theta, u, y) -> Regression: its key-term regressor (eq. 14
 //                                   and its kin) with the internal variables estimated as the method says;
 //   OutputErrorTerms(model, hold)   step(theta, u) -> SimulationStep: one step of its free run with the
-//                                   output's sensitivity to theta; accept(delta) once the estimate moved
-//                                   by delta, accept() where it did not (a refinement's Jacobian pass).
+//                                   output's sensitivity to theta; accept() stores the step, and
+//                                   correct(delta) moves the stored run to first order along a change
+//                                   delta of the estimate (after an update, or to reuse a run's state
+//                                   for another theta).
 // The estimator (estimator/recursive_estimator.hpp) chooses the view from its Method; the models know
 // nothing of the estimator.
 

@@ -537,8 +537,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       m_dy.col(0) = m_psi;
     }
     /// After the estimate moved by delta: the stored outputs to first order (as SimulatedLags does).
-    void accept(const Params& delta) noexcept {
-      accept();
+    void correct(const Params& delta) noexcept {
       for (Eigen::Index j = 0; j < m_y.size(); ++j) m_y[j] += m_dy.col(j).dot(delta);
       for (Eigen::Index j = 0; j < m_z.size(); ++j) m_z[j] += m_dz.col(j).dot(delta);
     }

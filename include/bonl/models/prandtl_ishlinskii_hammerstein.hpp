@@ -365,9 +365,8 @@ class PrandtlIshlinskiiHammerstein
     }
     /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_lags.push(m_x, m_psi); }
-    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
-    void accept(const Params& delta) noexcept {
-      accept();
+    /// \copydoc ARX::OutputErrorTerms::correct
+    void correct(const Params& delta) noexcept {
       m_lags.correct(delta);
     }
     /// \copydoc ARX::OutputErrorTerms::stable

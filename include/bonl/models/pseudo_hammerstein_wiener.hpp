@@ -214,15 +214,14 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
       return {m_output, m_psi, x};
     }
     /// Stores the step: x and its sensitivity in the front, y(k) and its sensitivity as the
-    /// backlash memory; then moves them to first order along the estimate's change `delta`.
+    /// backlash memory.
     void accept() noexcept {
       m_front.commit();
       m_y = m_output;
       m_dy = m_psi;
     }
-    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
-    void accept(const Params& delta) noexcept {
-      accept();
+    /// \copydoc ARX::OutputErrorTerms::correct
+    void correct(const Params& delta) noexcept {
       m_front.correct(delta.head(m_last));
       m_y += m_dy.dot(delta);
     }

@@ -216,9 +216,8 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     }
     /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_linear.commit(m_dx); }
-    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
-    void accept(const Params& delta) noexcept {
-      accept();
+    /// \copydoc ARX::OutputErrorTerms::correct
+    void correct(const Params& delta) noexcept {
       m_linear.correct(delta.template head<kLinearParams>(m_dx.size()));
     }
     /// \copydoc ARX::OutputErrorTerms::stable

@@ -463,9 +463,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
       }
       m_y.push(m_output, m_psi);
     }
-    /// \copydoc ARX::OutputErrorTerms::accept(const Params&)
-    void accept(const Params& delta) noexcept {
-      accept();
+    /// \copydoc ARX::OutputErrorTerms::correct
+    void correct(const Params& delta) noexcept {
       m_first.correct(delta.template head<kFirstParams>(m_first_size));
       for (Eigen::Index i = 0; i < m_nb2; ++i) m_w_lags[i] += m_dw_lags.col(i).dot(delta.head(m_front_size));
       m_y.correct(delta);

@@ -20,6 +20,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "estimator_options.hpp"
+#include "option_docs.hpp"
 
 namespace bonl_python {
 namespace {
@@ -341,7 +342,7 @@ non-finite reference or one of preview samples or fewer. Returns InverseRun (com
                ", refused_no_inverse=" + std::to_string(h.refused_no_inverse) + ")";
       });
 
-  py::class_<AnyAdaptive> adaptive(control, "AdaptiveInverse", R"doc(The online estimator and the inverse together.
+  static const std::string adaptive_doc = R"doc(The online estimator and the inverse together.
 
 ``update(u, y)`` feeds the command applied (feedback included) and the output measured to the
 estimator, warm-started from ``model``; every ``rederive_every`` samples the inverse is derived
@@ -355,13 +356,13 @@ model : one of bonl.MODELS
     The identified model to start from.
 command_min, command_max, backlash_band, backlash_band_per_c
     As for InverseModel.
-method, forgetting, p0
-    As for Estimator (default: output_error, the method's forgetting and p0).
-rederive_every : int, default 100
+)doc" + option_docs({"method", "forgetting", "p0"}) +
+                                          R"doc(rederive_every : int, default 100
 max_covariance_trace : float, default 10
 stability_radius : float, default 0.999
 
-Raises ValueError for bad options or a model without an inverse.)doc");
+Raises ValueError for bad options or a model without an inverse.)doc";
+  py::class_<AnyAdaptive> adaptive(control, "AdaptiveInverse", adaptive_doc.c_str());
   def_inits(adaptive, [](auto& cls, auto tag) { def_adaptive_init<typename decltype(tag)::type>(cls); });
   adaptive
       .def("step", &AnyAdaptive::step, py::arg("reference"),

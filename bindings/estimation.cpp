@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "estimator_options.hpp"
+#include "option_docs.hpp"
 
 namespace bonl_python {
 namespace {
@@ -92,7 +93,7 @@ bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
 
 namespace {
 
-const char* kIdentifyDoc = R"doc(Identify a model's parameters from an input/output record, or from several.
+const char* kIdentifyHead = R"doc(Identify a model's parameters from an input/output record, or from several.
 
 Parameters
 ----------
@@ -100,38 +101,13 @@ model : one of bonl.MODELS
     Gives the structure (orders); its parameter values are not used.
 u, y : array_like, shape (n,)
     Input and measured output of one record.
-records : sequence of (u, y) pairs, keyword only
-    Several records (experiments of the same system) in place of u and y:
+records : sequence of (u, y) pairs, optional
+    Several records (experiments of the same system), by keyword, in place of u and y:
     ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
     is carried across records.
-passes : int, default 1
-    Passes of the recursive estimator over the record(s) (the paper's step 5).
-method : {'output_error', 'equation_error', 'paper'}
-    The recursive stage. 'output_error' (default): recursive prediction-error method on the
-    free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-    least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-    recursive estimate is then refined by minimising the free-run simulation error.
-forgetting : float, tuple or 'adaptive', optional
-    Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
-    adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
-    for the others.
-p0 : float, optional
-    P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-c0 : float, default 0.01
-    Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
-refine_iterations : int, default 100
-    Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-    The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
-normalise : bool, default True
-    Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-    the model in the data's units, so that the settings mean the same whatever the units. The recursive
-    estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-    estimator's, in the data's units.
-operating_point : {None, 'mean', 'initial'}
-    The identified model's operating point (u0, y0): None (default) keeps the structure's
-    (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
-    first sample of the first record (the record starts at rest there).
+)doc";
 
+const char* kIdentifyTail = R"doc(
 Returns
 -------
 model
@@ -150,6 +126,15 @@ ValueError
     Bad orders, settings, lengths or non-finite samples.
 bonl.NumericalError
     The estimator broke down numerically.)doc";
+
+/// identify's docstring: its options' entries from option_docs.hpp's table.
+const char* identify_doc() {
+  static const std::string doc =
+      std::string(kIdentifyHead) +
+      option_docs({"passes", "method", "forgetting", "p0", "c0", "refine_iterations", "normalise", "operating_point"}) +
+      kIdentifyTail;
+  return doc.c_str();
+}
 
 /// identify(..., operating_point=None | 'mean' | 'initial').
 bonl::OperatingPointSource operating_point_source(const py::object& value) {
@@ -196,7 +181,7 @@ void def_identify(py::module_& m) {
         return identified;
       },
       py::arg("model"), py::arg("u") = py::none(), py::arg("y") = py::none(), py::kw_only(),
-      py::arg("records") = py::none(), kIdentifyDoc);
+      py::arg("records") = py::none(), identify_doc());
 }
 
 /// What Estimator.update_record returns: one status code per sample and, where asked, the
@@ -414,33 +399,13 @@ void bind_estimation(py::module_& m) {
 
   bonl::for_each_model(bonl::Models{}, [&m](auto tag) { def_identify<typename decltype(tag)::type>(m); });
 
-  py::class_<AnyEstimator> estimator(m, "Estimator", R"doc(Online recursive estimator for one model.
-
-Parameters
-----------
-model : one of bonl.MODELS
-    Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
-    c = 0 for output_error).
-method : {'output_error', 'equation_error', 'paper'}
-    As for identify; default 'output_error' (docs/explanation/algorithm.md).
-forgetting : float, tuple or 'adaptive', optional
-    As for identify; default the method's ('adaptive' for output_error, the paper's schedule for
-    the others).
-p0 : float, optional
-    P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-c0 : float, default 0.01
-trace_ceiling : float, optional
-    trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
-    would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
-    (the paper's algorithm exactly as written). Default: 100 for output_error, 1 for the others.
-recover_after : int, default 0
-    After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
-    0: never (check ``diverged`` and call ``recover()``).
-stability_radius : float, default 0.999
-    output_error: the linear block's poles are kept inside this radius (updates shortened).
-backlash_hold : int, default 200
-    output_error, P-H-W: c is held at 0 for this many samples from the start.
-)doc");
+  static const std::string estimator_doc =
+      "Online recursive estimator for one model.\n\nParameters\n----------\nmodel : one of bonl.MODELS\n"
+      "    Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,\n"
+      "    c = 0 for output_error).\n" +
+      option_docs({"method", "forgetting", "p0", "c0", "trace_ceiling", "recover_after", "stability_radius",
+                   "backlash_hold"});
+  py::class_<AnyEstimator> estimator(m, "Estimator", estimator_doc.c_str());
   bonl::for_each_model(bonl::Models{}, [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
   py::class_<UpdateResults>(m, "UpdateResults", "What Estimator.update_record returns for a record.")
       .def_readonly("status", &UpdateResults::status,

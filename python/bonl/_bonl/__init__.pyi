@@ -1848,25 +1848,29 @@ class Estimator:
     model : one of bonl.MODELS
         Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
         c = 0 for output_error).
-    method : {'output_error', 'equation_error', 'paper'}
-        As for identify; default 'output_error' (docs/explanation/algorithm.md).
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
-        As for identify; default the method's ('adaptive' for output_error, the paper's schedule for
-        the others).
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     c0 : float, default 0.01
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     trace_ceiling : float, optional
         trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
         would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
-        (the paper's algorithm exactly as written). Default: 100 for output_error, 1 for the others.
+        (the paper's algorithm exactly as written). Default: 10 for output_error, 1 for the others.
     recover_after : int, default 0
         After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
         0: never (check ``diverged`` and call ``recover()``).
     stability_radius : float, default 0.999
         output_error: the linear block's poles are kept inside this radius (updates shortened).
     backlash_hold : int, default 200
-        output_error, P-H-W: c is held at 0 for this many samples from the start.
+        output_error, P-H-W: c is held at 0 for this many samples after each start from rest.
     """
     @typing.overload
     def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
@@ -2155,17 +2159,16 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output of one record.
-    records : sequence of (u, y) pairs, keyword only
-        Several records (experiments of the same system) in place of u and y:
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
         ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
         is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2175,15 +2178,17 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2217,17 +2222,16 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output of one record.
-    records : sequence of (u, y) pairs, keyword only
-        Several records (experiments of the same system) in place of u and y:
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
         ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
         is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2237,15 +2241,17 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2279,17 +2285,16 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output of one record.
-    records : sequence of (u, y) pairs, keyword only
-        Several records (experiments of the same system) in place of u and y:
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
         ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
         is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2299,15 +2304,17 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2341,17 +2348,16 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output of one record.
-    records : sequence of (u, y) pairs, keyword only
-        Several records (experiments of the same system) in place of u and y:
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
         ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
         is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2361,15 +2367,17 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2403,17 +2411,16 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output of one record.
-    records : sequence of (u, y) pairs, keyword only
-        Several records (experiments of the same system) in place of u and y:
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
         ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
         is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2423,15 +2430,17 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2465,17 +2474,16 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output of one record.
-    records : sequence of (u, y) pairs, keyword only
-        Several records (experiments of the same system) in place of u and y:
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
         ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
         is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2485,15 +2493,17 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2527,17 +2537,16 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output of one record.
-    records : sequence of (u, y) pairs, keyword only
-        Several records (experiments of the same system) in place of u and y:
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
         ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
         is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2547,15 +2556,17 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2589,17 +2600,16 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
         Input and measured output of one record.
-    records : sequence of (u, y) pairs, keyword only
-        Several records (experiments of the same system) in place of u and y:
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
         ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
         is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2609,15 +2619,17 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     

@@ -290,8 +290,16 @@ class AdaptiveInverse:
         The identified model to start from.
     command_min, command_max, backlash_band, backlash_band_per_c
         As for InverseModel.
-    method, forgetting, p0
-        As for Estimator (default: output_error, the method's forgetting and p0).
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     rederive_every : int, default 100
     max_covariance_trace : float, default 10
     stability_radius : float, default 0.999

@@ -172,6 +172,22 @@ void bind_method_result(py::module_& sub) {
 
 void bind_result(py::module_& sub) {
   using experiment::PaperExperimentResult;
+  using experiment::Timings;
+  py::class_<Timings>(sub, "Timings", "The wall time of each stage of the paper's experiment [s].")
+      .def_readonly("plant", &Timings::plant, "float: simulation and processing of the two records [s].")
+      .def_readonly("identification", &Timings::identification,
+                    "float: identification and validation, both methods, identify() and online [s].")
+      .def_readonly("robustness", &Timings::robustness, "float: the robustness check (0 when it was not run) [s].")
+      .def(
+          "to_dict",
+          [](const Timings& t) {
+            py::typing::Dict<py::str, py::float_> d;
+            d["plant"] = t.plant;
+            d["identification"] = t.identification;
+            d["robustness"] = t.robustness;
+            return d;
+          },
+          "Every stage by name.\n\nReturns\n-------\ndict[str, float]");
   py::class_<PaperExperimentResult>(
       sub, "PaperExperimentResult",
       "Everything the paper's experiment gives (run_paper_experiment): the plant, the two records, both\n"
@@ -208,17 +224,9 @@ void bind_result(py::module_& sub) {
           "tuple of str: the experiment's models, in the order of the paper's equations (ARX first).")
       .def_readonly("robustness_trajectories", &PaperExperimentResult::robustness_trajectories,
                     "int: trajectories of the robustness check (0 when it was not run).")
-      .def_property_readonly(
-          "seconds",
-          [](const PaperExperimentResult& r) {
-            py::typing::Dict<py::str, py::float_> d;
-            d["plant"] = r.seconds.plant;
-            d["identification"] = r.seconds.identification;
-            d["robustness"] = r.seconds.robustness;
-            return d;
-          },
-          "dict[str, float]: wall time of each stage [s]: 'plant' (records), 'identification' (both methods,\n"
-          "identify() and online), 'robustness'.")
+      .def_readonly("seconds", &PaperExperimentResult::seconds,
+                    "Timings: wall time of each stage [s]: plant (records), identification (both methods,\n"
+                    "identify() and online), robustness.")
       .def("__repr__", [](const PaperExperimentResult& r) {
         return "PaperExperimentResult(" + std::to_string(r.methods.size()) + " methods, " +
                std::to_string(r.robustness_trajectories) + " robustness trajectories)";
@@ -380,7 +388,7 @@ void bind_experiment(py::module_& m) {
       "Raises\n------\nValueError\n    When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.");
 
   sub.attr("__all__") = py::make_tuple("run_paper_experiment", "PaperExperimentResult", "MethodResult", "ModelResult",
-                                       "Record", "run_tracking_experiment", "TrackingResult", "TrackingRun",
+                                       "Record", "Timings", "run_tracking_experiment", "TrackingResult", "TrackingRun",
                                        "published_score", "low_pass", "differentiate");
   // `import bonl._bonl.experiment` works once sys.modules knows the submodule.
   py::module_::import("sys").attr("modules")[sub.attr("__name__")] = sub;

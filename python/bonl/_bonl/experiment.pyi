@@ -8,7 +8,7 @@ import bonl._bonl.plant
 import numpy
 import numpy.typing
 import typing
-__all__: tuple = ('run_paper_experiment', 'PaperExperimentResult', 'MethodResult', 'ModelResult', 'Record', 'run_tracking_experiment', 'TrackingResult', 'TrackingRun', 'published_score', 'low_pass', 'differentiate')
+__all__: tuple = ('run_paper_experiment', 'PaperExperimentResult', 'MethodResult', 'ModelResult', 'Record', 'Timings', 'run_tracking_experiment', 'TrackingResult', 'TrackingRun', 'published_score', 'low_pass', 'differentiate')
 class Record:
     """
     One processed record of the experiment, on the output grid (bonl/experiment/records.hpp).
@@ -153,6 +153,33 @@ class MethodResult:
         """
         dict[str, float]: the online estimates' validation MSE by model name [(rad/s)^2].
         """
+class Timings:
+    """
+    The wall time of each stage of the paper's experiment [s].
+    """
+    def to_dict(self) -> dict[str, float]:
+        """
+        Every stage by name.
+        
+        Returns
+        -------
+        dict[str, float]
+        """
+    @property
+    def identification(self) -> float:
+        """
+        float: identification and validation, both methods, identify() and online [s].
+        """
+    @property
+    def plant(self) -> float:
+        """
+        float: simulation and processing of the two records [s].
+        """
+    @property
+    def robustness(self) -> float:
+        """
+        float: the robustness check (0 when it was not run) [s].
+        """
 class PaperExperimentResult:
     """
     Everything the paper's experiment gives (run_paper_experiment): the plant, the two records, both
@@ -204,10 +231,10 @@ class PaperExperimentResult:
         int: trajectories of the robustness check (0 when it was not run).
         """
     @property
-    def seconds(self) -> dict[str, float]:
+    def seconds(self) -> Timings:
         """
-        dict[str, float]: wall time of each stage [s]: 'plant' (records), 'identification' (both methods,
-        identify() and online), 'robustness'.
+        Timings: wall time of each stage [s]: plant (records), identification (both methods,
+        identify() and online), robustness.
         """
     @property
     def validation(self) -> Record:

@@ -221,7 +221,7 @@ class AnyEstimator {
     // Unequal lengths: bonl::Estimator::update refuses them before the first sample.
     const py::ssize_t samples = std::min(u.shape(0), y.shape(0));
     const py::ssize_t params = theta().size();
-    UpdateResults results{py::array_t<std::int8_t>(samples)};
+    UpdateResults results{py::array_t<std::int8_t>(samples), std::nullopt, std::nullopt};
     py::array_t<double> prediction(want_prediction ? samples : 0);
     py::array_t<double> theta_rows(std::vector<py::ssize_t>{want_theta ? samples : 0, params});
     std::int8_t* status_out = results.status.mutable_data();

@@ -102,11 +102,12 @@ void bind_common(py::class_<Model>& cls) {
            const Eigen::VectorXd input = to_vector(u, "u");
            const auto [u_past, y_past] = read_initial(initial);
            warn_if_extrapolating(model, input);
-           Eigen::VectorXd output = [&] {
+           Eigen::VectorXd output;
+           {
              py::gil_scoped_release release;
-             if (u_past.size() == 0 && y_past.size() == 0) return Eigen::VectorXd(model.simulate(input));
-             return Eigen::VectorXd(model.simulate(input, u_past, y_past));
-           }();
+             output = u_past.size() == 0 && y_past.size() == 0 ? Eigen::VectorXd(model.simulate(input))
+                                                               : Eigen::VectorXd(model.simulate(input, u_past, y_past));
+           }
            return to_numpy(std::move(output));
          },
          py::arg("u"), py::arg("initial") = py::none(), kSimulateDoc)
@@ -116,10 +117,11 @@ void bind_common(py::class_<Model>& cls) {
             const Eigen::VectorXd input = to_vector(u, "u");
             const Eigen::VectorXd output = to_vector(y, "y");
             const auto [u_past, y_past] = read_initial(initial);
-            Eigen::VectorXd prediction = [&] {
+            Eigen::VectorXd prediction;
+            {
               py::gil_scoped_release release;
-              return Eigen::VectorXd(model.predict(input, output, u_past, y_past));
-            }();
+              prediction = model.predict(input, output, u_past, y_past);
+            }
             return to_numpy(std::move(prediction));
           },
           py::arg("u"), py::arg("y"), py::arg("initial") = py::none(), kPredictDoc)

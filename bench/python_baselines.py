@@ -157,7 +157,7 @@ def bonl_bindings(quick: bool, smoke: bool = False) -> dict:
         model = model_class(*model_class.PAPER_ORDERS)  # bench_data.hpp's structures: bonl::PaperOrders
         for method in ("output_error", "equation_error", "paper"):
             def stream() -> None:
-                bonl.Estimator(model, method=method).update(u, y)
+                bonl.Estimator(model, method=method).update_record(u, y)
             streaming[f"{model_class.__name__}/{method}"] = best_of(repeats, stream) / len(u) * 1e9
     out["estimator_update_record_ns"] = streaming
     return out

@@ -4,10 +4,16 @@
 
 #include <pybind11/pybind11.h>
 
+#include <bonl/models.hpp>
+
 #include <string>
+#include <variant>
 
 namespace bonl_python {
 namespace py = pybind11;
+
+/// Any model of bonl::Models (C++'s bonl::io::AnyModel): Python sees the union of the model classes.
+using AnyModel = bonl::ApplyModels<bonl::Models, std::variant>::type;
 
 void bind_models(py::module_& m);      // models.cpp: one class per model of bonl::Models, MODELS, the warnings
 void bind_estimation(py::module_& m);  // estimation.cpp: identify, Estimator, UpdateStatus
@@ -19,9 +25,9 @@ void bind_experiment(py::module_& m);  // experiment.cpp: submodule experiment (
 void bind_control(py::module_& m);     // control.cpp: submodule control (InverseModel, InverseStatus)
 
 // The parts of the submodule plant:
-void bind_plant_parameters(py::module_& plant);  // plant_parameters.cpp: Parameters, default/small_parameters
+void bind_plant_parameters(py::module_& plant);  // plant_parameters.cpp: Parameters
 void bind_excitation(py::module_& plant);        // excitation.cpp: Command, submodule excitation
-void bind_plant_simulate(py::module_& plant);    // plant_simulate.cpp: simulate, initial_state, derivative
+void bind_plant_simulate(py::module_& plant);    // plant_simulate.cpp: simulate, Trajectory, initial_state, derivative
 void bind_plant_stepping(py::module_& plant);    // plant_stepping.cpp: SteppingPlant, Measurement
 
 /// The warnings bonl gives (models.cpp creates them): a model simulated on inputs outside the range it

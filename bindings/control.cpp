@@ -20,6 +20,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "estimator_options.hpp"
+#include "option_docs.hpp"
 
 namespace bonl_python {
 namespace {
@@ -28,9 +29,15 @@ using bonl::control::InverseStatus;
 
 /// The commands for a whole reference, as numpy arrays.
 struct InverseRunArrays {
-  py::array command;
+  Vector command;
   py::array_t<std::uint8_t> status;
 };
+
+/// step's reference: one number, or a window of the reference (an array, list or tuple).
+BONL_PYTHON_TYPED(Reference, "float | numpy.typing.ArrayLike");
+
+/// A model of InvertibleModels: Python sees the union of their classes.
+using InvertibleModel = bonl::ApplyModels<bonl::control::InvertibleModels, std::variant>::type;
 
 /// ValueError for a refused step (the inverse is untouched).
 void raise_if_rejected(InverseStatus status, Eigen::Index window_size, Eigen::Index given) {
@@ -70,11 +77,11 @@ class AnyInverse {
   AnyInverse(const Model& model, const bonl::control::InverseOptions& options)
       : m_inverse(std::in_place_type<InverseOf<Model>>, model, options) {}
 
-  bonl::control::InverseStep<double> step(const py::object& reference) {
+  bonl::control::InverseStep<double> step(const Reference& reference) {
     return std::visit([&](auto& inverse) { return step_on(inverse, inverse.window_size(), reference); }, m_inverse);
   }
 
-  InverseRunArrays commands(const py::object& reference_object) const {
+  InverseRunArrays commands(const ArrayLike& reference_object) const {
     const Eigen::VectorXd reference = to_vector(reference_object, "reference");
     bonl::control::InverseRun<double> run;
     {
@@ -107,11 +114,14 @@ class AnyInverse {
   double command_max() const {
     return std::visit([](const auto& inverse) { return inverse.command_max(); }, m_inverse);
   }
-  Eigen::VectorXd stable_factor() const {
-    return std::visit([](const auto& inverse) { return inverse.linear_inverse().stable_factor(); }, m_inverse);
+  Vector stable_factor() const {
+    return std::visit([](const auto& inverse) { return to_numpy(Eigen::VectorXd(inverse.linear_inverse().stable_factor())); },
+                      m_inverse);
   }
-  Eigen::VectorXd unstable_factor() const {
-    return std::visit([](const auto& inverse) { return inverse.linear_inverse().unstable_factor(); }, m_inverse);
+  Vector unstable_factor() const {
+    return std::visit(
+        [](const auto& inverse) { return to_numpy(Eigen::VectorXd(inverse.linear_inverse().unstable_factor())); },
+        m_inverse);
   }
 
  private:
@@ -150,11 +160,11 @@ class AnyAdaptive {
   AnyAdaptive(const Model& model, const bonl::control::AdaptiveInverseOptions& options)
       : m_adaptive(std::in_place_type<AdaptiveOf<Model>>, model, options) {}
 
-  bonl::control::InverseStep<double> step(const py::object& reference) {
+  bonl::control::InverseStep<double> step(const Reference& reference) {
     return std::visit(
         [&](auto& adaptive) { return step_on(adaptive, adaptive.inverse().window_size(), reference); }, m_adaptive);
   }
-  bonl::UpdateStatus update(const py::object& u, const py::object& y) {
+  bonl::UpdateStatus update(const Real& u, const Real& y) {
     const double u_value = to_scalar(u, "u");
     const double y_value = to_scalar(y, "y");
     return std::visit([&](auto& adaptive) { return adaptive.update(u_value, y_value); }, m_adaptive);
@@ -162,23 +172,14 @@ class AnyAdaptive {
   bool rederive() {
     return std::visit([](auto& adaptive) { return adaptive.rederive(); }, m_adaptive);
   }
-  py::object model() const {
-    return std::visit([](const auto& adaptive) { return py::cast(adaptive.model()); }, m_adaptive);
+  InvertibleModel model() const {
+    return std::visit([](const auto& adaptive) { return InvertibleModel(adaptive.model()); }, m_adaptive);
   }
-  py::object estimate() const {
-    return std::visit([](const auto& adaptive) { return py::cast(adaptive.estimator().model()); }, m_adaptive);
+  InvertibleModel estimate() const {
+    return std::visit([](const auto& adaptive) { return InvertibleModel(adaptive.estimator().model()); }, m_adaptive);
   }
-  py::dict health() const {
-    const bonl::control::AdaptiveInverseHealth h =
-        std::visit([](const auto& adaptive) { return adaptive.health(); }, m_adaptive);
-    py::dict d;
-    d["rederivations"] = h.rederivations;
-    d["refused_diverged"] = h.refused_diverged;
-    d["refused_covariance"] = h.refused_covariance;
-    d["refused_unstable"] = h.refused_unstable;
-    d["refused_no_inverse"] = h.refused_no_inverse;
-    d["last_refusal"] = h.last_refusal;
-    return d;
+  bonl::control::AdaptiveInverseHealth health() const {
+    return std::visit([](const auto& adaptive) { return adaptive.health(); }, m_adaptive);
   }
 
  private:
@@ -189,7 +190,7 @@ template <class Model>
 void def_adaptive_init(py::class_<AnyAdaptive>& cls) {
   cls.def(py::init([](const Model& model, std::optional<double> command_min, std::optional<double> command_max,
                       double backlash_band, double backlash_band_per_c, const std::string& method,
-                      const py::object& forgetting, std::optional<double> p0, Eigen::Index rederive_every,
+                      const Forgetting& forgetting, std::optional<double> p0, Eigen::Index rederive_every,
                       double max_covariance_trace, double stability_radius) {
             bonl::control::AdaptiveInverseOptions options;
             options.inverse = inverse_options(command_min, command_max, backlash_band, backlash_band_per_c);
@@ -323,7 +324,25 @@ non-finite reference or one of preview samples or fewer. Returns InverseRun (com
       .def_property_readonly("unstable_factor", &AnyInverse::unstable_factor,
                              "numpy.ndarray: B_u, the factor with the others, leading 1 ([1.0] when minimum phase)");
 
-  py::class_<AnyAdaptive> adaptive(control, "AdaptiveInverse", R"doc(The online estimator and the inverse together.
+  using Health = bonl::control::AdaptiveInverseHealth;
+  py::class_<Health>(control, "AdaptiveInverseHealth", "What an AdaptiveInverse's guard did.")
+      .def_readonly("rederivations", &Health::rederivations, "int: new inverses put in use")
+      .def_readonly("refused_diverged", &Health::refused_diverged, "int: estimates refused: the estimator had diverged")
+      .def_readonly("refused_covariance", &Health::refused_covariance, "int: estimates refused: trace(P) above the limit")
+      .def_readonly("refused_unstable", &Health::refused_unstable,
+                    "int: estimates refused: a pole at or beyond stability_radius")
+      .def_readonly("refused_no_inverse", &Health::refused_no_inverse,
+                    "int: estimates refused: InverseModel refused the estimate")
+      .def_readonly("last_refusal", &Health::last_refusal, "str: why the last refused estimate was refused ('' if none)")
+      .def("__repr__", [](const Health& h) {
+        return "AdaptiveInverseHealth(rederivations=" + std::to_string(h.rederivations) +
+               ", refused_diverged=" + std::to_string(h.refused_diverged) +
+               ", refused_covariance=" + std::to_string(h.refused_covariance) +
+               ", refused_unstable=" + std::to_string(h.refused_unstable) +
+               ", refused_no_inverse=" + std::to_string(h.refused_no_inverse) + ")";
+      });
+
+  static const std::string adaptive_doc = R"doc(The online estimator and the inverse together.
 
 ``update(u, y)`` feeds the command applied (feedback included) and the output measured to the
 estimator, warm-started from ``model``; every ``rederive_every`` samples the inverse is derived
@@ -337,13 +356,13 @@ model : one of bonl.MODELS
     The identified model to start from.
 command_min, command_max, backlash_band, backlash_band_per_c
     As for InverseModel.
-method, forgetting, p0
-    As for Estimator (default: output_error, the method's forgetting and p0).
-rederive_every : int, default 100
+)doc" + option_docs({"method", "forgetting", "p0"}) +
+                                          R"doc(rederive_every : int, default 100
 max_covariance_trace : float, default 10
 stability_radius : float, default 0.999
 
-Raises ValueError for bad options or a model without an inverse.)doc");
+Raises ValueError for bad options or a model without an inverse.)doc";
+  py::class_<AnyAdaptive> adaptive(control, "AdaptiveInverse", adaptive_doc.c_str());
   def_inits(adaptive, [](auto& cls, auto tag) { def_adaptive_init<typename decltype(tag)::type>(cls); });
   adaptive
       .def("step", &AnyAdaptive::step, py::arg("reference"),
@@ -356,8 +375,8 @@ Raises ValueError for bad options or a model without an inverse.)doc");
       .def_property_readonly("model", &AnyAdaptive::model, "The model the inverse in use was derived from.")
       .def_property_readonly("estimate", &AnyAdaptive::estimate, "The estimator's current estimate, as a model.")
       .def_property_readonly("health", &AnyAdaptive::health,
-                             "dict: rederivations, the refusals by reason (refused_diverged, refused_covariance,\n"
-                             "refused_unstable, refused_no_inverse) and last_refusal (why, '' if none).");
+                             "AdaptiveInverseHealth: rederivations, the refusals by reason (refused_diverged,\n"
+                             "refused_covariance, refused_unstable, refused_no_inverse) and last_refusal (why, '' if none).");
 }
 
 }  // namespace bonl_python

@@ -9,6 +9,7 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/typing.h>
 
 #include <Eigen/Core>
 #include <bonl/detail/validate.hpp>
@@ -18,6 +19,38 @@
 
 namespace bonl_python {
 namespace py = pybind11;
+
+/// A 1-D float64 array, as functions return arrays of samples (the stubs show
+/// numpy.typing.NDArray[numpy.float64], not Eigen's 2-D "[m, 1]").
+using Vector = py::array_t<double>;
+
+inline bool accepts_any(PyObject*) { return true; }
+
+/// A Python object taken as it is, to be checked by one of the conversions below (whose messages name
+/// the argument), and shown in signatures and stubs as Hint::text: what the argument accepts.
+template <class Hint>
+class Typed : public py::object {
+ public:
+  PYBIND11_OBJECT_DEFAULT(Typed, py::object, accepts_any)
+};
+
+/// `using Name = Typed<...>` shown as `hint`, a string literal.
+#define BONL_PYTHON_TYPED(Name, hint)             \
+  struct Name##Hint {                             \
+    static constexpr const char text[] = hint;    \
+  };                                              \
+  using Name = ::bonl_python::Typed<Name##Hint>
+
+/// A 1-D array of real numbers: to_vector / to_float64_array check it.
+BONL_PYTHON_TYPED(ArrayLike, "numpy.typing.ArrayLike");
+/// A real number: to_scalar checks it.
+BONL_PYTHON_TYPED(Real, "float");
+/// Two real numbers, (u0, y0) or (min, max).
+BONL_PYTHON_TYPED(RealPair, "tuple[float, float]");
+/// A record (u, y), or the measured past (u_past, y_past).
+BONL_PYTHON_TYPED(Record, "tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]");
+/// Several records [(u1, y1), (u2, y2), ...].
+BONL_PYTHON_TYPED(RecordList, "collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]]");
 
 /// The name of an object's type, for messages.
 inline std::string type_name(const py::handle& object) {
@@ -109,8 +142,15 @@ inline double to_scalar(const py::handle& object, const std::string& name) {
 }
 
 
-/// Eigen vector -> numpy float64 array without copying the data (the array owns the moved vector).
-inline py::array to_numpy(Eigen::VectorXd&& vector) { return py::cast(std::move(vector)); }
-inline py::array to_numpy(const Eigen::VectorXd& vector) { return py::cast(Eigen::VectorXd(vector)); }
+/// Eigen vector -> 1-D numpy float64 array without copying the data (the array owns the moved vector).
+inline Vector to_numpy(Eigen::VectorXd&& vector) { return Vector(py::cast(std::move(vector))); }
+inline Vector to_numpy(const Eigen::VectorXd& vector) { return to_numpy(Eigen::VectorXd(vector)); }
 
 }  // namespace bonl_python
+
+namespace pybind11::detail {
+template <class Hint>
+struct handle_type_name<bonl_python::Typed<Hint>> {
+  static constexpr auto name = const_name(Hint::text);
+};
+}  // namespace pybind11::detail

@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "estimator_options.hpp"
+#include "option_docs.hpp"
 
 namespace bonl_python {
 namespace {
@@ -92,44 +93,21 @@ bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
 
 namespace {
 
-const char* kIdentifyDoc = R"doc(Identify a model's parameters from an input/output record, or from several.
+const char* kIdentifyHead = R"doc(Identify a model's parameters from an input/output record, or from several.
 
 Parameters
 ----------
 model : one of bonl.MODELS
     Gives the structure (orders); its parameter values are not used.
 u, y : array_like, shape (n,)
-    Input and measured output. For several records (experiments of the same system), give them as
-    a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-    Each record is simulated from rest; no history is carried across records.
-passes : int, default 1
-    Passes of the recursive estimator over the record(s) (the paper's step 5).
-method : {'output_error', 'equation_error', 'paper'}
-    The recursive stage. 'output_error' (default): recursive prediction-error method on the
-    free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-    least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-    recursive estimate is then refined by minimising the free-run simulation error.
-forgetting : float, tuple or 'adaptive', optional
-    Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
-    adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
-    for the others.
-p0 : float, optional
-    P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-c0 : float, default 0.01
-    Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
-refine_iterations : int, default 100
-    Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-    The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
-normalise : bool, default True
-    Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-    the model in the data's units, so that the settings mean the same whatever the units. The recursive
-    estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-    estimator's, in the data's units.
-operating_point : {None, 'mean', 'initial'}
-    The identified model's operating point (u0, y0): None (default) keeps the structure's
-    (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
-    first sample of the first record (the record starts at rest there).
+    Input and measured output of one record.
+records : sequence of (u, y) pairs, optional
+    Several records (experiments of the same system), by keyword, in place of u and y:
+    ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+    is carried across records.
+)doc";
 
+const char* kIdentifyTail = R"doc(
 Returns
 -------
 model
@@ -149,6 +127,15 @@ ValueError
 bonl.NumericalError
     The estimator broke down numerically.)doc";
 
+/// identify's docstring: its options' entries from option_docs.hpp's table.
+const char* identify_doc() {
+  static const std::string doc =
+      std::string(kIdentifyHead) +
+      option_docs({"passes", "method", "forgetting", "p0", "c0", "refine_iterations", "normalise", "operating_point"}) +
+      kIdentifyTail;
+  return doc.c_str();
+}
+
 /// identify(..., operating_point=None | 'mean' | 'initial').
 bonl::OperatingPointSource operating_point_source(const py::object& value) {
   if (value.is_none()) return bonl::OperatingPointSource::Structure;
@@ -166,20 +153,23 @@ template <class Model>
 void def_identify(py::module_& m) {
   def_with_identify_arguments(
       m, "identify",
-      [](const Model& model, const py::object& u, const py::object& y, int passes, const std::string& method,
-         const py::object& forgetting, std::optional<double> p0, double c0, int refine_iterations, bool normalise,
-         const py::object& operating_point) {
+      [](const Model& model, const py::typing::Optional<ArrayLike>& u, const py::typing::Optional<ArrayLike>& y,
+         const py::typing::Optional<RecordList>& records, int passes, const std::string& method,
+         const Forgetting& forgetting, std::optional<double> p0, double c0, int refine_iterations, bool normalise,
+         const OperatingPointSource& operating_point) {
         const bonl::IdentifyOptions options =
             identify_options({passes, method, forgetting, p0, c0, refine_iterations, normalise, operating_point});
         std::vector<Eigen::VectorXd> inputs, outputs;
-        read_records(u, y, "identify(model, u, y) for one record, identify(model, [(u1, y1), (u2, y2), ...]) for several",
+        read_records(u, y, records,
+                     "identify(model, u, y) for one record, identify(model, records=[(u1, y1), (u2, y2), ...]) for "
+                     "several",
                      inputs, outputs);
-        if (!y.is_none()) bonl::detail::require_record(inputs[0], outputs[0], model.num_params());
-        bonl::Records<double> records;
-        for (std::size_t i = 0; i < inputs.size(); ++i) records.emplace_back(inputs[i], outputs[i]);
+        if (records.is_none()) bonl::detail::require_record(inputs[0], outputs[0], model.num_params());
+        bonl::Records<double> views;
+        for (std::size_t i = 0; i < inputs.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
         Model identified = [&] {
           py::gil_scoped_release release;
-          return bonl::identify(model, records, options);
+          return bonl::identify(model, views, options);
         }();
         const double radius = bonl::pole_radius(identified);
         if (radius >= 0.999) {
@@ -190,15 +180,24 @@ void def_identify(py::module_& m) {
         }
         return identified;
       },
-      py::arg("model"), py::arg("u"), py::arg("y") = py::none(), py::kw_only(), kIdentifyDoc);
+      py::arg("model"), py::arg("u") = py::none(), py::arg("y") = py::none(), py::kw_only(),
+      py::arg("records") = py::none(), identify_doc());
 }
 
-/// What Estimator.update returns for a record: one status code per sample and, where asked, the
+/// What Estimator.update_record returns: one status code per sample and, where asked, the
 /// prediction and theta after each sample.
 struct UpdateResults {
   py::array_t<std::int8_t> status;
-  py::object prediction = py::none();
-  py::object theta = py::none();
+  std::optional<Vector> prediction;
+  std::optional<py::array_t<double>> theta;
+};
+
+/// What Estimator.trajectory returns: bonl::EstimatorTrajectory as numpy arrays, one row per update.
+struct EstimatorTrajectory {
+  py::array_t<std::int64_t> sample;
+  py::array_t<double> theta;
+  Vector internal;
+  std::vector<bonl::UpdateStatus> status;
 };
 
 /// One Python class over the estimators of every model of bonl::Models.
@@ -215,18 +214,14 @@ class AnyEstimator {
   }
   /// A record, the GIL released while it runs: bonl::Estimator::update over the arrays, which equals
   /// the per-sample loop bit for bit.
-  /// (Two 0-d arrays are one sample, as the per-sample overload took them before arrays were accepted.)
-  py::object update_record(const py::array& u_object, const py::array& y_object, bool want_prediction,
-                           bool want_theta) {
-    if (u_object.ndim() == 0 && y_object.ndim() == 0) {
-      return py::cast(update(to_scalar(u_object, "u"), to_scalar(y_object, "y")));
-    }
+  UpdateResults update_record(const ArrayLike& u_object, const ArrayLike& y_object, bool want_prediction,
+                              bool want_theta) {
     const auto u = to_float64_array(u_object, "u");
     const auto y = to_float64_array(y_object, "y");
     // Unequal lengths: bonl::Estimator::update refuses them before the first sample.
     const py::ssize_t samples = std::min(u.shape(0), y.shape(0));
     const py::ssize_t params = theta().size();
-    UpdateResults results{py::array_t<std::int8_t>(samples)};
+    UpdateResults results{py::array_t<std::int8_t>(samples), std::nullopt, std::nullopt};
     py::array_t<double> prediction(want_prediction ? samples : 0);
     py::array_t<double> theta_rows(std::vector<py::ssize_t>{want_theta ? samples : 0, params});
     std::int8_t* status_out = results.status.mutable_data();
@@ -248,16 +243,16 @@ class AnyEstimator {
     }
     if (want_prediction) results.prediction = std::move(prediction);
     if (want_theta) results.theta = std::move(theta_rows);
-    return py::cast(std::move(results));
+    return results;
   }
-  Eigen::VectorXd theta() const {
-    return std::visit([](const auto& estimator) { return Eigen::VectorXd(estimator.theta()); }, m_estimator);
+  Vector theta() const {
+    return std::visit([](const auto& estimator) { return to_numpy(Eigen::VectorXd(estimator.theta())); }, m_estimator);
   }
   Eigen::MatrixXd covariance() const {
     return std::visit([](const auto& estimator) { return Eigen::MatrixXd(estimator.covariance()); }, m_estimator);
   }
-  py::object model() const {
-    return std::visit([](const auto& estimator) { return py::cast(estimator.model()); }, m_estimator);
+  AnyModel model() const {
+    return std::visit([](const auto& estimator) { return AnyModel(estimator.model()); }, m_estimator);
   }
   Eigen::Index samples() const {
     return std::visit([](const auto& estimator) { return estimator.samples(); }, m_estimator);
@@ -265,11 +260,14 @@ class AnyEstimator {
   bool diverged() const {
     return std::visit([](const auto& estimator) { return estimator.diverged(); }, m_estimator);
   }
-  void reset() {
-    std::visit([](auto& estimator) { estimator.reset(); }, m_estimator);
-  }
-  void reset_to(const Eigen::VectorXd& theta) {
-    std::visit([&](auto& estimator) { estimator.reset(theta); }, m_estimator);
+  /// bonl::Estimator::reset(), or reset(theta0) for theta0 not None.
+  void reset(const py::typing::Optional<ArrayLike>& theta0) {
+    if (theta0.is_none()) {
+      std::visit([](auto& estimator) { estimator.reset(); }, m_estimator);
+      return;
+    }
+    const Eigen::VectorXd start = to_vector(theta0, "theta0");
+    std::visit([&](auto& estimator) { estimator.reset(start); }, m_estimator);
   }
   void start_pass() {
     std::visit([](auto& estimator) { estimator.start_pass(); }, m_estimator);
@@ -295,16 +293,15 @@ class AnyEstimator {
   bool recording() const {
     return std::visit([](const auto& estimator) { return estimator.recording(); }, m_estimator);
   }
-  /// {"sample": int64 (k,), "theta": (k, n), "internal": (k,), "status": list of UpdateStatus}
-  py::dict trajectory() const {
+  EstimatorTrajectory trajectory() const {
     const auto recorded = std::visit([](const auto& estimator) { return estimator.trajectory(); }, m_estimator);
     static_assert(sizeof(Eigen::Index) == sizeof(std::int64_t));
-    py::dict out;
-    out["sample"] = py::array_t<std::int64_t>(static_cast<py::ssize_t>(recorded.sample.size()),
-                                               reinterpret_cast<const std::int64_t*>(recorded.sample.data()));
-    out["theta"] = Eigen::MatrixXd(recorded.theta.transpose());
-    out["internal"] = py::array_t<double>(static_cast<py::ssize_t>(recorded.internal.size()), recorded.internal.data());
-    out["status"] = recorded.status;
+    EstimatorTrajectory out;
+    out.sample = py::array_t<std::int64_t>(static_cast<py::ssize_t>(recorded.sample.size()),
+                                           reinterpret_cast<const std::int64_t*>(recorded.sample.data()));
+    out.theta = py::cast(Eigen::MatrixXd(recorded.theta.transpose()));
+    out.internal = Vector(static_cast<py::ssize_t>(recorded.internal.size()), recorded.internal.data());
+    out.status = recorded.status;
     return out;
   }
 
@@ -314,7 +311,7 @@ class AnyEstimator {
 
 template <class Model>
 void def_estimator_init(py::class_<AnyEstimator>& cls) {
-  cls.def(py::init([](const Model& model, const std::string& method, const py::object& forgetting,
+  cls.def(py::init([](const Model& model, const std::string& method, const Forgetting& forgetting,
                       std::optional<double> p0, double c0, std::optional<double> trace_ceiling,
                       Eigen::Index recover_after, double stability_radius, Eigen::Index backlash_hold) {
             return AnyEstimator(model, estimator_options({method, forgetting, p0, c0, trace_ceiling, recover_after,
@@ -338,16 +335,21 @@ bonl::IdentifyOptions identify_options(const IdentifyArguments& arguments) {
   return options;
 }
 
-void read_records(const py::object& u, const py::object& y, const char* usage, std::vector<Eigen::VectorXd>& inputs,
-                  std::vector<Eigen::VectorXd>& outputs) {
-  if (!y.is_none()) {
+void read_records(const py::object& u, const py::object& y, const py::object& records, const char* usage,
+                  std::vector<Eigen::VectorXd>& inputs, std::vector<Eigen::VectorXd>& outputs) {
+  if (records.is_none()) {
+    bonl::detail::require(!u.is_none(), std::string("u and y, or records, must be given (") + usage + ")");
+    bonl::detail::require(!y.is_none(), std::string("y must be a 1-D array of real numbers, got None (") + usage + ")");
     inputs.push_back(to_vector(u, "u"));
     outputs.push_back(to_vector(y, "y"));
     return;
   }
-  bonl::detail::require(!py::isinstance<py::array>(u) && py::isinstance<py::sequence>(u) && !py::isinstance<py::str>(u),
-                        std::string("y must be a 1-D array of real numbers, got None (") + usage + ")");
-  const py::sequence list = u.cast<py::sequence>();
+  bonl::detail::require(u.is_none() && y.is_none(),
+                        std::string("give u and y, or records, not both (") + usage + ")");
+  bonl::detail::require(!py::isinstance<py::array>(records) && py::isinstance<py::sequence>(records) &&
+                            !py::isinstance<py::str>(records),
+                        "records must be a list of pairs (u, y), got " + type_name(records) + " (" + usage + ")");
+  const py::sequence list = records.cast<py::sequence>();
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string name = "records[" + std::to_string(i) + "]";
     const py::object item = list[i];
@@ -397,71 +399,73 @@ void bind_estimation(py::module_& m) {
 
   bonl::for_each_model(bonl::Models{}, [&m](auto tag) { def_identify<typename decltype(tag)::type>(m); });
 
-  py::class_<AnyEstimator> estimator(m, "Estimator", R"doc(Online recursive estimator for one model.
-
-Parameters
-----------
-model : one of bonl.MODELS
-    Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
-    c = 0 for output_error).
-method : {'output_error', 'equation_error', 'paper'}
-    As for identify; default 'output_error' (docs/explanation/algorithm.md).
-forgetting : float, tuple or 'adaptive', optional
-    As for identify; default the method's ('adaptive' for output_error, the paper's schedule for
-    the others).
-p0 : float, optional
-    P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-c0 : float, default 0.01
-trace_ceiling : float, optional
-    trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
-    would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
-    (the paper's algorithm exactly as written). Default: 100 for output_error, 1 for the others.
-recover_after : int, default 0
-    After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
-    0: never (check ``diverged`` and call ``recover()``).
-stability_radius : float, default 0.999
-    output_error: the linear block's poles are kept inside this radius (updates shortened).
-backlash_hold : int, default 200
-    output_error, P-H-W: c is held at 0 for this many samples from the start.
-)doc");
+  static const std::string estimator_doc =
+      "Online recursive estimator for one model.\n\nParameters\n----------\nmodel : one of bonl.MODELS\n"
+      "    Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,\n"
+      "    c = 0 for output_error).\n" +
+      option_docs({"method", "forgetting", "p0", "c0", "trace_ceiling", "recover_after", "stability_radius",
+                   "backlash_hold"});
+  py::class_<AnyEstimator> estimator(m, "Estimator", estimator_doc.c_str());
   bonl::for_each_model(bonl::Models{}, [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
-  py::class_<UpdateResults>(m, "UpdateResults", "What Estimator.update returns for arrays of samples.")
+  py::class_<UpdateResults>(m, "UpdateResults", "What Estimator.update_record returns for a record.")
       .def_readonly("status", &UpdateResults::status,
                     "numpy.ndarray of int8: each sample's UpdateStatus, as int(UpdateStatus.<name>)")
       .def_readonly("prediction", &UpdateResults::prediction,
                     "numpy.ndarray or None: last_prediction after each sample (when asked for)")
       .def_readonly("theta", &UpdateResults::theta,
                     "numpy.ndarray (samples, n) or None: theta after each sample (when asked for)");
+  py::class_<EstimatorTrajectory>(m, "EstimatorTrajectory",
+                                  "What Estimator.trajectory returns: the recorded updates, oldest first.")
+      .def_readonly("sample", &EstimatorTrajectory::sample,
+                    "numpy.ndarray of int64, shape (k,): each update's sample number since reset()")
+      .def_readonly("theta", &EstimatorTrajectory::theta, "numpy.ndarray, shape (k, n): the estimate after each update")
+      .def_readonly("internal", &EstimatorTrajectory::internal,
+                    "numpy.ndarray, shape (k,): the internal variable x(k) each update used (NaN for ARX)")
+      .def_readonly("status", &EstimatorTrajectory::status, "list of UpdateStatus: each update's status")
+      .def("__len__", [](const EstimatorTrajectory& t) { return t.status.size(); })
+      .def("__repr__", [](const EstimatorTrajectory& t) {
+        return "EstimatorTrajectory(" + std::to_string(t.status.size()) + " updates)";
+      });
   estimator
-      .def("update", &AnyEstimator::update_record, py::arg("u"), py::arg("y"), py::kw_only(),
-           py::arg("prediction") = false, py::arg("theta") = false)
-      .def("update", &AnyEstimator::update, py::arg("u"), py::arg("y"), R"doc(Process one sample, or a record.
+      .def("update", &AnyEstimator::update, py::arg("u"), py::arg("y"), R"doc(Process one sample.
 
 Parameters
 ----------
-u, y : float, or 1-D numpy arrays of equal length
-    Input and measured output: one sample, or a record processed in one call with the GIL released
-    (the same, bit for bit, as calling update on each sample in turn).
-prediction, theta : bool, default False
-    Arrays only: also return last_prediction, and theta, after every sample.
+u, y : float
+    Input and measured output.
 
 Returns
 -------
-UpdateStatus, for one sample; UpdateResults for arrays (``status``, an int8 array of
-``int(UpdateStatus.<name>)`` codes, and ``prediction``, ``theta`` when asked for).
+UpdateStatus
     A non-finite u or y is rejected (rejected_non_finite) and leaves the state untouched.
     An Estimator must not be used from two threads at once.)doc")
+      .def("update_record", &AnyEstimator::update_record, py::arg("u"), py::arg("y"), py::kw_only(),
+           py::arg("prediction") = false, py::arg("theta") = false, R"doc(Process a record in one call.
+
+C++'s ``estimator.update(u, y, on_sample)``, the GIL released: the same, bit for bit, as calling
+update on each sample in turn.
+
+Parameters
+----------
+u, y : array_like, shape (n,)
+    Input and measured output, of equal length.
+prediction, theta : bool, default False
+    Also return last_prediction, and theta, after every sample.
+
+Returns
+-------
+UpdateResults
+    ``status``, an int8 array of ``int(UpdateStatus.<name>)`` codes (a non-finite sample is
+    rejected_non_finite and leaves the state untouched), and ``prediction``, ``theta`` when asked for.)doc")
       .def_property_readonly("theta", &AnyEstimator::theta, "numpy.ndarray: current estimate (eq. 19 order).")
       .def_property_readonly("covariance", &AnyEstimator::covariance, "numpy.ndarray: current P (symmetric).")
       .def_property_readonly("model", &AnyEstimator::model, "The current estimate as a model.")
       .def_property_readonly("samples", &AnyEstimator::samples, "int: samples since the last pass started.")
       .def_property_readonly("diverged", &AnyEstimator::diverged, "bool: an update was refused for numerical reasons.")
-      .def("reset", &AnyEstimator::reset, "Back to the initial estimate, P = p0 I, internal variables at rest.")
-      .def(
-          "reset_to",
-          [](AnyEstimator& self, const py::object& theta) { self.reset_to(to_vector(theta, "theta")); },
-          py::arg("theta"), "Restart from the estimate theta (a warm start: the model's parameter vector, e.g. an identified\n"
-          "model's theta), P = p0 I, internal variables at rest. ValueError for theta of another length.")
+      .def("reset", &AnyEstimator::reset, py::arg("theta0") = py::none(),
+           "Back to the initial estimate, P = p0 I, internal variables at rest; or, given theta0, restart from\n"
+           "the estimate theta0 (a warm start: the model's parameter vector, e.g. an identified model's theta).\n"
+           "ValueError for theta0 of another length.")
       .def("start_pass", &AnyEstimator::start_pass,
            "A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.")
       .def_property_readonly("last_prediction", &AnyEstimator::last_prediction,
@@ -482,7 +486,7 @@ UpdateStatus, for one sample; UpdateResults for arrays (``status``, an int8 arra
 
 Returns
 -------
-dict
+EstimatorTrajectory
     ``sample``: int64 array (k,), sample number since reset(); ``theta``: array (k, n), the estimate
     after each update; ``internal``: array (k,), the internal variable x(k) the update used (NaN for
     ARX); ``status``: list of UpdateStatus.)doc");

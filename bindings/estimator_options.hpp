@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "conversions.hpp"
+
 namespace bonl_python {
 namespace py = pybind11;
 
@@ -56,9 +58,16 @@ void def_with_identify_arguments(Scope& scope, const char* name, Func&& f, const
             py::arg("refine_iterations") = 100, py::arg("normalise") = true, py::arg("operating_point") = py::none());
 }
 
-/// The records of identify(model, u, y) and select(candidates, u, y): (u, y) for one record, or with y
-/// None, u a list of (u, y) pairs, each checked by its index; `usage` shows both forms in the messages.
-void read_records(const py::object& u, const py::object& y, const char* usage, std::vector<Eigen::VectorXd>& inputs,
-                  std::vector<Eigen::VectorXd>& outputs);
+/// The records of identify and select: (u, y) for one record, or records=[(u1, y1), ...] for several
+/// (u and y None), each checked by its index; `usage` shows both forms in the messages.
+void read_records(const py::object& u, const py::object& y, const py::object& records, const char* usage,
+                  std::vector<Eigen::VectorXd>& inputs, std::vector<Eigen::VectorXd>& outputs);
+
+// --- How the stubs show the options taken as Python objects (conversions.hpp's Typed) ---
+/// forgetting=: None, a number, (initial, initial_samples, final) or 'adaptive'.
+BONL_PYTHON_TYPED(Forgetting, "float | tuple[float, int, float] | str | None");
+/// identify's operating_point=: None, 'mean' or 'initial'.
+BONL_PYTHON_TYPED(OperatingPointSource, "str | None");
+// --- end of the stubs' types ---
 
 }  // namespace bonl_python

@@ -86,7 +86,7 @@ void bind_excitation(py::module_& sub) {
           "V(t).\n\nParameters\n----------\nt : float\n    Time [s].\n\nReturns\n-------\nfloat\n    Command [V].")
       .def(
           "sample",
-          [](const PyCommand& c, const py::object& t) {
+          [](const PyCommand& c, const ArrayLike& t) {
             const Eigen::VectorXd times = to_vector(t, "t");
             bonl::detail::require_finite(times, "t");
             Eigen::VectorXd values(times.size());
@@ -178,7 +178,7 @@ void bind_excitation(py::module_& sub) {
       "Returns\n-------\nCommand");
   ex.def(
       "sampled",
-      [](const py::object& values, double ts, double t0) {
+      [](const ArrayLike& values, double ts, double t0) {
         const Eigen::VectorXd v = to_vector(values, "values");
         std::ostringstream d;
         d << "sampled(" << v.size() << " values, ts=" << ts << ", t0=" << t0 << ")";

@@ -9,6 +9,7 @@
 #include <bonl/models.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,16 +35,16 @@ constexpr bool has_python_class(bonl::ModelList<Bound...>) {
 /// The identified model as its Python class: the run-time-order model of bonl::Models with the same
 /// name, with the same orders and parameters; None when they are not finite.
 template <class Model>
-py::object python_model(const Model& model) {
+std::optional<AnyModel> python_model(const Model& model) {
   static_assert(has_python_class<Model>(bonl::Models{}), "every model of PaperModels needs its class in bonl::Models");
-  py::object out = py::none();
+  std::optional<AnyModel> out;
   bonl::for_each_model(bonl::Models{}, [&](auto tag) {
     using Bound = typename decltype(tag)::type;
     if constexpr (same_name(Bound::kName, Model::kName)) {
       if (model.theta().allFinite()) {
         Bound bound = bonl::make_model<Bound>(model.orders());
         bound.set_theta(Eigen::VectorXd(model.theta()));
-        out = py::cast(std::move(bound));
+        out = AnyModel(std::move(bound));
       }
     }
   });
@@ -54,17 +55,17 @@ py::object python_model(const Model& model) {
 struct PyModelResult {
   std::string name;
   std::string label;
-  py::object model;
-  py::object online_model;
+  std::optional<AnyModel> model;
+  std::optional<AnyModel> online_model;
   experiment::ModelScores scores;
   std::vector<std::pair<std::string, double>> table;
-  py::dict params;
+  py::typing::Dict<py::str, py::typing::Union<py::float_, py::typing::List<py::float_>>> params;
 };
 
 template <class Model>
 PyModelResult python_result(const experiment::ModelResult<Model>& r) {
   PyModelResult out{r.kName, experiment::paper_label(r.kName), python_model(r.model), python_model(r.online_model),
-                    r, experiment::labelled_parameters(r.model), py::dict()};
+                    r, experiment::labelled_parameters(r.model), {}};
   for (std::size_t i = 0; i < Model::kDescription.parameters.size(); ++i) {
     const bonl::ParameterDescription& parameter = Model::kDescription.parameters[i];
     const Eigen::VectorXd value = r.model.parameter(i);
@@ -78,9 +79,9 @@ PyModelResult python_result(const experiment::ModelResult<Model>& r) {
 }
 
 /// name -> f(model result), in PaperModels' order.
-template <class F>
-py::dict by_model(const experiment::MethodResult& m, F&& f) {
-  py::dict d;
+template <class Value, class F>
+py::typing::Dict<py::str, Value> by_model(const experiment::MethodResult& m, F&& f) {
+  py::typing::Dict<py::str, Value> d;
   m.for_each([&](const auto& r) { d[r.kName] = f(r); });
   return d;
 }
@@ -156,19 +157,37 @@ void bind_method_result(py::module_& sub) {
       .def_property_readonly("method", [](const MethodResult& m) { return bonl::to_string(m.method); },
                              "str: 'output_error' or 'paper'.")
       .def_property_readonly(
-          "models", [](const MethodResult& m) { return by_model(m, [](const auto& r) { return python_result(r); }); },
+          "models",
+          [](const MethodResult& m) { return by_model<PyModelResult>(m, [](const auto& r) { return python_result(r); }); },
           "dict[str, ModelResult]: by model name, in the order of the paper's equations (ARX first).")
       .def_property_readonly(
-          "mse", [](const MethodResult& m) { return by_model(m, [](const auto& r) { return r.mse; }); },
+          "mse", [](const MethodResult& m) { return by_model<py::float_>(m, [](const auto& r) { return r.mse; }); },
           "dict[str, float]: validation MSE by model name [(rad/s)^2].")
       .def_property_readonly(
-          "online_mse", [](const MethodResult& m) { return by_model(m, [](const auto& r) { return r.online_mse; }); },
+          "online_mse",
+          [](const MethodResult& m) { return by_model<py::float_>(m, [](const auto& r) { return r.online_mse; }); },
           "dict[str, float]: the online estimates' validation MSE by model name [(rad/s)^2].")
       .def("__repr__", [](const MethodResult& m) { return std::string("MethodResult(") + bonl::to_string(m.method) + ")"; });
 }
 
 void bind_result(py::module_& sub) {
   using experiment::PaperExperimentResult;
+  using experiment::Timings;
+  py::class_<Timings>(sub, "Timings", "The wall time of each stage of the paper's experiment [s].")
+      .def_readonly("plant", &Timings::plant, "float: simulation and processing of the two records [s].")
+      .def_readonly("identification", &Timings::identification,
+                    "float: identification and validation, both methods, identify() and online [s].")
+      .def_readonly("robustness", &Timings::robustness, "float: the robustness check (0 when it was not run) [s].")
+      .def(
+          "to_dict",
+          [](const Timings& t) {
+            py::typing::Dict<py::str, py::float_> d;
+            d["plant"] = t.plant;
+            d["identification"] = t.identification;
+            d["robustness"] = t.robustness;
+            return d;
+          },
+          "Every stage by name.\n\nReturns\n-------\ndict[str, float]");
   py::class_<PaperExperimentResult>(
       sub, "PaperExperimentResult",
       "Everything the paper's experiment gives (run_paper_experiment): the plant, the two records, both\n"
@@ -185,7 +204,7 @@ void bind_result(py::module_& sub) {
           "methods",
           [](const py::object& self) {
             const auto& r = self.cast<const PaperExperimentResult&>();
-            py::dict d;
+            py::typing::Dict<py::str, experiment::MethodResult> d;
             for (const experiment::MethodResult& m : r.methods) {
               d[bonl::to_string(m.method)] = py::cast(&m, py::return_value_policy::reference_internal, self);
             }
@@ -200,22 +219,14 @@ void bind_result(py::module_& sub) {
           [](const PaperExperimentResult& r) {
             py::list names;
             r.methods.front().for_each([&](const auto& m) { names.append(m.kName); });
-            return py::tuple(names);
+            return py::typing::Tuple<py::str, py::ellipsis>(names);
           },
           "tuple of str: the experiment's models, in the order of the paper's equations (ARX first).")
       .def_readonly("robustness_trajectories", &PaperExperimentResult::robustness_trajectories,
                     "int: trajectories of the robustness check (0 when it was not run).")
-      .def_property_readonly(
-          "seconds",
-          [](const PaperExperimentResult& r) {
-            py::dict d;
-            d["plant"] = r.seconds.plant;
-            d["identification"] = r.seconds.identification;
-            d["robustness"] = r.seconds.robustness;
-            return d;
-          },
-          "dict[str, float]: wall time of each stage [s]: 'plant' (records), 'identification' (both methods,\n"
-          "identify() and online), 'robustness'.")
+      .def_readonly("seconds", &PaperExperimentResult::seconds,
+                    "Timings: wall time of each stage [s]: plant (records), identification (both methods,\n"
+                    "identify() and online), robustness.")
       .def("__repr__", [](const PaperExperimentResult& r) {
         return "PaperExperimentResult(" + std::to_string(r.methods.size()) + " methods, " +
                std::to_string(r.robustness_trajectories) + " robustness trajectories)";
@@ -271,7 +282,7 @@ void bind_tracking(py::module_& sub) {
       .def_property_readonly(
           "tracking_rms",
           [](const experiment::TrackingResult& r) {
-            py::dict d;
+            py::typing::Dict<py::str, py::float_> d;
             for (const auto& run : r.runs)
               if (!run.plant_changes) d[py::str(run.controller)] = run.rms;
             return d;
@@ -280,7 +291,8 @@ void bind_tracking(py::module_& sub) {
 
   sub.def(
       "run_tracking_experiment",
-      [](const py::object& parameters, const std::string& method, std::uint64_t reference_seed, std::uint64_t noise_seed) {
+      [](const ParametersArgument& parameters, const std::string& method, std::uint64_t reference_seed,
+         std::uint64_t noise_seed) {
         const bonl::plant::Parameters p = parameters_argument(parameters);
         experiment::TrackingOptions options;
         options.method = bonl::method_from_string(method);
@@ -317,7 +329,7 @@ void bind_experiment(py::module_& m) {
 
   sub.def(
       "run_paper_experiment",
-      [](const py::object& parameters, bool robustness) {
+      [](const ParametersArgument& parameters, bool robustness) {
         const bonl::plant::Parameters p = parameters_argument(parameters);
         experiment::PaperExperimentOptions options;
         options.robustness = robustness;
@@ -335,7 +347,7 @@ void bind_experiment(py::module_& m) {
       "simulation; also the online estimates alone (recursive estimator, one pass, no refinement). The\n"
       "GIL is released during the computation.\n\n"
       "Parameters\n----------\nparameters : bonl.plant.Parameters, optional\n"
-      "    The plant; None: ``bonl.plant.default_parameters()``.\n"
+      "    The plant; None: ``bonl.plant.Parameters.excavator_20t()``.\n"
       "robustness : bool, optional\n"
       "    Also validate on the eight further trajectories of ``bonl_demo``'s robustness check.\n\n"
       "Returns\n-------\nPaperExperimentResult\n\n"
@@ -343,10 +355,10 @@ void bind_experiment(py::module_& m) {
 
   sub.def(
       "published_score",
-      [](const std::string& name) -> py::object {
+      [](const std::string& name) -> std::optional<std::pair<double, int>> {
         const auto score = experiment::published_score(name);
-        if (!score) return py::none();
-        return py::make_tuple(score->mse, score->proposed_lower_percent);
+        if (!score) return std::nullopt;
+        return std::make_pair(score->mse, score->proposed_lower_percent);
       },
       py::arg("name"),
       "The paper's Table 2 (the real excavator) for a model, for comparison.\n\n"
@@ -358,7 +370,7 @@ void bind_experiment(py::module_& m) {
 
   sub.def(
       "low_pass",
-      [](const py::object& x, double cutoff_hz, double ts) {
+      [](const ArrayLike& x, double cutoff_hz, double ts) {
         return to_numpy(experiment::low_pass(to_vector(x, "x"), cutoff_hz, ts));
       },
       py::arg("x"), py::arg("cutoff_hz"), py::arg("ts"),
@@ -368,7 +380,7 @@ void bind_experiment(py::module_& m) {
       "Raises\n------\nValueError\n    When ``x`` is not 1-D or not finite, or fc or ts is not > 0.");
   sub.def(
       "differentiate",
-      [](const py::object& x, double ts) { return to_numpy(experiment::differentiate(to_vector(x, "x"), ts)); },
+      [](const ArrayLike& x, double ts) { return to_numpy(experiment::differentiate(to_vector(x, "x"), ts)); },
       py::arg("x"), py::arg("ts"),
       "Numerical derivative: central differences, one-sided at both ends.\n\n"
       "Parameters\n----------\nx : array_like, 1-D\n    Finite samples, at least 2.\nts : float\n    Sample time [s].\n\n"
@@ -376,7 +388,7 @@ void bind_experiment(py::module_& m) {
       "Raises\n------\nValueError\n    When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.");
 
   sub.attr("__all__") = py::make_tuple("run_paper_experiment", "PaperExperimentResult", "MethodResult", "ModelResult",
-                                       "Record", "run_tracking_experiment", "TrackingResult", "TrackingRun",
+                                       "Record", "Timings", "run_tracking_experiment", "TrackingResult", "TrackingRun",
                                        "published_score", "low_pass", "differentiate");
   // `import bonl._bonl.experiment` works once sys.modules knows the submodule.
   py::module_::import("sys").attr("modules")[sub.attr("__name__")] = sub;

@@ -2,6 +2,8 @@
 
 #include <bonl/io/model_json.hpp>
 
+#include <pybind11/stl.h>
+
 #include <variant>
 
 #include "bindings.hpp"
@@ -11,9 +13,7 @@ namespace bonl_python {
 void bind_io(py::module_& m) {
   m.def(
       "load_model",
-      [](const std::string& text) {
-        return std::visit([](const auto& model) { return py::cast(model); }, bonl::io::load_model(text));
-      },
+      [](const std::string& text) -> AnyModel { return bonl::io::load_model(text); },
       py::arg("text"), R"doc(Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
 
 Parameters

@@ -10,7 +10,7 @@ namespace bonl_python {
 void bind_metrics(py::module_& m) {
   py::module_ metrics = m.def_submodule("metrics", "Error measures for simulated or predicted outputs.");
   const auto pair = [](double (*f)(const Eigen::VectorXd&, const Eigen::VectorXd&)) {
-    return [f](const py::object& y, const py::object& yhat) { return f(to_vector(y, "y"), to_vector(yhat, "yhat")); };
+    return [f](const ArrayLike& y, const ArrayLike& yhat) { return f(to_vector(y, "y"), to_vector(yhat, "yhat")); };
   };
   metrics.def(
       "mse", pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::mse(y, yhat); }),

@@ -98,36 +98,44 @@ template <class Model>
 void bind_common(py::class_<Model>& cls) {
   cls.def(
          "simulate",
-         [](const Model& model, const py::object& u, const py::object& initial) {
+         [](const Model& model, const ArrayLike& u, const py::typing::Optional<Record>& initial) {
            const Eigen::VectorXd input = to_vector(u, "u");
            const auto [u_past, y_past] = read_initial(initial);
            warn_if_extrapolating(model, input);
-           py::gil_scoped_release release;
-           if (u_past.size() == 0 && y_past.size() == 0) return Eigen::VectorXd(model.simulate(input));
-           return Eigen::VectorXd(model.simulate(input, u_past, y_past));
+           Eigen::VectorXd output;
+           {
+             py::gil_scoped_release release;
+             output = u_past.size() == 0 && y_past.size() == 0 ? Eigen::VectorXd(model.simulate(input))
+                                                               : Eigen::VectorXd(model.simulate(input, u_past, y_past));
+           }
+           return to_numpy(std::move(output));
          },
          py::arg("u"), py::arg("initial") = py::none(), kSimulateDoc)
       .def(
           "predict",
-          [](const Model& model, const py::object& u, const py::object& y, const py::object& initial) {
+          [](const Model& model, const ArrayLike& u, const ArrayLike& y, const py::typing::Optional<Record>& initial) {
             const Eigen::VectorXd input = to_vector(u, "u");
             const Eigen::VectorXd output = to_vector(y, "y");
             const auto [u_past, y_past] = read_initial(initial);
-            py::gil_scoped_release release;
-            return Eigen::VectorXd(model.predict(input, output, u_past, y_past));
+            Eigen::VectorXd prediction;
+            {
+              py::gil_scoped_release release;
+              prediction = model.predict(input, output, u_past, y_past);
+            }
+            return to_numpy(std::move(prediction));
           },
           py::arg("u"), py::arg("y"), py::arg("initial") = py::none(), kPredictDoc)
       .def_property(
-          "operating_point", [](const Model& model) { return py::make_tuple(model.u0(), model.y0()); },
-          [](Model& model, const py::object& point) {
+          "operating_point", [](const Model& model) { return std::make_pair(model.u0(), model.y0()); },
+          [](Model& model, const RealPair& point) {
             const auto [u0, y0] = read_pair(point, "operating_point", "u0", "y0");
             model.set_operating_point(u0, y0);
           },
           "tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. "
           "(0, 0) unless set. identify() keeps the structure's.")
       .def_property(
-          "input_range", [](const Model& model) { return py::make_tuple(model.input_min(), model.input_max()); },
-          [](Model& model, const py::object& range) {
+          "input_range", [](const Model& model) { return std::make_pair(model.input_min(), model.input_max()); },
+          [](Model& model, const RealPair& range) {
             const auto [min, max] = read_pair(range, "input_range", "min", "max");
             model.set_input_range(min, max);
           },
@@ -135,11 +143,11 @@ void bind_common(py::class_<Model>& cls) {
           "unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.")
       .def(
           "extrapolated_samples",
-          [](const Model& model, const py::object& u) { return model.extrapolated_samples(to_vector(u, "u")); },
+          [](const Model& model, const ArrayLike& u) { return model.extrapolated_samples(to_vector(u, "u")); },
           py::arg("u"), "int: how many samples of u lie outside input_range (0: no extrapolation).")
       .def_property(
-          "theta", [](const Model& model) { return Eigen::VectorXd(model.theta()); },
-          [](Model& model, const py::object& theta) { model.set_theta(to_vector(theta, "theta")); },
+          "theta", [](const Model& model) { return to_numpy(Eigen::VectorXd(model.theta())); },
+          [](Model& model, const ArrayLike& theta) { model.set_theta(to_vector(theta, "theta")); },
           "numpy.ndarray: the parameter vector in the order of eq. (19).")
       .def_property_readonly("num_params", &Model::num_params, "int: number of identified parameters.")
       .def_property_readonly(
@@ -195,8 +203,11 @@ Eigen::VectorXd parameter_from_python(const bonl::ParameterDescription& paramete
 
 template <std::size_t>
 using OrderArgument = Eigen::Index;
-template <std::size_t>
-using ParameterArgument = py::object;
+/// The constructor's keyword argument for parameter block P: a number or an array, or None.
+template <class Model, std::size_t P>
+using ParameterArgument =
+    py::typing::Optional<std::conditional_t<Model::kDescription.parameters[P].shape == bonl::ParameterShape::Number,
+                                            Real, ArrayLike>>;
 
 /// The constructor's argument for order O: required, or with its default (the integrators ni).
 template <class Model, std::size_t O>
@@ -213,7 +224,7 @@ auto order_argument() {
 template <class Model, std::size_t... O, std::size_t... P>
 void def_init(py::class_<Model>& cls, std::index_sequence<O...>, std::index_sequence<P...>) {
   constexpr auto& description = Model::kDescription;
-  cls.def(py::init([](OrderArgument<O>... orders, const ParameterArgument<P>&... values) {
+  cls.def(py::init([](OrderArgument<O>... orders, const ParameterArgument<Model, P>&... values) {
             Model model = bonl::make_model<Model>({orders...});
             const py::object* given[] = {&values...};
             for (std::size_t i = 0; i < sizeof...(P); ++i) {
@@ -247,7 +258,8 @@ void bind_model(py::module_& m) {
   // its minimum): what the benchmarks and the fixed-order variants use.
   cls.attr("PAPER_ORDERS") = py::tuple(py::cast(bonl::make_model_at<Model, bonl::PaperOrders>().orders()));
   cls.def_property_readonly(
-      "orders", [](const Model& model) { return py::tuple(py::cast(model.orders())); }, "tuple of int: the orders, as ORDERS names them.");
+      "orders", [](const Model& model) { return py::typing::Tuple<py::int_, py::ellipsis>(py::cast(model.orders())); },
+      "tuple of int: the orders, as ORDERS names them.");
   for (std::size_t i = 0; i < kOrders; ++i) {
     const bonl::OrderDescription& order = description.orders[i];
     cls.def_property_readonly(
@@ -256,19 +268,29 @@ void bind_model(py::module_& m) {
   }
   for (std::size_t i = 0; i < kParameters; ++i) {
     const bonl::ParameterDescription& parameter = description.parameters[i];
-    cls.def_property(
-        parameter.name, [i](const Model& model) { return parameter_to_python(description.parameters[i], model.parameter(i)); },
-        [i](Model& model, const py::object& value) {
-          model.set_parameter(i, parameter_from_python(description.parameters[i], value));
-        },
-        (std::string(parameter.shape == bonl::ParameterShape::Number ? "float: " : "numpy.ndarray: ") + parameter.meaning +
-         ".")
-            .c_str());
+    const std::string doc = std::string(parameter.shape == bonl::ParameterShape::Number ? "float: " : "numpy.ndarray: ") +
+                            parameter.meaning + ".";
+    // A number block is a float, an array block a 1-D array, in Python and in the stubs.
+    if (parameter.shape == bonl::ParameterShape::Number) {
+      cls.def_property(
+          parameter.name, [i](const Model& model) { return model.parameter(i)[0]; },
+          [i](Model& model, const Real& value) {
+            model.set_parameter(i, parameter_from_python(description.parameters[i], value));
+          },
+          doc.c_str());
+    } else {
+      cls.def_property(
+          parameter.name, [i](const Model& model) { return to_numpy(Eigen::VectorXd(model.parameter(i))); },
+          [i](Model& model, const ArrayLike& value) {
+            model.set_parameter(i, parameter_from_python(description.parameters[i], value));
+          },
+          doc.c_str());
+    }
   }
   cls.def_property_readonly(
          "params",
          [](const Model& model) {
-           py::dict params;
+           py::typing::Dict<py::str, py::typing::Union<py::float_, Vector>> params;
            for (std::size_t i = 0; i < kParameters; ++i) {
              params[description.parameters[i].name] = parameter_to_python(description.parameters[i], model.parameter(i));
            }

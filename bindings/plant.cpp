@@ -19,8 +19,8 @@ void bind_plant(py::module_& m) {
   bind_plant_simulate(sub);
   bind_plant_stepping(sub);
 
-  sub.attr("__all__") = py::make_tuple("Parameters", "default_parameters", "small_parameters", "Command", "excitation",
-                                       "simulate", "initial_state", "derivative", "SteppingPlant", "Measurement");
+  sub.attr("__all__") = py::make_tuple("Parameters", "Command", "excitation", "simulate", "Trajectory", "initial_state",
+                                       "derivative", "SteppingPlant", "Measurement");
 
   // Make `from bonl._bonl.plant import *` and `import bonl._bonl.plant.excitation` work: an
   // extension's submodules are attributes, not importable modules, until sys.modules knows them.

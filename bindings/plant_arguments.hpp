@@ -4,12 +4,15 @@
 // simulate (plant_simulate.cpp), SteppingPlant (plant_stepping.cpp) and the experiment (experiment.cpp).
 
 #include <pybind11/pybind11.h>
+#include <pybind11/typing.h>
 
 #include <bonl/plant/parameters.hpp>
 #include <bonl/plant/simulator.hpp>
 
 #include <cstdint>
 #include <string>
+
+#include "conversions.hpp"
 
 namespace bonl_python {
 namespace py = pybind11;
@@ -28,8 +31,21 @@ struct PyCommand {
 /// pair held between samples (excitation.sampled). TypeError for anything else.
 PyCommand command_argument(const py::object& object, const char* name);
 
+// How the stubs show the plant's arguments taken as Python objects (conversions.hpp's Typed).
+/// simulate's command: what command_argument takes.
+BONL_PYTHON_TYPED(CommandArgument, "bonl._bonl.plant.Command | collections.abc.Callable[[float], float] | "
+                                   "tuple[numpy.typing.ArrayLike, float]");
+/// The load: a command as command_argument takes it (but a pair), or None.
+BONL_PYTHON_TYPED(LoadArgument, "bonl._bonl.plant.Command | collections.abc.Callable[[float], float] | None");
+/// atol: a dict {state: tolerance}, or None.
+BONL_PYTHON_TYPED(ToleranceArgument, "dict[str, float] | None");
+/// initial_position: h0 [m], or None for mid-stroke.
+using PositionArgument = py::typing::Optional<Real>;
+
 /// A bonl.plant.Parameters, or the defaults for None; TypeError for anything else.
 bonl::plant::Parameters parameters_argument(const py::object& object);
+/// How the stubs show a parameters argument: Parameters or None (parameters_argument checks it).
+using ParametersArgument = py::typing::Optional<bonl::plant::Parameters>;
 
 /// h0 [m] from Python's initial_position: None is mid-stroke (-1 for C++); else a real number >= 0
 /// (ValueError naming it).

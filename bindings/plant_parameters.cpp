@@ -1,5 +1,5 @@
-// bonl.plant.Parameters: the plant's parameters (docs/explanation/plant.md) from one table of fields, and
-// default_parameters, small_parameters.
+// bonl.plant.Parameters: the plant's parameters (docs/explanation/plant.md) from one table of fields, with
+// C++'s Parameters::excavator_20t and excavator_5t.
 
 #include <pybind11/stl.h>
 
@@ -82,9 +82,10 @@ std::string parameters_docstring() {
   std::string doc =
       "Parameters of the excavator dipper-joint plant (docs/explanation/plant.md).\n\n"
       "Valve, asymmetric cylinder, linkage and backlash of a 20 t excavator's stick cylinder by\n"
-      "default; ``small_parameters()`` gives the 5-6 t machine. Every value can be overridden, as a\n"
-      "keyword argument of the constructor or by assigning the attribute; ``validate()`` rejects\n"
-      "non-physical values with a ValueError that names the parameter (``simulate`` validates too).\n\n"
+      "default (``Parameters.excavator_20t()``); ``Parameters.excavator_5t()`` gives the 5-6 t machine.\n"
+      "Every value can be overridden, as a keyword argument of the constructor or by assigning the\n"
+      "attribute; ``validate()`` rejects non-physical values with a ValueError that names the parameter\n"
+      "(``simulate`` validates too).\n\n"
       "Parameters\n"
       "----------\n"
       "**overrides : float\n"
@@ -191,13 +192,11 @@ void bind_plant_parameters(py::module_& sub) {
                       }));
   // __eq__ without __hash__: the parameters are mutable, so unhashable.
   cls.attr("__hash__") = py::none();
-
-  sub.def(
-      "default_parameters", []() { return plant::Parameters::excavator_20t(); },
-      "The 20 t excavator's stick cylinder (plant.md's defaults).\n\nReturns\n-------\nParameters");
-  sub.def(
-      "small_parameters", []() { return plant::Parameters::excavator_5t(); },
-      "The 5-6 t machine of plant.md.\n\nReturns\n-------\nParameters");
+  cls.def_static("excavator_20t", &plant::Parameters::excavator_20t,
+                 "The 20 t excavator's stick cylinder (plant.md's defaults, as ``Parameters()``).\n\n"
+                 "Returns\n-------\nParameters")
+      .def_static("excavator_5t", &plant::Parameters::excavator_5t,
+                  "The 5-6 t machine of plant.md.\n\nReturns\n-------\nParameters");
 }
 
 }  // namespace bonl_python

@@ -1,5 +1,5 @@
 // bonl.plant.simulate, initial_state and derivative: the CVODE plant (bonl/plant/simulator.hpp) from
-// Python, with its trajectory as a dict of numpy arrays; and the options it shares with SteppingPlant.
+// Python, with its Trajectory (numpy arrays); and the options it shares with SteppingPlant.
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -67,40 +67,84 @@ namespace {
 
 const char* const kStateOrder = "(h [m], v [m/s], p1 [Pa], p2 [Pa], xv [-])";
 
-py::array state_to_numpy(const plant::State& s) {
+Vector state_to_numpy(const plant::State& s) {
   Eigen::VectorXd x(5);
   x << s.position, s.velocity, s.head_pressure, s.rod_pressure, s.spool;
   return to_numpy(std::move(x));
 }
 
-py::dict trajectory_to_dict(plant::Trajectory&& t) {
-  py::dict d;
-  d["time"] = to_numpy(std::move(t.time));
-  d["command"] = to_numpy(std::move(t.command));
-  d["input"] = to_numpy(std::move(t.input));
-  d["position"] = to_numpy(std::move(t.position));
-  d["velocity"] = to_numpy(std::move(t.velocity));
-  d["head_pressure"] = to_numpy(std::move(t.head_pressure));
-  d["rod_pressure"] = to_numpy(std::move(t.rod_pressure));
-  d["spool"] = to_numpy(std::move(t.spool));
-  d["pilot"] = to_numpy(std::move(t.pilot));
-  d["head_flow"] = to_numpy(std::move(t.head_flow));
-  d["rod_flow"] = to_numpy(std::move(t.rod_flow));
-  d["joint_angle"] = to_numpy(std::move(t.joint_angle));
-  d["joint_rate"] = to_numpy(std::move(t.joint_rate));
-  d["pin_angle"] = to_numpy(std::move(t.pin_angle));
-  d["measured_angle"] = to_numpy(std::move(t.measured_angle));
-  d["min_position"] = t.min_position;
-  d["max_position"] = t.max_position;
-  d["reached_end_stop"] = t.reached_end_stop;
-  d["steps"] = t.steps;
-  return d;
+/// The Trajectory's arrays, in order, with their docstrings: the attributes and to_dict.
+struct TrajectoryField {
+  const char* name;
+  Eigen::VectorXd plant::Trajectory::*member;
+  const char* doc;
+};
+const TrajectoryField kTrajectoryFields[] = {
+    {"time", &plant::Trajectory::time, "numpy.ndarray: t_k = k * sample_time [s]."},
+    {"command", &plant::Trajectory::command, "numpy.ndarray: V, as held on the command grid [V]."},
+    {"input", &plant::Trajectory::input, "numpy.ndarray: u = V - V0, the identification input [V]."},
+    {"position", &plant::Trajectory::position, "numpy.ndarray: h [m]."},
+    {"velocity", &plant::Trajectory::velocity, "numpy.ndarray: v [m/s]."},
+    {"head_pressure", &plant::Trajectory::head_pressure, "numpy.ndarray: p1 [Pa]."},
+    {"rod_pressure", &plant::Trajectory::rod_pressure, "numpy.ndarray: p2 [Pa]."},
+    {"spool", &plant::Trajectory::spool, "numpy.ndarray: xv [-]."},
+    {"pilot", &plant::Trajectory::pilot, "numpy.ndarray: xc, the pilot stage's output (after its hysteresis) [-]."},
+    {"head_flow", &plant::Trajectory::head_flow, "numpy.ndarray: Q1, into the head chamber [m^3/s]."},
+    {"rod_flow", &plant::Trajectory::rod_flow, "numpy.ndarray: Q2, out of the rod chamber [m^3/s]."},
+    {"joint_angle", &plant::Trajectory::joint_angle, "numpy.ndarray: theta [rad]."},
+    {"joint_rate", &plant::Trajectory::joint_rate, "numpy.ndarray: dtheta/dt = v / r(h) [rad/s]."},
+    {"pin_angle", &plant::Trajectory::pin_angle, "numpy.ndarray: theta_m = play(theta; delta / 2), noise-free [rad]."},
+    {"measured_angle", &plant::Trajectory::measured_angle, "numpy.ndarray: theta_m + sensor noise [rad]."},
+};
+
+/// One array of a Trajectory, as a float64 array that views the Trajectory's memory (no copy; the
+/// array keeps the Trajectory alive).
+Vector trajectory_array(const py::object& self, Eigen::VectorXd plant::Trajectory::*member) {
+  const Eigen::VectorXd& values = self.cast<const plant::Trajectory&>().*member;
+  return Vector(static_cast<py::ssize_t>(values.size()), values.data(), self);
 }
 
-py::dict simulate(const py::object& command, const py::object& parameters, double duration, double sample_time,
-                  double command_rate, double rtol, const py::object& atol, long max_steps_per_interval,
-                  bool sensor_noise, std::uint64_t noise_seed, const py::object& initial_position,
-                  const py::object& load) {
+void bind_trajectory(py::module_& sub) {
+  py::class_<plant::Trajectory> cls(sub, "Trajectory",
+                                    "What ``simulate`` returns: float64 arrays on the output grid, sample k at "
+                                    "``time[k] = k * sample_time``,\nand the run's summary (``min_position``, "
+                                    "``max_position``, ``reached_end_stop``, ``steps``).");
+  for (const TrajectoryField& field : kTrajectoryFields) {
+    const auto member = field.member;
+    cls.def_property_readonly(
+        field.name, [member](const py::object& self) { return trajectory_array(self, member); }, field.doc);
+  }
+  cls.def_readonly("min_position", &plant::Trajectory::min_position,
+                   "float: smallest h reached on the command grid [m].")
+      .def_readonly("max_position", &plant::Trajectory::max_position, "float: largest h reached on the command grid [m].")
+      .def_readonly("reached_end_stop", &plant::Trajectory::reached_end_stop,
+                    "bool: h left [0, L] at some point of the command grid.")
+      .def_readonly("steps", &plant::Trajectory::steps, "int: CVODE's internal steps.")
+      .def(
+          "to_dict",
+          [](const py::object& self) {
+            py::typing::Dict<py::str, py::typing::Union<Vector, py::float_, py::bool_, py::int_>> d;
+            for (const TrajectoryField& field : kTrajectoryFields) d[field.name] = trajectory_array(self, field.member);
+            const auto& t = self.cast<const plant::Trajectory&>();
+            d["min_position"] = t.min_position;
+            d["max_position"] = t.max_position;
+            d["reached_end_stop"] = t.reached_end_stop;
+            d["steps"] = t.steps;
+            return d;
+          },
+          "Every field by name (the arrays view this Trajectory's).\n\nReturns\n-------\n"
+          "dict[str, numpy.ndarray | float | bool | int]")
+      .def("__len__", [](const plant::Trajectory& t) { return t.time.size(); })
+      .def("__repr__", [](const plant::Trajectory& t) {
+        return "Trajectory(" + std::to_string(t.time.size()) + " samples, reached_end_stop=" +
+               (t.reached_end_stop ? "True" : "False") + ")";
+      });
+}
+
+plant::Trajectory simulate(const CommandArgument& command, const ParametersArgument& parameters, double duration,
+                           double sample_time, double command_rate, double rtol, const ToleranceArgument& atol,
+                           long max_steps_per_interval, bool sensor_noise, std::uint64_t noise_seed,
+                           const PositionArgument& initial_position, const LoadArgument& load) {
   const plant::Parameters p = parameters_argument(parameters);
   const PyCommand c = command_argument(command, "command");
   bool calls_python = c.calls_python;
@@ -114,12 +158,13 @@ py::dict simulate(const py::object& command, const py::object& parameters, doubl
     py::gil_scoped_release release;
     trajectory = plant::simulate(p, c.function, options);
   }
-  return trajectory_to_dict(std::move(trajectory));
+  return trajectory;
 }
 
 }  // namespace
 
 void bind_plant_simulate(py::module_& sub) {
+  bind_trajectory(sub);
   sub.def("simulate", &simulate, py::arg("command"), py::arg("parameters") = py::none(), py::kw_only(),
           py::arg("duration") = 50.0, py::arg("sample_time") = 0.01, py::arg("command_rate") = 1000.0,
           py::arg("rtol") = 1e-6, py::arg("atol") = py::none(), py::arg("max_steps_per_interval") = 5000L,
@@ -134,7 +179,7 @@ void bind_plant_simulate(py::module_& sub) {
           "command : Command or callable or tuple\n"
           "    V(t) [V]: a ``Command`` (``bonl.plant.excitation``), a Python callable f(t) -> float, or a\n"
           "    ``(values, ts)`` pair held between samples (``excitation.sampled``).\n"
-          "parameters : Parameters, optional\n    The plant; None: ``default_parameters()``.\n"
+          "parameters : Parameters, optional\n    The plant; None: ``Parameters.excavator_20t()``.\n"
           "duration : float, optional\n    [s], an integer multiple of ``sample_time``.\n"
           "sample_time : float, optional\n    Output grid [s], an integer multiple of 1 / command_rate.\n"
           "command_rate : float, optional\n    Command grid [Hz].\n"
@@ -147,7 +192,7 @@ void bind_plant_simulate(py::module_& sub) {
           "noise_seed : int, optional\n    Its seed.\n"
           "initial_position : float, optional\n    h0 [m]; None: mid-stroke.\n"
           "load : Command or callable, optional\n    External load F_L(t) [N] opposing extension; None: none.\n\n"
-          "Returns\n-------\ndict\n"
+          "Returns\n-------\nTrajectory\n"
           "    float64 arrays on the output grid, sample k at ``time[k] = k * sample_time``: ``time`` [s],\n"
           "    ``command`` [V], ``input`` u = V - V0 [V], ``position`` h [m], ``velocity`` v [m/s],\n"
           "    ``head_pressure`` p1 [Pa], ``rod_pressure`` p2 [Pa], ``spool`` xv [-], ``pilot`` xc [-],\n"
@@ -160,7 +205,7 @@ void bind_plant_simulate(py::module_& sub) {
 
   sub.def(
       "initial_state",
-      [](const py::object& parameters, double position) {
+      [](const ParametersArgument& parameters, double position) {
         const plant::Parameters p = parameters_argument(parameters);
         p.validate();
         bonl::detail::require_finite(position, "position");
@@ -176,7 +221,7 @@ void bind_plant_simulate(py::module_& sub) {
 
   sub.def(
       "derivative",
-      [](const py::object& parameters, const py::object& state, double pilot, double load) {
+      [](const ParametersArgument& parameters, const ArrayLike& state, double pilot, double load) {
         const plant::Parameters p = parameters_argument(parameters);
         p.validate();
         const Eigen::VectorXd x = to_vector(state, "state");

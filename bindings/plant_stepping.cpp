@@ -78,7 +78,7 @@ state at t_k with the command V_k that follows it. simulate is a loop over the s
 Parameters
 ----------
 parameters : Parameters, optional
-    The plant; None: ``default_parameters()``.
+    The plant; None: ``Parameters.excavator_20t()``.
 sample_time, command_rate, rtol, atol, max_steps_per_interval, sensor_noise, noise_seed, initial_position, load
     As for ``simulate`` (which has ``duration`` too: a stepping plant runs as long as it is stepped),
     validated the same way.
@@ -160,9 +160,9 @@ ValueError
 void bind_plant_stepping(py::module_& sub) {
   bind_measurement(sub);
   py::class_<plant::SteppingPlant>(sub, "SteppingPlant", kSteppingPlantDoc)
-      .def(py::init([](const py::object& parameters, double sample_time, double command_rate, double rtol,
-                       const py::object& atol, long max_steps_per_interval, bool sensor_noise, std::uint64_t noise_seed,
-                       const py::object& initial_position, const py::object& load) {
+      .def(py::init([](const ParametersArgument& parameters, double sample_time, double command_rate, double rtol,
+                       const ToleranceArgument& atol, long max_steps_per_interval, bool sensor_noise,
+                       std::uint64_t noise_seed, const PositionArgument& initial_position, const LoadArgument& load) {
              bool calls_python = false;
              return plant::SteppingPlant(parameters_argument(parameters),
                                          simulation_options(sample_time, command_rate, rtol, atol, max_steps_per_interval,
@@ -175,11 +175,11 @@ void bind_plant_stepping(py::module_& sub) {
            py::arg("noise_seed") = std::uint64_t{1}, py::arg("initial_position") = py::none(),
            py::arg("load") = py::none())
       .def(
-          "step", [](plant::SteppingPlant& self, const py::object& command) { return self.step(to_scalar(command, "command")); },
+          "step", [](plant::SteppingPlant& self, const Real& command) { return self.step(to_scalar(command, "command")); },
           py::arg("command"), kStepDoc)
       .def(
           "reset",
-          [](plant::SteppingPlant& self, const py::object& initial_position, std::optional<std::uint64_t> noise_seed) {
+          [](plant::SteppingPlant& self, const PositionArgument& initial_position, std::optional<std::uint64_t> noise_seed) {
             if (initial_position.is_none() && !noise_seed) return self.reset();
             return self.reset(initial_position.is_none() ? self.options().initial_position
                                                          : initial_position_argument(initial_position),
@@ -188,7 +188,7 @@ void bind_plant_stepping(py::module_& sub) {
           py::arg("initial_position") = py::none(), py::arg("noise_seed") = py::none(), kResetDoc)
       .def(
           "set_parameters",
-          [](plant::SteppingPlant& self, const py::object& parameters) {
+          [](plant::SteppingPlant& self, const ParametersArgument& parameters) {
             self.set_parameters(parameters_argument(parameters));
           },
           py::arg("parameters"), kSetParametersDoc)

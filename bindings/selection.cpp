@@ -122,7 +122,7 @@ void bind_selection(py::module_& m) {
       },
       [](const py::tuple& t) {
         std::vector<Eigen::VectorXd> inputs, outputs;
-        read_records(t[0], py::none(), "", inputs, outputs);
+        read_records(py::none(), py::none(), t[0], "", inputs, outputs);
         return make_selection(std::move(inputs), std::move(outputs), t[1].cast<std::string>(), t[2].cast<double>(),
                               t[3].cast<Eigen::Index>(),
                               {t[4].cast<int>(), t[5].cast<std::string>(), t[6], t[7].cast<std::optional<double>>(),
@@ -130,17 +130,21 @@ void bind_selection(py::module_& m) {
       }));
   def_with_identify_arguments(
       m, "_selection_data",
-      [](const py::object& u, const py::object& y, const std::string& criterion, double validation_fraction,
-         const py::object& window, int passes, const std::string& method, const py::object& forgetting,
-         std::optional<double> p0, double c0, int refine_iterations, bool normalise, const py::object& operating_point) {
+      [](const py::typing::Optional<ArrayLike>& u, const py::typing::Optional<ArrayLike>& y,
+         const py::typing::Optional<RecordList>& records, const std::string& criterion, double validation_fraction,
+         const py::object& window, int passes, const std::string& method, const Forgetting& forgetting,
+         std::optional<double> p0, double c0, int refine_iterations, bool normalise,
+         const OperatingPointSource& operating_point) {
         std::vector<Eigen::VectorXd> inputs, outputs;
-        read_records(u, y,
-                     "select(candidates, u, y) for one record, select(candidates, [(u1, y1), (u2, y2), ...]) for several",
+        read_records(u, y, records,
+                     "select(candidates, u, y) for one record, select(candidates, records=[(u1, y1), (u2, y2), ...]) "
+                     "for several",
                      inputs, outputs);
         return make_selection(std::move(inputs), std::move(outputs), criterion, validation_fraction, window_from(window),
                               {passes, method, forgetting, p0, c0, refine_iterations, normalise, operating_point});
       },
-      py::arg("u"), py::arg("y") = py::none(), py::kw_only(), py::arg("criterion") = "validation",
+      py::arg("u") = py::none(), py::arg("y") = py::none(), py::kw_only(), py::arg("records") = py::none(),
+      py::arg("criterion") = "validation",
       py::arg("validation_fraction") = 0.25, py::arg("window") = 0,
       "bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. "
       "The keyword arguments after window are identify's.");

@@ -114,7 +114,7 @@ def _run(benchmark, families):
         start = time.perf_counter()
         scoring = (dict(window=benchmark.window) if benchmark.criterion == "validation"
                    else dict(criterion=benchmark.criterion))
-        selections = [(bonl.select(candidates, benchmark.estimation, **scoring, **options), options)
+        selections = [(bonl.select(candidates, records=benchmark.estimation, **scoring, **options), options)
                       for options in identify]
         selection, options = min(selections, key=lambda pair: pair[0].table[0].score)
         seconds = time.perf_counter() - start

@@ -43,7 +43,7 @@ def structures(tanks, chosen):
     for row in chosen["rows"]:
         family = getattr(bonl, row["model"])
         structure = family(**row["orders"])
-        figures = [test.rms(bonl.identify(structure, records, **row["identify"]))
+        figures = [test.rms(bonl.identify(structure, records=records, **row["identify"]))
                    for records in [tanks.estimation] + [perturbed(tanks.estimation, s) for s in SEEDS]]
         rows[row["model"]] = {"orders": row["orders"], "identify": row["identify"], "unperturbed": figures[0],
                               "perturbed": figures[1:], "spread": spread(figures)}

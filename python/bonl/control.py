@@ -15,6 +15,6 @@ Examples
 True
 """
 
-from ._bonl.control import AdaptiveInverse, InverseModel, InverseRun, InverseStatus, InverseStep
+from ._bonl.control import AdaptiveInverse, AdaptiveInverseHealth, InverseModel, InverseRun, InverseStatus, InverseStep
 
-__all__ = ["AdaptiveInverse", "InverseModel", "InverseRun", "InverseStatus", "InverseStep"]
+__all__ = ["AdaptiveInverse", "AdaptiveInverseHealth", "InverseModel", "InverseRun", "InverseStatus", "InverseStep"]

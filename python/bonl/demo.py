@@ -129,13 +129,13 @@ def format_report(result: Any) -> str:
                 record.steps,
             )
         )
-    out.append("  plant simulation and processing: %.2f s" % result.seconds["plant"])
+    out.append("  plant simulation and processing: %.2f s" % result.seconds.plant)
     text = "\n".join(out) + "\n"
     # The paper's method first, then bonl's, as bonl_demo prints them.
     for method in ("paper", "output_error"):
         text += format_tables(result.method(method))
     text += format_online(result)
-    text += "\nidentification and validation: %.2f s\n" % result.seconds["identification"]
+    text += "\nidentification and validation: %.2f s\n" % result.seconds.identification
     if result.robustness_trajectories:
         text += format_robustness(result)
     return text
@@ -262,7 +262,7 @@ def results_json(result: Any, method: str) -> Dict[str, Any]:
         "online": {name: dict(entry.online_mse) for name, entry in result.methods.items()},
         "runs": runs,
         "plant_parameters": result.parameters.to_dict(),
-        "seconds": dict(result.seconds),
+        "seconds": result.seconds.to_dict(),
     }
     if result.robustness_trajectories:
         out["robustness"] = [

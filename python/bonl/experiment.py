@@ -29,6 +29,7 @@ __all__ = [
     "MethodResult",
     "ModelResult",
     "Record",
+    "Timings",
     "run_tracking_experiment",
     "TrackingResult",
     "TrackingRun",

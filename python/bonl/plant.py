@@ -3,10 +3,10 @@
 A valve with dead band and pilot-stage hysteresis, an asymmetric cylinder, the linkage to the
 joint angle, pin backlash and an inclinometer: the plant the paper's experiment is run on.
 
-- :class:`Parameters`, :func:`default_parameters` (20 t), :func:`small_parameters` (5-6 t);
+- :class:`Parameters`, ``Parameters.excavator_20t()`` (the default, 20 t), ``Parameters.excavator_5t()`` (5-6 t);
 - :class:`Command` and the submodule :mod:`bonl.plant.excitation` (step, multi-sine, the paper's
   multi-sine, smooth random, chirp, sampled hold);
-- :func:`simulate`: every state, flow and angle on the output grid, as a dict of numpy arrays;
+- :func:`simulate`: every state, flow and angle on the output grid, as a :class:`Trajectory` of numpy arrays;
 - :class:`SteppingPlant`: the same plant one sample per call, ``measurement = plant.step(command)``
   (a :class:`Measurement`), equal to :func:`simulate` sample for sample; :class:`SteppingEnv` is a
   gymnasium-style ``reset``/``step`` over it;
@@ -19,7 +19,7 @@ Examples
 --------
 >>> from bonl import plant
 >>> run = plant.simulate(plant.excitation.paper_multisine(), duration=5.0)
->>> run["joint_rate"].shape
+>>> run.joint_rate.shape
 (501,)
 """
 
@@ -30,11 +30,10 @@ from ._bonl.plant import SteppingPlant, excitation  # noqa: F401
 
 __all__ = [
     "Parameters",
-    "default_parameters",
-    "small_parameters",
     "Command",
     "excitation",
     "simulate",
+    "Trajectory",
     "initial_state",
     "derivative",
     "SteppingPlant",
@@ -55,7 +54,7 @@ class SteppingEnv:
     Parameters
     ----------
     parameters : Parameters, optional
-        The plant; None: ``default_parameters()``.
+        The plant; None: ``Parameters.excavator_20t()``.
     **options
         :class:`SteppingPlant`'s keyword options (``sample_time``, ``noise_seed``, ``load``, ...).
 

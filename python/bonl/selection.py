@@ -35,7 +35,9 @@ import math
 import os
 import sys
 import time
-from typing import Any, Dict, Iterable, List, Optional
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
+
+from numpy.typing import ArrayLike
 
 from . import _bonl
 
@@ -128,7 +130,8 @@ def _progress(total: int, progress: Optional[bool]):
     return tqdm(total=total, desc="bonl.select", unit="model")
 
 
-def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str = "validation",
+def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
+           records: Optional[Sequence[Tuple[ArrayLike, ArrayLike]]] = None, criterion: str = "validation",
            validation_fraction: float = 0.25, window: int = 0,
            executor: Optional[concurrent.futures.Executor] = None, progress: Optional[bool] = None,
            **identify_options: Any) -> Selection:
@@ -138,8 +141,10 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
     ----------
     candidates : iterable of bonl models
         The structures (their orders; parameter values are not used), e.g. from :func:`grid`.
-    u, y : array_like, or a list of (u, y) records with y left out
-        The estimation data.
+    u, y : array_like, shape (n,)
+        The estimation data: one record.
+    records : sequence of (u, y) pairs, keyword only
+        Several records in place of u and y: ``select(candidates, records=[(u1, y1), (u2, y2)])``.
     criterion : {'validation', 'aic', 'bic'}
         'validation' (default): the free-run simulation MSE on the last ``validation_fraction`` of every
         record (its samples times the fraction, rounded half away from zero, at least 1), the candidate
@@ -174,7 +179,7 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
         if type(structure) not in _bonl.MODELS:
             raise ValueError(f"bonl: select: candidates[{i}] must be a bonl model, got {type(structure).__name__}")
     # The records and options checked once, in C++ (ValueError naming the bad one).
-    data = _bonl._selection_data(u, y, criterion=criterion, validation_fraction=validation_fraction, window=window,
+    data = _bonl._selection_data(u, y, records=records, criterion=criterion, validation_fraction=validation_fraction, window=window,
                                  **identify_options)
 
     own = executor is None
@@ -202,5 +207,5 @@ def select(candidates: Iterable[Any], u: Any, y: Any = None, *, criterion: str =
     table = [rows[i] for i in order]
     if table[0].error is not None:
         raise _bonl.NumericalError("bonl: select: every candidate failed; the first: " + table[0].error)
-    best = _bonl.identify(structures[order[0]], u, y, **identify_options)
+    best = _bonl.identify(structures[order[0]], u, y, records=records, **identify_options)
     return Selection(criterion, table, best)

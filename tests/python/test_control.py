@@ -137,7 +137,7 @@ def test_the_adaptive_inverse_learns_a_known_system_and_keeps_its_inverse_when_n
     y = truth.simulate(u)
     for uk, yk in zip(u, y):
         adaptive.update(uk, yk)
-    assert adaptive.health["rederivations"] == 60
+    assert adaptive.health.rederivations == 60
     reference = truth.simulate(np.sin(np.arange(2000) / 60.0) * 0.5)
     commands = bonl.control.InverseModel(adaptive.model, command_min=-3.0, command_max=3.0).commands(reference).command
     assert np.max(np.abs(truth.simulate(commands)[200:] - reference[200:])) < 1e-4
@@ -146,8 +146,8 @@ def test_the_adaptive_inverse_learns_a_known_system_and_keeps_its_inverse_when_n
     strict = bonl.control.AdaptiveInverse(truth, command_min=-3.0, command_max=3.0, stability_radius=0.1)
     for uk, yk in zip(u[:300], y[:300]):
         strict.update(uk, yk)
-    assert strict.health["refused_unstable"] == 3 and strict.health["rederivations"] == 0
-    assert "a pole of the estimate has magnitude" in strict.health["last_refusal"]
+    assert strict.health.refused_unstable == 3 and strict.health.rederivations == 0
+    assert "a pole of the estimate has magnitude" in strict.health.last_refusal
     np.testing.assert_array_equal(strict.model.theta, truth.theta)
     assert strict.update(float("nan"), 1.0) == bonl.UpdateStatus.rejected_non_finite
     with pytest.raises(ValueError, match="rederive_every must be >= 1"):

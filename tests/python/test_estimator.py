@@ -58,5 +58,5 @@ def test_gap_samples_carry_no_information_and_reset_restarts():
     assert all(output_error.update(float(a), float(b)) == bonl.UpdateStatus.updated for a, b in zip(u, y))
     output_error.reset()
     np.testing.assert_array_equal(output_error.theta, np.zeros(14))
-    estimator.reset_to(truth.theta)
+    estimator.reset(truth.theta)
     np.testing.assert_array_equal(estimator.theta, truth.theta)

@@ -88,7 +88,7 @@ def test_several_records_identify_one_model_each_from_rest(known):
     name, truth = known
     u1, y1 = _record(truth, 1)
     u2, y2 = _record(truth, 3)
-    fitted = bonl.identify(truth, [(u1[:2500], y1[:2500]), (u2[:2500], y2[:2500])])
+    fitted = bonl.identify(truth, records=[(u1[:2500], y1[:2500]), (u2[:2500], y2[:2500])])
     u_val, _ = _record(truth, 2)
     assert bonl.metrics.nrmse(truth.simulate(u_val), fitted.simulate(u_val)) <= 1e-6
 
@@ -96,12 +96,12 @@ def test_several_records_identify_one_model_each_from_rest(known):
 def test_one_record_as_a_list_identifies_exactly_as_u_y():
     truth = known_models()["PseudoHammersteinWiener"]
     u, y = _record(truth, 1, 0.01)
-    np.testing.assert_array_equal(bonl.identify(truth, [(u, y)], refine_iterations=5).theta,
+    np.testing.assert_array_equal(bonl.identify(truth, records=[(u, y)], refine_iterations=5).theta,
                                   bonl.identify(truth, u, y, refine_iterations=5).theta)
 
 
 @pytest.mark.parametrize("records, message", [
-    (lambda u, y: u, r"y must be a 1-D array of real numbers, got None \(identify\(model, u, y\) for one record"),
+    (lambda u, y: u, r"records must be a list of pairs \(u, y\), got ndarray"),
     (lambda u, y: [], "records must hold at least one record"),
     (lambda u, y: [(u, y), u], r"records\[1\] must be a pair \(u, y\)"),
     (lambda u, y: [(u, y), (u, y, y)], r"records\[1\] must be a pair \(u, y\)"),
@@ -109,9 +109,25 @@ def test_one_record_as_a_list_identifies_exactly_as_u_y():
     (lambda u, y: [(u, y), (u, np.where(np.arange(u.size) == 3, np.nan, y))],
      r"records\[1\].y has a non-finite value at index 3"),
     (lambda u, y: [(u[:3], y[:3]), (u[:3], y[:3])], "the records must be longer together than the number of parameters"),
-], ids=["no y", "empty", "not a pair", "a triple", "lengths", "NaN", "too short"])
+], ids=["an array", "empty", "not a pair", "a triple", "lengths", "NaN", "too short"])
 def test_bad_records_are_a_value_error_naming_the_record(records, message):
     truth = known_models()["ARX"]
     u, y = _record(truth, 1)
     with pytest.raises(ValueError, match=message):
-        bonl.identify(truth, records(u, y))
+        bonl.identify(truth, records=records(u, y))
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda truth, u, y: bonl.identify(truth, u),
+     r"y must be a 1-D array of real numbers, got None \(identify\(model, u, y\) for one record, "
+     r"identify\(model, records=\[\(u1, y1\), \(u2, y2\), ...\]\) for several\)"),
+    (lambda truth, u, y: bonl.identify(truth, [(u, y)]), r"y must be a 1-D array of real numbers, got None"),
+    (lambda truth, u, y: bonl.identify(truth), r"u and y, or records, must be given"),
+    (lambda truth, u, y: bonl.identify(truth, u, y, records=[(u, y)]), r"give u and y, or records, not both"),
+    (lambda truth, u, y: bonl.identify(truth, y=y, records=[(u, y)]), r"give u and y, or records, not both"),
+], ids=["no y", "records as u", "nothing", "both", "y and records"])
+def test_one_record_is_u_and_y_several_are_records_never_both(call, message):
+    truth = known_models()["ARX"]
+    u, y = _record(truth, 1)
+    with pytest.raises(ValueError, match=message):
+        call(truth, u, y)

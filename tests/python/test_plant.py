@@ -51,7 +51,7 @@ def test_parameters_every_member_is_a_read_write_property_with_symbol_and_unit()
 
 
 def test_parameters_defaults_and_small_machine_follow_plant_md():
-    p = plant.default_parameters()
+    p = plant.Parameters.excavator_20t()
     assert p == plant.Parameters()
     assert (p.bore_diameter, p.rod_diameter, p.stroke, p.mass) == (0.140, 0.100, 1.50, 1.44e4)
     assert p.head_area() == pytest.approx(math.pi * 0.140**2 / 4, rel=1e-15)
@@ -59,7 +59,7 @@ def test_parameters_defaults_and_small_machine_follow_plant_md():
     assert p.valve_gain() == pytest.approx(1 / (2.5 - 0.08), rel=1e-15)
     assert p.flow_gain() == pytest.approx(0.61 * 1.08e-2 * 5e-3 * math.sqrt(2 / 870), rel=1e-15)
     assert p.joint_angle(0.75) == pytest.approx(0.0, abs=1e-15)
-    s = plant.small_parameters()
+    s = plant.Parameters.excavator_5t()
     assert (s.bore_diameter, s.rod_diameter, s.stroke, s.mass, s.area_gradient) == (0.090, 0.060, 0.78, 3.6e3, 2.9e-3)
     s.validate()
     p.validate()
@@ -164,25 +164,28 @@ def test_command_wraps_a_python_callable():
 # --- simulate --------------------------------------------------------------------------------
 
 
-def test_simulate_returns_the_documented_keys_shapes_and_dtypes():
+def test_simulate_returns_a_trajectory_with_the_documented_fields_shapes_and_dtypes():
     run = plant.simulate(excitation.paper_multisine(), duration=2.0, sample_time=0.02)
-    assert set(run) == set(TRAJECTORY_ARRAYS) | set(TRAJECTORY_SCALARS)
+    assert isinstance(run, plant.Trajectory) and len(run) == 101
+    assert list(run.to_dict()) == TRAJECTORY_ARRAYS + TRAJECTORY_SCALARS
     for key in TRAJECTORY_ARRAYS:
-        assert isinstance(run[key], np.ndarray) and run[key].dtype == np.float64 and run[key].shape == (101,), key
-        assert np.all(np.isfinite(run[key])), key
-    np.testing.assert_allclose(run["time"], 0.02 * np.arange(101), rtol=0, atol=1e-12)
-    np.testing.assert_allclose(run["input"], run["command"] - 2.5, atol=1e-15)
-    np.testing.assert_allclose(run["command"], [paper_multisine_reference(t) for t in run["time"]], atol=1e-12)
-    assert isinstance(run["reached_end_stop"], bool) and not run["reached_end_stop"]
-    assert isinstance(run["steps"], int) and run["steps"] > 0
-    assert run["min_position"] <= run["position"].min() and run["max_position"] >= run["position"].max()
-    assert run["position"][0] == 0.75  # mid-stroke
-    p = plant.default_parameters()
-    np.testing.assert_allclose(run["joint_rate"], run["velocity"] / [p.moment_arm(h) for h in run["position"]], rtol=1e-12)
-    noisy = run["measured_angle"] - run["pin_angle"]
+        values = getattr(run, key)
+        assert isinstance(values, np.ndarray) and values.dtype == np.float64 and values.shape == (101,), key
+        assert np.all(np.isfinite(values)), key
+        np.testing.assert_array_equal(run.to_dict()[key], values)
+    np.testing.assert_allclose(run.time, 0.02 * np.arange(101), rtol=0, atol=1e-12)
+    np.testing.assert_allclose(run.input, run.command - 2.5, atol=1e-15)
+    np.testing.assert_allclose(run.command, [paper_multisine_reference(t) for t in run.time], atol=1e-12)
+    assert isinstance(run.reached_end_stop, bool) and not run.reached_end_stop
+    assert isinstance(run.steps, int) and run.steps > 0
+    assert run.min_position <= run.position.min() and run.max_position >= run.position.max()
+    assert run.position[0] == 0.75  # mid-stroke
+    p = plant.Parameters.excavator_20t()
+    np.testing.assert_allclose(run.joint_rate, run.velocity / [p.moment_arm(h) for h in run.position], rtol=1e-12)
+    noisy = run.measured_angle - run.pin_angle
     assert 0.5e-4 < noisy.std() < 4e-4  # sigma_theta = 2e-4 rad
     quiet = plant.simulate(excitation.paper_multisine(), duration=2.0, sample_time=0.02, sensor_noise=False)
-    np.testing.assert_array_equal(quiet["measured_angle"], quiet["pin_angle"])
+    np.testing.assert_array_equal(quiet.measured_angle, quiet.pin_angle)
 
 
 def test_simulate_accepts_callables_and_sampled_sequences_alike():
@@ -193,15 +196,15 @@ def test_simulate_accepts_callables_and_sampled_sequences_alike():
     held = plant.simulate(excitation.sampled(values, 0.01), duration=1.0)
     for run in (python, pair, held):
         for key in TRAJECTORY_ARRAYS:
-            np.testing.assert_array_equal(run[key], step[key], err_msg=key)
-    assert step["velocity"][-1] > 0.01  # 2.9 V extends
+            np.testing.assert_array_equal(getattr(run, key), getattr(step, key), err_msg=key)
+    assert step.velocity[-1] > 0.01  # 2.9 V extends
 
 
 def test_simulate_load_and_initial_position():
     free = plant.simulate(excitation.step(3.5), duration=1.0, initial_position=0.3)
     loaded = plant.simulate(excitation.step(3.5), duration=1.0, initial_position=0.3, load=lambda t: 1e5)
-    assert free["position"][0] == loaded["position"][0] == 0.3
-    assert loaded["velocity"][-1] < free["velocity"][-1]
+    assert free.position[0] == loaded.position[0] == 0.3
+    assert loaded.velocity[-1] < free.velocity[-1]
 
 
 def test_simulate_bad_arguments():
@@ -325,7 +328,7 @@ def play(x, y_prev, half_width):
     return y_prev
 
 
-@pytest.mark.parametrize("parameters", [plant.default_parameters(), plant.small_parameters()], ids=["20t", "5t"])
+@pytest.mark.parametrize("parameters", [plant.Parameters.excavator_20t(), plant.Parameters.excavator_5t()], ids=["20t", "5t"])
 def test_derivative_matches_plant_md_at_random_states(parameters):
     ref = ReferencePlant(parameters)
     rng = np.random.default_rng(2024)
@@ -360,7 +363,7 @@ def test_derivative_matches_plant_md_at_random_states(parameters):
 
 
 def test_initial_state_balances_the_forces():
-    p = plant.default_parameters()
+    p = plant.Parameters.excavator_20t()
     ref = ReferencePlant(p)
     x0 = plant.initial_state(p, 0.6)
     np.testing.assert_allclose(x0, ref.initial_state(0.6), rtol=1e-13)
@@ -384,7 +387,7 @@ def test_cvode_agrees_with_an_independent_radau_integrator():
     """
     from scipy.integrate import solve_ivp
 
-    p = plant.default_parameters()
+    p = plant.Parameters.excavator_20t()
     ref = ReferencePlant(p)
     duration, rate, per_sample = 3.0, 1000.0, 10
     atol = {"position": 1e-12, "velocity": 1e-12, "pressure": 1e-5, "spool": 1e-12}
@@ -414,9 +417,9 @@ def test_cvode_agrees_with_an_independent_radau_integrator():
         x = sol.y[:, -1]
     samples = np.array(samples)
 
-    np.testing.assert_allclose(run["pilot"], pilots, rtol=0, atol=1e-14)
+    np.testing.assert_allclose(run.pilot, pilots, rtol=0, atol=1e-14)
     # The run moves the piston by tens of mm at up to ~0.1 m/s with pressures of several MPa.
-    assert np.ptp(run["position"]) > 0.01 and np.ptp(run["head_pressure"]) > 1e6
+    assert np.ptp(run.position) > 0.01 and np.ptp(run.head_pressure) > 1e6
     tolerances = {"position": 5e-8, "velocity": 1e-6, "head_pressure": 50.0, "rod_pressure": 50.0, "spool": 1e-6}
     for i, key in enumerate(["position", "velocity", "head_pressure", "rod_pressure", "spool"]):
-        np.testing.assert_allclose(run[key], samples[:, i], rtol=0, atol=tolerances[key], err_msg=key)
+        np.testing.assert_allclose(getattr(run, key), samples[:, i], rtol=0, atol=tolerances[key], err_msg=key)

@@ -52,7 +52,7 @@ def test_the_online_estimator_converges():
     truth = known_models()["PrandtlIshlinskiiHammerstein"]
     u = random_levels(4000, 5, 1.0, 3)
     estimator = bonl.Estimator(bonl.PrandtlIshlinskiiHammerstein(*truth.orders, thresholds=truth.thresholds))
-    estimator.update(u, truth.simulate(u))
+    estimator.update_record(u, truth.simulate(u))
     np.testing.assert_allclose(estimator.theta, truth.theta, rtol=0, atol=1e-8)
 
 

@@ -118,14 +118,15 @@ def test_recording_matches_a_replay():
         assert recorded.update(u[k], y[k]) == statuses[-1]
         assert recorded.last_prediction == predictions[-1]
     trajectory = recorded.trajectory()
-    assert trajectory["sample"].tolist() == list(range(35, 60))
-    assert trajectory["theta"].shape == (25, truth.theta.size)
-    np.testing.assert_array_equal(trajectory["theta"], np.array(thetas[35:]))
-    assert trajectory["status"] == statuses[35:]
-    assert np.all(np.isfinite(trajectory["internal"]))
+    assert isinstance(trajectory, bonl.EstimatorTrajectory) and len(trajectory) == 25
+    assert trajectory.sample.tolist() == list(range(35, 60))
+    assert trajectory.theta.shape == (25, truth.theta.size)
+    np.testing.assert_array_equal(trajectory.theta, np.array(thetas[35:]))
+    assert trajectory.status == statuses[35:]
+    assert np.all(np.isfinite(trajectory.internal))
     recorded.stop_recording()
     assert not recorded.recording
-    assert recorded.trajectory()["theta"].shape == (0, truth.theta.size)
+    assert recorded.trajectory().theta.shape == (0, truth.theta.size)
     with pytest.raises(ValueError, match="capacity"):
         recorded.start_recording(0)
 
@@ -134,4 +135,4 @@ def test_arx_records_no_internal_variable():
     estimator = bonl.Estimator(bonl.ARX(2, 1, 0))
     estimator.start_recording(3)
     estimator.update(1.0, 0.5)
-    assert math.isnan(estimator.trajectory()["internal"][0])
+    assert math.isnan(estimator.trajectory().internal[0])

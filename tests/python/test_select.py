@@ -46,11 +46,11 @@ def test_scores_are_the_criteria_recomputed_from_identify_and_free_run_simulatio
     structure = bonl.Hammerstein(1, 1, 2, 2)
     split = u.size - round(0.25 * u.size)
     (row,) = bonl.select([structure], u, y).table
-    fitted = bonl.identify(structure, [(u[:split], y[:split])])
+    fitted = bonl.identify(structure, records=[(u[:split], y[:split])])
     tail = y[split:] - fitted.simulate(u)[split:]
     assert row.validation_mse == row.score == pytest.approx(float(tail @ tail) / tail.size, rel=1e-12)
     (row,) = bonl.select([structure], u, y, criterion="bic").table
-    fitted = bonl.identify(structure, [(u, y)])
+    fitted = bonl.identify(structure, records=[(u, y)])
     mse = float(np.mean((y - fitted.simulate(u)) ** 2))
     assert row.fit_mse == pytest.approx(mse, rel=1e-12)
     assert row.score == pytest.approx(u.size * math.log(mse) + structure.num_params * math.log(u.size), rel=1e-12)
@@ -93,8 +93,8 @@ def test_python_and_cpp_select_give_the_same_table(case):
         options = dict(criterion="aic", passes=2)
     else:
         options = dict(criterion="bic", validation_fraction=0.3)
-    python = bonl.select(candidates, records, **options)
-    cpp = bonl._bonl._select(candidates, bonl._bonl._selection_data(records, **options))
+    python = bonl.select(candidates, records=records, **options)
+    cpp = bonl._bonl._select(candidates, bonl._bonl._selection_data(records=records, **options))
     _same_table(python, cpp)
     failed = [row for row in python.table if row.error is not None]
     assert len(failed) == 1 and python.table[-1] is failed[0] and failed[0].score == math.inf
@@ -112,7 +112,7 @@ def test_with_a_window_the_held_out_part_is_scored_after_its_first_samples():
     structure = bonl.Hammerstein(1, 1, 2, 2)
     split = u.size - round(0.25 * u.size)
     (row,) = bonl.select([structure], u, y, window=7).table
-    fitted = bonl.identify(structure, [(u[:split], y[:split])])
+    fitted = bonl.identify(structure, records=[(u[:split], y[:split])])
     after = y[split + 7:] - fitted.simulate(u[split + 7:], initial=(u[split:split + 7], y[split:split + 7]))
     assert row.validation_mse == row.score == pytest.approx(float(after @ after) / after.size, rel=1e-12)
 
@@ -120,7 +120,7 @@ def test_with_a_window_the_held_out_part_is_scored_after_its_first_samples():
 def test_several_records_hold_out_the_end_of_each():
     truth, u, y = _system()
     records = [(u[:1000], y[:1000]), (u[1000:], truth.simulate(u[1000:]))]
-    result = bonl.select(_candidates(), records)
+    result = bonl.select(_candidates(), records=records)
     assert result.table[0].orders == {"na": 2, "nb": 1, "nk": 2, "r": 2}
 
 
@@ -210,7 +210,7 @@ def test_progress_bar_on_request(capsys):
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=500),
      r"records\[0\]'s held-out part \(500 samples\) must be longer than the window \(500\)"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u), "y must be a 1-D array of real numbers, got None"),
-    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], [(u, y), u]), r"records\[1\] must be a pair \(u, y\)"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], records=[(u, y), u]), r"records\[1\] must be a pair \(u, y\)"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, method="best"), "method must be"),
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1]), "ARX takes the orders na, nb, nk, ni; missing: nk"),
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1], nk=[0], r=[2]), "unknown: r"),

@@ -30,7 +30,7 @@ def worst_difference(stepping, commands, run):
     worst = 0.0
     for name in FIELDS:
         got = np.array([getattr(m, name) for m in measurements])
-        expected = run[name]
+        expected = getattr(run, name)
         if name == "pilot":
             got, expected = got[1:], expected[:-1]
         worst = max(worst, np.max(np.abs(got - expected) / np.maximum(1.0, np.abs(expected))))
@@ -51,8 +51,8 @@ def test_stepping_equals_simulate_on_the_paper_multisine_held_at_100_hz(sensor_n
     stepping = plant.SteppingPlant(sensor_noise=sensor_noise)
     assert worst_difference(stepping, commands, run) <= 1e-12
     assert stepping.time == 50.0
-    assert stepping.steps == run["steps"]
-    noise = run["measured_angle"] - run["pin_angle"]
+    assert stepping.steps == run.steps
+    noise = run.measured_angle - run.pin_angle
     assert (np.std(noise) == pytest.approx(plant.Parameters().sensor_noise, rel=0.05)) if sensor_noise else not noise.any()
 
 
@@ -60,7 +60,7 @@ def test_stepping_equals_simulate_on_the_paper_multisine_on_the_command_grid():
     commands = paper_commands(5000, 1000.0)
     run = plant.simulate(excitation.paper_multisine(), duration=5.0, sample_time=0.001)
     assert worst_difference(plant.SteppingPlant(sample_time=0.001), commands, run) <= 1e-12
-    np.testing.assert_array_equal(run["command"][:-1], commands)
+    np.testing.assert_array_equal(run.command[:-1], commands)
 
 
 def test_stepping_equals_simulate_with_a_python_load_that_changes_within_a_sample():
@@ -70,7 +70,7 @@ def test_stepping_equals_simulate_with_a_python_load_that_changes_within_a_sampl
     run = plant.simulate((SHORT, 0.01), duration=1.5, load=load)
     assert worst_difference(plant.SteppingPlant(load=load), SHORT, run) <= 1e-12
     free = plant.simulate((SHORT, 0.01), duration=1.5)
-    assert abs(free["position"][-1] - run["position"][-1]) > 1e-3  # the load acts
+    assert abs(free.position[-1] - run.position[-1]) > 1e-3  # the load acts
 
 
 def test_measurement_fields_repr_and_copies():

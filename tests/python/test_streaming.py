@@ -34,7 +34,7 @@ def test_arrays_equal_the_per_sample_loop_bit_for_bit(known, method):
         statuses.append(int(looped.update(float(a), float(b))))
         predictions.append(looped.last_prediction)
         thetas.append(looped.theta)
-    results = streamed.update(u, y, prediction=True, theta=True)
+    results = streamed.update_record(u, y, prediction=True, theta=True)
     assert results.status.dtype == np.int8
     np.testing.assert_array_equal(results.status, statuses)
     np.testing.assert_array_equal(results.prediction, predictions)
@@ -50,15 +50,15 @@ def test_a_record_split_into_chunks_equals_it_in_one_call(known):
     u, y = _record(model, 7)
     whole = bonl.Estimator(model)
     chunked = bonl.Estimator(model)
-    status = whole.update(u, y).status
-    parts = [chunked.update(u[a:a + 137], y[a:a + 137]).status for a in range(0, u.size, 137)]
+    status = whole.update_record(u, y).status
+    parts = [chunked.update_record(u[a:a + 137], y[a:a + 137]).status for a in range(0, u.size, 137)]
     np.testing.assert_array_equal(np.concatenate(parts), status)
     np.testing.assert_array_equal(chunked.theta, whole.theta)
 
 
 def test_only_the_statuses_unless_asked():
     model = bonl.Hammerstein(2, 1, 1, 2)
-    results = bonl.Estimator(model).update(np.zeros(10), np.zeros(10))
+    results = bonl.Estimator(model).update_record(np.zeros(10), np.zeros(10))
     assert results.prediction is None and results.theta is None
     assert results.status.shape == (10,)
 
@@ -69,10 +69,21 @@ def test_other_real_dtypes_are_converted_and_0d_arrays_are_one_sample():
     y = bonl.ARX(2, 1, 0).simulate(u)
     as_float64 = bonl.Estimator(model)
     as_float32 = bonl.Estimator(model)
-    as_float64.update(u.astype(np.float32).astype(np.float64), y.astype(np.float32).astype(np.float64))
-    as_float32.update(u.astype(np.float32), y.astype(np.float32))
+    as_float64.update_record(u.astype(np.float32).astype(np.float64), y.astype(np.float32).astype(np.float64))
+    as_float32.update_record(u.astype(np.float32), y.astype(np.float32))
     np.testing.assert_array_equal(as_float32.theta, as_float64.theta)
     assert bonl.Estimator(model).update(np.array(0.5), np.array(0.1)) == bonl.UpdateStatus.updated
+
+
+def test_update_takes_one_sample_and_update_record_a_record():
+    # One return type per method: update an UpdateStatus, update_record an UpdateResults.
+    estimator = bonl.Estimator(bonl.ARX(2, 1, 0))
+    assert isinstance(estimator.update(0.5, 0.1), bonl.UpdateStatus)
+    assert isinstance(estimator.update_record([0.5], [0.1]), bonl.UpdateResults)
+    with pytest.raises(TypeError, match="incompatible function arguments"):
+        estimator.update(np.zeros(3), np.zeros(3))
+    with pytest.raises(ValueError, match="u must be a 1-D array of real numbers, got a single float"):
+        estimator.update_record(0.5, 0.1)
 
 
 @pytest.mark.parametrize("u, y, message", [
@@ -84,10 +95,10 @@ def test_other_real_dtypes_are_converted_and_0d_arrays_are_one_sample():
 def test_bad_arrays_are_refused_and_change_nothing(u, y, message):
     model = bonl.PseudoHammersteinWiener(2, 1, 1, 2)
     estimator = bonl.Estimator(model)
-    estimator.update(np.linspace(-1, 1, 50), np.linspace(0, 1, 50))
+    estimator.update_record(np.linspace(-1, 1, 50), np.linspace(0, 1, 50))
     theta, covariance, samples = estimator.theta, estimator.covariance, estimator.samples
     with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
-        estimator.update(u, y)
+        estimator.update_record(u, y)
     np.testing.assert_array_equal(estimator.theta, theta)
     np.testing.assert_array_equal(estimator.covariance, covariance)
     assert estimator.samples == samples
@@ -108,7 +119,7 @@ def test_the_gil_is_released_while_a_record_runs():
     def stream():
         times["start"] = time.perf_counter()
         started.set()
-        estimator.update(u, y)
+        estimator.update_record(u, y)
         times["end"] = time.perf_counter()
 
     thread = threading.Thread(target=stream)

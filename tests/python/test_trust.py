@@ -17,7 +17,7 @@ SMALL = known_models("small")
 def test_identify_records_the_input_range_and_simulate_warns_outside_it(name):
     truth = SMALL[name]
     u1, u2 = random_levels(800, 5, 0.8, 61), random_levels(800, 5, 0.5, 62) + 0.6
-    model = bonl.identify(truth, [(u1, truth.simulate(u1)), (u2, truth.simulate(u2))])
+    model = bonl.identify(truth, records=[(u1, truth.simulate(u1)), (u2, truth.simulate(u2))])
     assert model.input_range == (min(u1.min(), u2.min()), max(u1.max(), u2.max()))
     assert bonl.load_model(model.to_json()).input_range == model.input_range
     inside = random_levels(200, 5, 0.5, 63)

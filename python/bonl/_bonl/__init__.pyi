@@ -12,7 +12,7 @@ from . import metrics
 from . import plant
 from . import experiment
 from . import control
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'EstimatorTrajectory', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     """
     Numerical trouble found while computing: a diverging simulation, a covariance that lost
@@ -47,17 +47,17 @@ class ARX:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: numpy.typing.ArrayLike | None = None, a: numpy.typing.ArrayLike | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def extrapolated_samples(self, u: typing.Any) -> int:
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
         int: how many samples of u lie outside input_range (0: no extrapolation).
         """
-    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         One-step-ahead prediction from measured data.
         
@@ -81,7 +81,7 @@ class ARX:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         Free-run simulation, from rest or after a measured past.
         
@@ -113,20 +113,20 @@ class ARX:
         spaces per level of nesting, -1 (the default) for one line.
         """
     @property
-    def a(self) -> typing.Any:
+    def a(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a_1..a_na.
         """
     @a.setter
-    def a(self, arg1: typing.Any) -> None:
+    def a(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b(self) -> typing.Any:
+    def b(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b_0..b_nb (b_0 is free for ARX).
         """
     @b.setter
-    def b(self, arg1: typing.Any) -> None:
+    def b(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def input_range(self) -> tuple[float, float]:
@@ -134,7 +134,7 @@ class ARX:
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
-    def input_range(self, arg1: typing.Any) -> None:
+    def input_range(self, arg1: tuple[float, float]) -> None:
         ...
     @property
     def na(self) -> int:
@@ -167,15 +167,15 @@ class ARX:
         tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
         """
     @operating_point.setter
-    def operating_point(self, arg1: typing.Any) -> None:
+    def operating_point(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def orders(self) -> tuple:
+    def orders(self) -> tuple[int, ...]:
         """
         tuple of int: the orders, as ORDERS names them.
         """
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
@@ -185,12 +185,12 @@ class ARX:
         float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
         """
     @theta.setter
-    def theta(self, arg1: typing.Any) -> None:
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
 class Hammerstein:
     """
@@ -226,17 +226,17 @@ class Hammerstein:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: numpy.typing.ArrayLike | None = None, a: numpy.typing.ArrayLike | None = None, f: numpy.typing.ArrayLike | None = None, p: numpy.typing.ArrayLike | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def extrapolated_samples(self, u: typing.Any) -> int:
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
         int: how many samples of u lie outside input_range (0: no extrapolation).
         """
-    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         One-step-ahead prediction from measured data.
         
@@ -260,7 +260,7 @@ class Hammerstein:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         Free-run simulation, from rest or after a measured past.
         
@@ -292,28 +292,28 @@ class Hammerstein:
         spaces per level of nesting, -1 (the default) for one line.
         """
     @property
-    def a(self) -> typing.Any:
+    def a(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a_1..a_na.
         """
     @a.setter
-    def a(self, arg1: typing.Any) -> None:
+    def a(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b(self) -> typing.Any:
+    def b(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b_0..b_nb with b_0 = 1.
         """
     @b.setter
-    def b(self, arg1: typing.Any) -> None:
+    def b(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def f(self) -> typing.Any:
+    def f(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: f_0..f_r, the input polynomial for u >= 0.
         """
     @f.setter
-    def f(self, arg1: typing.Any) -> None:
+    def f(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def input_range(self) -> tuple[float, float]:
@@ -321,7 +321,7 @@ class Hammerstein:
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
-    def input_range(self, arg1: typing.Any) -> None:
+    def input_range(self, arg1: tuple[float, float]) -> None:
         ...
     @property
     def na(self) -> int:
@@ -354,23 +354,23 @@ class Hammerstein:
         tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
         """
     @operating_point.setter
-    def operating_point(self, arg1: typing.Any) -> None:
+    def operating_point(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def orders(self) -> tuple:
+    def orders(self) -> tuple[int, ...]:
         """
         tuple of int: the orders, as ORDERS names them.
         """
     @property
-    def p(self) -> typing.Any:
+    def p(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
         """
     @p.setter
-    def p(self, arg1: typing.Any) -> None:
+    def p(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
@@ -385,12 +385,12 @@ class Hammerstein:
         int: degree of the input polynomials (r >= 1).
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
         """
     @theta.setter
-    def theta(self, arg1: typing.Any) -> None:
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
 class HammersteinWiener:
     """
@@ -430,17 +430,17 @@ class HammersteinWiener:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None, q: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: numpy.typing.ArrayLike | None = None, a: numpy.typing.ArrayLike | None = None, f: numpy.typing.ArrayLike | None = None, p: numpy.typing.ArrayLike | None = None, q: numpy.typing.ArrayLike | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def extrapolated_samples(self, u: typing.Any) -> int:
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
         int: how many samples of u lie outside input_range (0: no extrapolation).
         """
-    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         One-step-ahead prediction from measured data.
         
@@ -464,7 +464,7 @@ class HammersteinWiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         Free-run simulation, from rest or after a measured past.
         
@@ -496,28 +496,28 @@ class HammersteinWiener:
         spaces per level of nesting, -1 (the default) for one line.
         """
     @property
-    def a(self) -> typing.Any:
+    def a(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a_1..a_na.
         """
     @a.setter
-    def a(self, arg1: typing.Any) -> None:
+    def a(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b(self) -> typing.Any:
+    def b(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b_0..b_nb with b_0 = 1.
         """
     @b.setter
-    def b(self, arg1: typing.Any) -> None:
+    def b(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def f(self) -> typing.Any:
+    def f(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: f_0..f_r, the input polynomial for u >= 0.
         """
     @f.setter
-    def f(self, arg1: typing.Any) -> None:
+    def f(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def input_range(self) -> tuple[float, float]:
@@ -525,7 +525,7 @@ class HammersteinWiener:
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
-    def input_range(self, arg1: typing.Any) -> None:
+    def input_range(self, arg1: tuple[float, float]) -> None:
         ...
     @property
     def na(self) -> int:
@@ -558,23 +558,23 @@ class HammersteinWiener:
         tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
         """
     @operating_point.setter
-    def operating_point(self, arg1: typing.Any) -> None:
+    def operating_point(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def orders(self) -> tuple:
+    def orders(self) -> tuple[int, ...]:
         """
         tuple of int: the orders, as ORDERS names them.
         """
     @property
-    def p(self) -> typing.Any:
+    def p(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
         """
     @p.setter
-    def p(self, arg1: typing.Any) -> None:
+    def p(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
@@ -584,12 +584,12 @@ class HammersteinWiener:
         float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
         """
     @property
-    def q(self) -> typing.Any:
+    def q(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: q_1..q_r1 with q_1 = 1.
         """
     @q.setter
-    def q(self, arg1: typing.Any) -> None:
+    def q(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def r(self) -> int:
@@ -602,12 +602,12 @@ class HammersteinWiener:
         int: degree of the output polynomial (2..32).
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
         """
     @theta.setter
-    def theta(self, arg1: typing.Any) -> None:
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
 class PseudoHammersteinWiener:
     """
@@ -645,17 +645,17 @@ class PseudoHammersteinWiener:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, p: typing.Any = None, c: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: numpy.typing.ArrayLike | None = None, a: numpy.typing.ArrayLike | None = None, f: numpy.typing.ArrayLike | None = None, p: numpy.typing.ArrayLike | None = None, c: float | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def extrapolated_samples(self, u: typing.Any) -> int:
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
         int: how many samples of u lie outside input_range (0: no extrapolation).
         """
-    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         One-step-ahead prediction from measured data.
         
@@ -679,7 +679,7 @@ class PseudoHammersteinWiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         Free-run simulation, from rest or after a measured past.
         
@@ -711,36 +711,36 @@ class PseudoHammersteinWiener:
         spaces per level of nesting, -1 (the default) for one line.
         """
     @property
-    def a(self) -> typing.Any:
+    def a(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a_1..a_na.
         """
     @a.setter
-    def a(self, arg1: typing.Any) -> None:
+    def a(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b(self) -> typing.Any:
+    def b(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b_0..b_nb with b_0 = 1.
         """
     @b.setter
-    def b(self, arg1: typing.Any) -> None:
+    def b(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def c(self) -> typing.Any:
+    def c(self) -> float:
         """
         float: backlash half-width.
         """
     @c.setter
-    def c(self, arg1: typing.Any) -> None:
+    def c(self, arg1: float) -> None:
         ...
     @property
-    def f(self) -> typing.Any:
+    def f(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: f_0..f_r, the input polynomial for u >= 0.
         """
     @f.setter
-    def f(self, arg1: typing.Any) -> None:
+    def f(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def input_range(self) -> tuple[float, float]:
@@ -748,7 +748,7 @@ class PseudoHammersteinWiener:
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
-    def input_range(self, arg1: typing.Any) -> None:
+    def input_range(self, arg1: tuple[float, float]) -> None:
         ...
     @property
     def na(self) -> int:
@@ -781,23 +781,23 @@ class PseudoHammersteinWiener:
         tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
         """
     @operating_point.setter
-    def operating_point(self, arg1: typing.Any) -> None:
+    def operating_point(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def orders(self) -> tuple:
+    def orders(self) -> tuple[int, ...]:
         """
         tuple of int: the orders, as ORDERS names them.
         """
     @property
-    def p(self) -> typing.Any:
+    def p(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: p_0..p_r, its change for u < 0 (p_l = g_l - f_l).
         """
     @p.setter
-    def p(self, arg1: typing.Any) -> None:
+    def p(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
@@ -812,12 +812,12 @@ class PseudoHammersteinWiener:
         int: degree of the input polynomials (r >= 1).
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
         """
     @theta.setter
-    def theta(self, arg1: typing.Any) -> None:
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
 class Wiener:
     """
@@ -851,17 +851,17 @@ class Wiener:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, q: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r1: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: numpy.typing.ArrayLike | None = None, a: numpy.typing.ArrayLike | None = None, q: numpy.typing.ArrayLike | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def extrapolated_samples(self, u: typing.Any) -> int:
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
         int: how many samples of u lie outside input_range (0: no extrapolation).
         """
-    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         One-step-ahead prediction from measured data.
         
@@ -885,7 +885,7 @@ class Wiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         Free-run simulation, from rest or after a measured past.
         
@@ -917,20 +917,20 @@ class Wiener:
         spaces per level of nesting, -1 (the default) for one line.
         """
     @property
-    def a(self) -> typing.Any:
+    def a(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a_1..a_na.
         """
     @a.setter
-    def a(self, arg1: typing.Any) -> None:
+    def a(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b(self) -> typing.Any:
+    def b(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain).
         """
     @b.setter
-    def b(self, arg1: typing.Any) -> None:
+    def b(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def input_range(self) -> tuple[float, float]:
@@ -938,7 +938,7 @@ class Wiener:
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
-    def input_range(self, arg1: typing.Any) -> None:
+    def input_range(self, arg1: tuple[float, float]) -> None:
         ...
     @property
     def na(self) -> int:
@@ -971,15 +971,15 @@ class Wiener:
         tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
         """
     @operating_point.setter
-    def operating_point(self, arg1: typing.Any) -> None:
+    def operating_point(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def orders(self) -> tuple:
+    def orders(self) -> tuple[int, ...]:
         """
         tuple of int: the orders, as ORDERS names them.
         """
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
@@ -989,12 +989,12 @@ class Wiener:
         float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
         """
     @property
-    def q(self) -> typing.Any:
+    def q(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: q_1..q_r1 with q_1 = 1.
         """
     @q.setter
-    def q(self, arg1: typing.Any) -> None:
+    def q(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def r1(self) -> int:
@@ -1002,12 +1002,12 @@ class Wiener:
         int: degree of the output polynomial (2..32).
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
         """
     @theta.setter
-    def theta(self, arg1: typing.Any) -> None:
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
 class WienerHammerstein:
     """
@@ -1055,17 +1055,17 @@ class WienerHammerstein:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na1: typing.SupportsInt | typing.SupportsIndex, nb1: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, na2: typing.SupportsInt | typing.SupportsIndex, nb2: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b1: typing.Any = None, a1: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, b2: typing.Any = None, a2: typing.Any = None) -> None:
+    def __init__(self, na1: typing.SupportsInt | typing.SupportsIndex, nb1: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, na2: typing.SupportsInt | typing.SupportsIndex, nb2: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b1: numpy.typing.ArrayLike | None = None, a1: numpy.typing.ArrayLike | None = None, f: numpy.typing.ArrayLike | None = None, knots: numpy.typing.ArrayLike | None = None, g: numpy.typing.ArrayLike | None = None, b2: numpy.typing.ArrayLike | None = None, a2: numpy.typing.ArrayLike | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def extrapolated_samples(self, u: typing.Any) -> int:
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
         int: how many samples of u lie outside input_range (0: no extrapolation).
         """
-    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         One-step-ahead prediction from measured data.
         
@@ -1089,7 +1089,7 @@ class WienerHammerstein:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         Free-run simulation, from rest or after a measured past.
         
@@ -1121,52 +1121,52 @@ class WienerHammerstein:
         spaces per level of nesting, -1 (the default) for one line.
         """
     @property
-    def a1(self) -> typing.Any:
+    def a1(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a1_1..a1_na1.
         """
     @a1.setter
-    def a1(self, arg1: typing.Any) -> None:
+    def a1(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def a2(self) -> typing.Any:
+    def a2(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a2_1..a2_na2.
         """
     @a2.setter
-    def a2(self, arg1: typing.Any) -> None:
+    def a2(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b1(self) -> typing.Any:
+    def b1(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b1_0..b1_nb1 (free: f_1 = b2_0 = 1 fix the other gains).
         """
     @b1.setter
-    def b1(self, arg1: typing.Any) -> None:
+    def b1(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b2(self) -> typing.Any:
+    def b2(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b2_0..b2_nb2 with b2_0 = 1.
         """
     @b2.setter
-    def b2(self, arg1: typing.Any) -> None:
+    def b2(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def f(self) -> typing.Any:
+    def f(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: f_1..f_r with f_1 = 1.
         """
     @f.setter
-    def f(self, arg1: typing.Any) -> None:
+    def f(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def g(self) -> typing.Any:
+    def g(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: g_1..g_nh, the change of slope outward of each knot.
         """
     @g.setter
-    def g(self, arg1: typing.Any) -> None:
+    def g(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def input_range(self) -> tuple[float, float]:
@@ -1174,15 +1174,15 @@ class WienerHammerstein:
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
-    def input_range(self, arg1: typing.Any) -> None:
+    def input_range(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def knots(self) -> typing.Any:
+    def knots(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated).
         """
     @knots.setter
-    def knots(self, arg1: typing.Any) -> None:
+    def knots(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def na1(self) -> int:
@@ -1230,15 +1230,15 @@ class WienerHammerstein:
         tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
         """
     @operating_point.setter
-    def operating_point(self, arg1: typing.Any) -> None:
+    def operating_point(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def orders(self) -> tuple:
+    def orders(self) -> tuple[int, ...]:
         """
         tuple of int: the orders, as ORDERS names them.
         """
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
@@ -1253,12 +1253,12 @@ class WienerHammerstein:
         int: degree of the static polynomial (1..32; 1: no polynomial terms).
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
         """
     @theta.setter
-    def theta(self, arg1: typing.Any) -> None:
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
 class NonlinearFeedback:
     """
@@ -1310,17 +1310,17 @@ class NonlinearFeedback:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, nd: typing.SupportsInt | typing.SupportsIndex, nv: typing.SupportsInt | typing.SupportsIndex, np: typing.SupportsInt | typing.SupportsIndex = 0, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, knots: typing.Any = None, g: typing.Any = None, thresholds: typing.Any = None, w: typing.Any = None, d: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, nh: typing.SupportsInt | typing.SupportsIndex, nd: typing.SupportsInt | typing.SupportsIndex, nv: typing.SupportsInt | typing.SupportsIndex, np: typing.SupportsInt | typing.SupportsIndex = 0, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: numpy.typing.ArrayLike | None = None, a: numpy.typing.ArrayLike | None = None, f: numpy.typing.ArrayLike | None = None, knots: numpy.typing.ArrayLike | None = None, g: numpy.typing.ArrayLike | None = None, thresholds: numpy.typing.ArrayLike | None = None, w: numpy.typing.ArrayLike | None = None, d: numpy.typing.ArrayLike | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def extrapolated_samples(self, u: typing.Any) -> int:
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
         int: how many samples of u lie outside input_range (0: no extrapolation).
         """
-    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         One-step-ahead prediction from measured data.
         
@@ -1344,7 +1344,7 @@ class NonlinearFeedback:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         Free-run simulation, from rest or after a measured past.
         
@@ -1376,44 +1376,44 @@ class NonlinearFeedback:
         spaces per level of nesting, -1 (the default) for one line.
         """
     @property
-    def a(self) -> typing.Any:
+    def a(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a_1..a_na.
         """
     @a.setter
-    def a(self, arg1: typing.Any) -> None:
+    def a(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b(self) -> typing.Any:
+    def b(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b_0..b_nb.
         """
     @b.setter
-    def b(self, arg1: typing.Any) -> None:
+    def b(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def d(self) -> typing.Any:
+    def d(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: d_1..d_nd with d_1 = 1.
         """
     @d.setter
-    def d(self, arg1: typing.Any) -> None:
+    def d(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def f(self) -> typing.Any:
+    def f(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: f_2..f_r, the feedback polynomial's coefficients (none for r = 1).
         """
     @f.setter
-    def f(self, arg1: typing.Any) -> None:
+    def f(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def g(self) -> typing.Any:
+    def g(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: g_1..g_nh, the change of slope outward of each knot.
         """
     @g.setter
-    def g(self, arg1: typing.Any) -> None:
+    def g(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def input_range(self) -> tuple[float, float]:
@@ -1421,15 +1421,15 @@ class NonlinearFeedback:
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
-    def input_range(self, arg1: typing.Any) -> None:
+    def input_range(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def knots(self) -> typing.Any:
+    def knots(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated).
         """
     @knots.setter
-    def knots(self, arg1: typing.Any) -> None:
+    def knots(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def na(self) -> int:
@@ -1482,15 +1482,15 @@ class NonlinearFeedback:
         tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
         """
     @operating_point.setter
-    def operating_point(self, arg1: typing.Any) -> None:
+    def operating_point(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def orders(self) -> tuple:
+    def orders(self) -> tuple[int, ...]:
         """
         tuple of int: the orders, as ORDERS names them.
         """
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
@@ -1505,28 +1505,28 @@ class NonlinearFeedback:
         int: degree of the feedback polynomial (1..32; 1: no polynomial terms).
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
         """
     @theta.setter
-    def theta(self, arg1: typing.Any) -> None:
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def thresholds(self) -> typing.Any:
+    def thresholds(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated).
         """
     @thresholds.setter
-    def thresholds(self, arg1: typing.Any) -> None:
+    def thresholds(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def w(self) -> typing.Any:
+    def w(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: w_1..w_np, the plays' weights.
         """
     @w.setter
-    def w(self, arg1: typing.Any) -> None:
+    def w(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
 class PrandtlIshlinskiiHammerstein:
     """
@@ -1566,17 +1566,17 @@ class PrandtlIshlinskiiHammerstein:
         ...
     def __getstate__(self) -> str:
         ...
-    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, np: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: typing.Any = None, a: typing.Any = None, f: typing.Any = None, thresholds: typing.Any = None, g: typing.Any = None) -> None:
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, r: typing.SupportsInt | typing.SupportsIndex, np: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: numpy.typing.ArrayLike | None = None, a: numpy.typing.ArrayLike | None = None, f: numpy.typing.ArrayLike | None = None, thresholds: numpy.typing.ArrayLike | None = None, g: numpy.typing.ArrayLike | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: str) -> None:
         ...
-    def extrapolated_samples(self, u: typing.Any) -> int:
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
         int: how many samples of u lie outside input_range (0: no extrapolation).
         """
-    def predict(self, u: typing.Any, y: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         One-step-ahead prediction from measured data.
         
@@ -1600,7 +1600,7 @@ class PrandtlIshlinskiiHammerstein:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
         """
-    def simulate(self, u: typing.Any, initial: typing.Any = None) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
         Free-run simulation, from rest or after a measured past.
         
@@ -1632,36 +1632,36 @@ class PrandtlIshlinskiiHammerstein:
         spaces per level of nesting, -1 (the default) for one line.
         """
     @property
-    def a(self) -> typing.Any:
+    def a(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: a_1..a_na.
         """
     @a.setter
-    def a(self, arg1: typing.Any) -> None:
+    def a(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def b(self) -> typing.Any:
+    def b(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: b_0..b_nb with b_0 = 1.
         """
     @b.setter
-    def b(self, arg1: typing.Any) -> None:
+    def b(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def f(self) -> typing.Any:
+    def f(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: f_0..f_r, the input polynomial.
         """
     @f.setter
-    def f(self, arg1: typing.Any) -> None:
+    def f(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def g(self) -> typing.Any:
+    def g(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: g_1..g_np, the plays' weights.
         """
     @g.setter
-    def g(self, arg1: typing.Any) -> None:
+    def g(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
     def input_range(self) -> tuple[float, float]:
@@ -1669,7 +1669,7 @@ class PrandtlIshlinskiiHammerstein:
         tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
         """
     @input_range.setter
-    def input_range(self, arg1: typing.Any) -> None:
+    def input_range(self, arg1: tuple[float, float]) -> None:
         ...
     @property
     def na(self) -> int:
@@ -1707,15 +1707,15 @@ class PrandtlIshlinskiiHammerstein:
         tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
         """
     @operating_point.setter
-    def operating_point(self, arg1: typing.Any) -> None:
+    def operating_point(self, arg1: tuple[float, float]) -> None:
         ...
     @property
-    def orders(self) -> tuple:
+    def orders(self) -> tuple[int, ...]:
         """
         tuple of int: the orders, as ORDERS names them.
         """
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
         """
         dict: every parameter block by name, as the keyword arguments of the constructor take them.
         """
@@ -1730,20 +1730,20 @@ class PrandtlIshlinskiiHammerstein:
         int: degree of the input polynomials (r >= 1).
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the parameter vector in the order of eq. (19).
         """
     @theta.setter
-    def theta(self, arg1: typing.Any) -> None:
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
     @property
-    def thresholds(self) -> typing.Any:
+    def thresholds(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated).
         """
     @thresholds.setter
-    def thresholds(self, arg1: typing.Any) -> None:
+    def thresholds(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
 class UpdateStatus:
     """
@@ -1848,62 +1848,63 @@ class Estimator:
     model : one of bonl.MODELS
         Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
         c = 0 for output_error).
-    method : {'output_error', 'equation_error', 'paper'}
-        As for identify; default 'output_error' (docs/explanation/algorithm.md).
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
-        As for identify; default the method's ('adaptive' for output_error, the paper's schedule for
-        the others).
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     c0 : float, default 0.01
+        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     trace_ceiling : float, optional
         trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
         would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
-        (the paper's algorithm exactly as written). Default: 100 for output_error, 1 for the others.
+        (the paper's algorithm exactly as written). Default: 10 for output_error, 1 for the others.
     recover_after : int, default 0
         After this many refused updates in a row, reset P to p0 I automatically (keeping theta);
         0: never (check ``diverged`` and call ``recover()``).
     stability_radius : float, default 0.999
         output_error: the linear block's poles are kept inside this radius (updates shortened).
     backlash_hold : int, default 200
-        output_error, P-H-W: c is held at 0 for this many samples from the start.
+        output_error, P-H-W: c is held at 0 for this many samples after each start from rest.
     """
     @typing.overload
-    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
         ...
     def recover(self) -> None:
         """
         Leave the diverged state: P = p0 I, theta kept (a covariance reset); the counters in health stay.
         """
-    def reset(self) -> None:
+    def reset(self, theta0: numpy.typing.ArrayLike | None = None) -> None:
         """
-        Back to the initial estimate, P = p0 I, internal variables at rest.
-        """
-    def reset_to(self, theta: typing.Any) -> None:
-        """
-        Restart from the estimate theta (a warm start: the model's parameter vector, e.g. an identified
-        model's theta), P = p0 I, internal variables at rest. ValueError for theta of another length.
+        Back to the initial estimate, P = p0 I, internal variables at rest; or, given theta0, restart from
+        the estimate theta0 (a warm start: the model's parameter vector, e.g. an identified model's theta).
+        ValueError for theta0 of another length.
         """
     def start_pass(self) -> None:
         """
@@ -1917,39 +1918,51 @@ class Estimator:
         """
         Stop recording and free the buffer.
         """
-    def trajectory(self) -> dict:
+    def trajectory(self) -> EstimatorTrajectory:
         """
         What was recorded, oldest first.
         
         Returns
         -------
-        dict
+        EstimatorTrajectory
             ``sample``: int64 array (k,), sample number since reset(); ``theta``: array (k, n), the estimate
             after each update; ``internal``: array (k,), the internal variable x(k) the update used (NaN for
             ARX); ``status``: list of UpdateStatus.
         """
-    @typing.overload
-    def update(self, u: numpy.ndarray, y: numpy.ndarray, *, prediction: bool = False, theta: bool = False) -> typing.Any:
-        ...
-    @typing.overload
     def update(self, u: typing.SupportsFloat | typing.SupportsIndex, y: typing.SupportsFloat | typing.SupportsIndex) -> UpdateStatus:
         """
-        Process one sample, or a record.
+        Process one sample.
         
         Parameters
         ----------
-        u, y : float, or 1-D numpy arrays of equal length
-            Input and measured output: one sample, or a record processed in one call with the GIL released
-            (the same, bit for bit, as calling update on each sample in turn).
-        prediction, theta : bool, default False
-            Arrays only: also return last_prediction, and theta, after every sample.
+        u, y : float
+            Input and measured output.
         
         Returns
         -------
-        UpdateStatus, for one sample; UpdateResults for arrays (``status``, an int8 array of
-        ``int(UpdateStatus.<name>)`` codes, and ``prediction``, ``theta`` when asked for).
+        UpdateStatus
             A non-finite u or y is rejected (rejected_non_finite) and leaves the state untouched.
             An Estimator must not be used from two threads at once.
+        """
+    def update_record(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, *, prediction: bool = False, theta: bool = False) -> UpdateResults:
+        """
+        Process a record in one call.
+        
+        C++'s ``estimator.update(u, y, on_sample)``, the GIL released: the same, bit for bit, as calling
+        update on each sample in turn.
+        
+        Parameters
+        ----------
+        u, y : array_like, shape (n,)
+            Input and measured output, of equal length.
+        prediction, theta : bool, default False
+            Also return last_prediction, and theta, after every sample.
+        
+        Returns
+        -------
+        UpdateResults
+            ``status``, an int8 array of ``int(UpdateStatus.<name>)`` codes (a non-finite sample is
+            rejected_non_finite and leaves the state untouched), and ``prediction``, ``theta`` when asked for.
         """
     @property
     def covariance(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
@@ -1977,7 +1990,7 @@ class Estimator:
         float: the adaptive memory's current length 1 / (1 - lambda) in samples (NaN for a step schedule).
         """
     @property
-    def model(self) -> typing.Any:
+    def model(self) -> ARX | Hammerstein | HammersteinWiener | PseudoHammersteinWiener | Wiener | WienerHammerstein | NonlinearFeedback | PrandtlIshlinskiiHammerstein:
         """
         The current estimate as a model.
         """
@@ -1992,16 +2005,16 @@ class Estimator:
         int: samples since the last pass started.
         """
     @property
-    def theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: current estimate (eq. 19 order).
         """
 class UpdateResults:
     """
-    What Estimator.update returns for arrays of samples.
+    What Estimator.update_record returns for a record.
     """
     @property
-    def prediction(self) -> typing.Any:
+    def prediction(self) -> numpy.typing.NDArray[numpy.float64] | None:
         """
         numpy.ndarray or None: last_prediction after each sample (when asked for)
         """
@@ -2011,9 +2024,37 @@ class UpdateResults:
         numpy.ndarray of int8: each sample's UpdateStatus, as int(UpdateStatus.<name>)
         """
     @property
-    def theta(self) -> typing.Any:
+    def theta(self) -> numpy.typing.NDArray[numpy.float64] | None:
         """
         numpy.ndarray (samples, n) or None: theta after each sample (when asked for)
+        """
+class EstimatorTrajectory:
+    """
+    What Estimator.trajectory returns: the recorded updates, oldest first.
+    """
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def internal(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray, shape (k,): the internal variable x(k) each update used (NaN for ARX)
+        """
+    @property
+    def sample(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        numpy.ndarray of int64, shape (k,): each update's sample number since reset()
+        """
+    @property
+    def status(self) -> list[UpdateStatus]:
+        """
+        list of UpdateStatus: each update's status
+        """
+    @property
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray, shape (k, n): the estimate after each update
         """
 class _SelectionData:
     """
@@ -2103,12 +2144,12 @@ def _select(candidates: collections.abc.Sequence[PrandtlIshlinskiiHammerstein], 
     """
     C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
     """
-def _selection_data(u: typing.Any, y: typing.Any = None, *, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> _SelectionData:
+def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> _SelectionData:
     """
     bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. The keyword arguments after window are identify's.
     """
 @typing.overload
-def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> ARX:
+def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> ARX:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2117,16 +2158,17 @@ def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output. For several records (experiments of the same system), give them as
-        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-        Each record is simulated from rest; no history is carried across records.
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2136,15 +2178,17 @@ def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2168,7 +2212,7 @@ def identify(model: ARX, u: typing.Any, y: typing.Any = None, *, passes: typing.
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> Hammerstein:
+def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Hammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2177,16 +2221,17 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes:
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output. For several records (experiments of the same system), give them as
-        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-        Each record is simulated from rest; no history is carried across records.
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2196,15 +2241,17 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes:
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2228,7 +2275,7 @@ def identify(model: Hammerstein, u: typing.Any, y: typing.Any = None, *, passes:
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> HammersteinWiener:
+def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> HammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2237,16 +2284,17 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, p
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output. For several records (experiments of the same system), give them as
-        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-        Each record is simulated from rest; no history is carried across records.
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2256,15 +2304,17 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, p
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2288,7 +2338,7 @@ def identify(model: HammersteinWiener, u: typing.Any, y: typing.Any = None, *, p
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> PseudoHammersteinWiener:
+def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PseudoHammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2297,16 +2347,17 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output. For several records (experiments of the same system), give them as
-        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-        Each record is simulated from rest; no history is carried across records.
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2316,15 +2367,17 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2348,7 +2401,7 @@ def identify(model: PseudoHammersteinWiener, u: typing.Any, y: typing.Any = None
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> Wiener:
+def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Wiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2357,16 +2410,17 @@ def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typi
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output. For several records (experiments of the same system), give them as
-        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-        Each record is simulated from rest; no history is carried across records.
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2376,15 +2430,17 @@ def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typi
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2408,7 +2464,7 @@ def identify(model: Wiener, u: typing.Any, y: typing.Any = None, *, passes: typi
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: WienerHammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> WienerHammerstein:
+def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> WienerHammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2417,16 +2473,17 @@ def identify(model: WienerHammerstein, u: typing.Any, y: typing.Any = None, *, p
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output. For several records (experiments of the same system), give them as
-        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-        Each record is simulated from rest; no history is carried across records.
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2436,15 +2493,17 @@ def identify(model: WienerHammerstein, u: typing.Any, y: typing.Any = None, *, p
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2468,7 +2527,7 @@ def identify(model: WienerHammerstein, u: typing.Any, y: typing.Any = None, *, p
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: NonlinearFeedback, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> NonlinearFeedback:
+def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> NonlinearFeedback:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2477,16 +2536,17 @@ def identify(model: NonlinearFeedback, u: typing.Any, y: typing.Any = None, *, p
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output. For several records (experiments of the same system), give them as
-        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-        Each record is simulated from rest; no history is carried across records.
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2496,15 +2556,17 @@ def identify(model: NonlinearFeedback, u: typing.Any, y: typing.Any = None, *, p
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2528,7 +2590,7 @@ def identify(model: NonlinearFeedback, u: typing.Any, y: typing.Any = None, *, p
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PrandtlIshlinskiiHammerstein, u: typing.Any, y: typing.Any = None, *, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: typing.Any = None) -> PrandtlIshlinskiiHammerstein:
+def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PrandtlIshlinskiiHammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2537,16 +2599,17 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: typing.Any, y: typing.Any =
     model : one of bonl.MODELS
         Gives the structure (orders); its parameter values are not used.
     u, y : array_like, shape (n,)
-        Input and measured output. For several records (experiments of the same system), give them as
-        a list of (u, y) pairs in place of u and leave y out: ``identify(model, [(u1, y1), (u2, y2)])``.
-        Each record is simulated from rest; no history is carried across records.
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
     passes : int, default 1
         Passes of the recursive estimator over the record(s) (the paper's step 5).
-    method : {'output_error', 'equation_error', 'paper'}
-        The recursive stage. 'output_error' (default): recursive prediction-error method on the
-        free-run simulation error. 'equation_error': internal variables from the measured output (ARX:
-        least squares). 'paper': eqs. (21)-(31) as written. For 'output_error' and 'equation_error' the
-        recursive estimate is then refined by minimising the free-run simulation error.
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
     forgetting : float, tuple or 'adaptive', optional
         Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
         adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
@@ -2556,15 +2619,17 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: typing.Any, y: typing.Any =
     c0 : float, default 0.01
         Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
-        Levenberg-Marquardt iterations of the refinement (0: none, the recursive estimate alone).
-        The refinement uses the analytic Jacobian of the simulation and keeps the linear block stable.
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
     normalise : bool, default True
         Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
         the model in the data's units, so that the settings mean the same whatever the units. The recursive
         estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
         estimator's, in the data's units.
-    operating_point : {None, 'mean', 'initial'}
-        The identified model's operating point (u0, y0): None (default) keeps the structure's
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
     
@@ -2587,7 +2652,7 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: typing.Any, y: typing.Any =
     bonl.NumericalError
         The estimator broke down numerically.
     """
-def load_model(text: str) -> typing.Any:
+def load_model(text: str) -> ARX | Hammerstein | HammersteinWiener | PseudoHammersteinWiener | Wiener | WienerHammerstein | NonlinearFeedback | PrandtlIshlinskiiHammerstein:
     """
     Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
     

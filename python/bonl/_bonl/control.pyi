@@ -6,7 +6,7 @@ import bonl._bonl
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AdaptiveInverse', 'InverseModel', 'InverseRun', 'InverseStatus', 'InverseStep']
+__all__: list[str] = ['AdaptiveInverse', 'AdaptiveInverseHealth', 'InverseModel', 'InverseRun', 'InverseStatus', 'InverseStep']
 class InverseStatus:
     """
     What an inverse reports with a command: flags, exact (0) when the model follows the reference. Combined flags are their sum (status & InverseStatus.saturated).
@@ -114,7 +114,7 @@ class InverseRun:
     The commands for a whole reference.
     """
     @property
-    def command(self) -> numpy.ndarray:
+    def command(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: u(k) for every sample of the reference
         """
@@ -171,7 +171,7 @@ class InverseModel:
     @typing.overload
     def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
-    def commands(self, reference: typing.Any) -> InverseRun:
+    def commands(self, reference: numpy.typing.ArrayLike) -> InverseRun:
         """
         The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
         
@@ -183,7 +183,7 @@ class InverseModel:
         """
         Back to rest, as the model's free run starts.
         """
-    def step(self, reference: typing.Any) -> InverseStep:
+    def step(self, reference: float | numpy.typing.ArrayLike) -> InverseStep:
         """
         The command u(k) for the reference ahead.
         
@@ -224,12 +224,12 @@ class InverseModel:
         int: how far ahead the last reference of a step lies (nk, plus ZPETC's preview)
         """
     @property
-    def stable_factor(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def stable_factor(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: B_a, B's factor with the zeros inside the unit circle (b_0 included)
         """
     @property
-    def unstable_factor(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+    def unstable_factor(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: B_u, the factor with the others, leading 1 ([1.0] when minimum phase)
         """
@@ -237,6 +237,42 @@ class InverseModel:
     def window_size(self) -> int:
         """
         int: how many reference samples a step takes (1 when B is minimum phase)
+        """
+class AdaptiveInverseHealth:
+    """
+    What an AdaptiveInverse's guard did.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def last_refusal(self) -> str:
+        """
+        str: why the last refused estimate was refused ('' if none)
+        """
+    @property
+    def rederivations(self) -> int:
+        """
+        int: new inverses put in use
+        """
+    @property
+    def refused_covariance(self) -> int:
+        """
+        int: estimates refused: trace(P) above the limit
+        """
+    @property
+    def refused_diverged(self) -> int:
+        """
+        int: estimates refused: the estimator had diverged
+        """
+    @property
+    def refused_no_inverse(self) -> int:
+        """
+        int: estimates refused: InverseModel refused the estimate
+        """
+    @property
+    def refused_unstable(self) -> int:
+        """
+        int: estimates refused: a pole at or beyond stability_radius
         """
 class AdaptiveInverse:
     """
@@ -254,8 +290,16 @@ class AdaptiveInverse:
         The identified model to start from.
     command_min, command_max, backlash_band, backlash_band_per_c
         As for InverseModel.
-    method, forgetting, p0
-        As for Estimator (default: output_error, the method's forgetting and p0).
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
     rederive_every : int, default 100
     max_covariance_trace : float, default 10
     stability_radius : float, default 0.999
@@ -263,19 +307,19 @@ class AdaptiveInverse:
     Raises ValueError for bad options or a model without an inverse.
     """
     @typing.overload
-    def __init__(self, model: bonl._bonl.ARX, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+    def __init__(self, model: bonl._bonl.ARX, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.Hammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+    def __init__(self, model: bonl._bonl.Hammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.HammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+    def __init__(self, model: bonl._bonl.HammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.PseudoHammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+    def __init__(self, model: bonl._bonl.PseudoHammersteinWiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.Wiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+    def __init__(self, model: bonl._bonl.Wiener, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
         ...
     @typing.overload
     def __init__(self, model: bonl._bonl.WienerHammerstein, **kwargs) -> None:
@@ -284,34 +328,34 @@ class AdaptiveInverse:
     def __init__(self, model: bonl._bonl.NonlinearFeedback, **kwargs) -> None:
         ...
     @typing.overload
-    def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: typing.Any = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+    def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
         ...
     def rederive(self) -> bool:
         """
         Derive the inverse from the estimate now, if the guard trusts it; returns whether it is in use.
         """
-    def step(self, reference: typing.Any) -> InverseStep:
+    def step(self, reference: float | numpy.typing.ArrayLike) -> InverseStep:
         """
         The command for the reference ahead, from the inverse in use (as InverseModel.step).
         """
-    def update(self, u: typing.Any, y: typing.Any) -> bonl._bonl.UpdateStatus:
+    def update(self, u: float, y: float) -> bonl._bonl.UpdateStatus:
         """
         One sample of the plant: u the command applied and y the output measured. Returns the estimator's
         UpdateStatus (rejected_non_finite for a NaN or infinite value: nothing changes).
         """
     @property
-    def estimate(self) -> typing.Any:
+    def estimate(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.PrandtlIshlinskiiHammerstein:
         """
         The estimator's current estimate, as a model.
         """
     @property
-    def health(self) -> dict:
+    def health(self) -> AdaptiveInverseHealth:
         """
-        dict: rederivations, the refusals by reason (refused_diverged, refused_covariance,
-        refused_unstable, refused_no_inverse) and last_refusal (why, '' if none).
+        AdaptiveInverseHealth: rederivations, the refusals by reason (refused_diverged,
+        refused_covariance, refused_unstable, refused_no_inverse) and last_refusal (why, '' if none).
         """
     @property
-    def model(self) -> typing.Any:
+    def model(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.PrandtlIshlinskiiHammerstein:
         """
         The model the inverse in use was derived from.
         """

@@ -3,10 +3,12 @@ The paper's experiment on the simulated plant (bonl/experiment.hpp): ``run_paper
 result, and the records' signal processing (``low_pass``, ``differentiate``).
 """
 from __future__ import annotations
+import bonl._bonl
 import bonl._bonl.plant
 import numpy
+import numpy.typing
 import typing
-__all__: tuple = ('run_paper_experiment', 'PaperExperimentResult', 'MethodResult', 'ModelResult', 'Record', 'run_tracking_experiment', 'TrackingResult', 'TrackingRun', 'published_score', 'low_pass', 'differentiate')
+__all__: tuple = ('run_paper_experiment', 'PaperExperimentResult', 'MethodResult', 'ModelResult', 'Record', 'Timings', 'run_tracking_experiment', 'TrackingResult', 'TrackingRun', 'published_score', 'low_pass', 'differentiate')
 class Record:
     """
     One processed record of the experiment, on the output grid (bonl/experiment/records.hpp).
@@ -14,12 +16,12 @@ class Record:
     def __repr__(self) -> str:
         ...
     @property
-    def angle(self) -> numpy.ndarray:
+    def angle(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the averaged, low-passed measured angle [rad].
         """
     @property
-    def input(self) -> numpy.ndarray:
+    def input(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: u = V - V0 [V], the identification input.
         """
@@ -44,17 +46,17 @@ class Record:
         int: CVODE's internal steps for the run.
         """
     @property
-    def time(self) -> numpy.ndarray:
+    def time(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: [s].
         """
     @property
-    def true_velocity(self) -> numpy.ndarray:
+    def true_velocity(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the plant's joint rate, noise-free and unfiltered [rad/s].
         """
     @property
-    def velocity(self) -> numpy.ndarray:
+    def velocity(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: y, its numerical derivative [rad/s]: what the models are fitted on.
         """
@@ -70,7 +72,7 @@ class ModelResult:
         str: how the paper's tables write it (e.g. 'H-W').
         """
     @property
-    def model(self) -> typing.Any:
+    def model(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.WienerHammerstein | bonl._bonl.NonlinearFeedback | bonl._bonl.PrandtlIshlinskiiHammerstein | None:
         """
         The identified model (identify(): the recursive estimate refined), as its bonl class; None if
         its parameters are not finite.
@@ -86,7 +88,7 @@ class ModelResult:
         str: the model's name (its class name, e.g. 'HammersteinWiener').
         """
     @property
-    def online_model(self) -> typing.Any:
+    def online_model(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.WienerHammerstein | bonl._bonl.NonlinearFeedback | bonl._bonl.PrandtlIshlinskiiHammerstein | None:
         """
         The recursive estimator's model alone after one pass (no refinement); None if not finite.
         """
@@ -106,7 +108,7 @@ class ModelResult:
         list of (str, float): the parameters as the rows of the paper's Table 1, ('b0', b_0), ...
         """
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, float | list[float]]:
         """
         dict: every parameter block by name (lists of float, a float for a one-number block).
         """
@@ -121,7 +123,7 @@ class ModelResult:
         float: wall time of identify() [s].
         """
     @property
-    def simulated(self) -> numpy.ndarray:
+    def simulated(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the free-run validation velocity [rad/s]; NaN when unstable.
         """
@@ -137,19 +139,46 @@ class MethodResult:
         str: 'output_error' or 'paper'.
         """
     @property
-    def models(self) -> dict:
+    def models(self) -> dict[str, ModelResult]:
         """
         dict[str, ModelResult]: by model name, in the order of the paper's equations (ARX first).
         """
     @property
-    def mse(self) -> dict:
+    def mse(self) -> dict[str, float]:
         """
         dict[str, float]: validation MSE by model name [(rad/s)^2].
         """
     @property
-    def online_mse(self) -> dict:
+    def online_mse(self) -> dict[str, float]:
         """
         dict[str, float]: the online estimates' validation MSE by model name [(rad/s)^2].
+        """
+class Timings:
+    """
+    The wall time of each stage of the paper's experiment [s].
+    """
+    def to_dict(self) -> dict[str, float]:
+        """
+        Every stage by name.
+        
+        Returns
+        -------
+        dict[str, float]
+        """
+    @property
+    def identification(self) -> float:
+        """
+        float: identification and validation, both methods, identify() and online [s].
+        """
+    @property
+    def plant(self) -> float:
+        """
+        float: simulation and processing of the two records [s].
+        """
+    @property
+    def robustness(self) -> float:
+        """
+        float: the robustness check (0 when it was not run) [s].
         """
 class PaperExperimentResult:
     """
@@ -182,12 +211,12 @@ class PaperExperimentResult:
         Record: the identification record (the paper's multi-sine).
         """
     @property
-    def methods(self) -> dict:
+    def methods(self) -> dict[str, MethodResult]:
         """
         dict[str, MethodResult]: {'output_error': ..., 'paper': ...}.
         """
     @property
-    def model_names(self) -> tuple:
+    def model_names(self) -> tuple[str, ...]:
         """
         tuple of str: the experiment's models, in the order of the paper's equations (ARX first).
         """
@@ -202,10 +231,10 @@ class PaperExperimentResult:
         int: trajectories of the robustness check (0 when it was not run).
         """
     @property
-    def seconds(self) -> dict:
+    def seconds(self) -> Timings:
         """
-        dict[str, float]: wall time of each stage [s]: 'plant' (records), 'identification' (both methods,
-        identify() and online), 'robustness'.
+        Timings: wall time of each stage [s]: plant (records), identification (both methods,
+        identify() and online), robustness.
         """
     @property
     def validation(self) -> Record:
@@ -219,7 +248,7 @@ class TrackingRun:
     def __repr__(self) -> str:
         ...
     @property
-    def command(self) -> numpy.ndarray:
+    def command(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: V(k) applied [V].
         """
@@ -229,7 +258,7 @@ class TrackingRun:
         str: 'PI', a model's name (PI plus its inverse as feedforward), or '<model> (adaptive)'.
         """
     @property
-    def feedforward(self) -> numpy.ndarray:
+    def feedforward(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the feedforward's part of the command [V] (0 for PI).
         """
@@ -239,7 +268,7 @@ class TrackingRun:
         int: feedforward samples whose InverseStatus was not Exact.
         """
     @property
-    def joint_rate(self) -> numpy.ndarray:
+    def joint_rate(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the plant's true joint rate [rad/s].
         """
@@ -303,7 +332,7 @@ class TrackingResult:
         float: the PI's Kc [V/(rad/s)].
         """
     @property
-    def reference(self) -> numpy.ndarray:
+    def reference(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: the reference joint velocity [rad/s].
         """
@@ -313,16 +342,16 @@ class TrackingResult:
         list of TrackingRun: PI and each model's feedforward; then PI, P-H-W and adaptive P-H-W under the plant change.
         """
     @property
-    def time(self) -> numpy.ndarray:
+    def time(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: t_k [s].
         """
     @property
-    def tracking_rms(self) -> dict:
+    def tracking_rms(self) -> dict[str, float]:
         """
         dict: controller name -> tracking RMS, for the runs without the plant change (bonl_demo --control --json).
         """
-def differentiate(x: typing.Any, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
+def differentiate(x: numpy.typing.ArrayLike, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """
     Numerical derivative: central differences, one-sided at both ends.
     
@@ -342,7 +371,7 @@ def differentiate(x: typing.Any, ts: typing.SupportsFloat | typing.SupportsIndex
     ValueError
         When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.
     """
-def low_pass(x: typing.Any, cutoff_hz: typing.SupportsFloat | typing.SupportsIndex, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
+def low_pass(x: numpy.typing.ArrayLike, cutoff_hz: typing.SupportsFloat | typing.SupportsIndex, ts: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """
     First-order low-pass z[k] = z[k-1] + alpha (x[k] - z[k-1]), alpha = 1 - exp(-2 pi fc ts), z[0] = x[0].
     
@@ -364,7 +393,7 @@ def low_pass(x: typing.Any, cutoff_hz: typing.SupportsFloat | typing.SupportsInd
     ValueError
         When ``x`` is not 1-D or not finite, or fc or ts is not > 0.
     """
-def published_score(name: str) -> typing.Any:
+def published_score(name: str) -> tuple[float, int] | None:
     """
     The paper's Table 2 (the real excavator) for a model, for comparison.
     
@@ -380,7 +409,7 @@ def published_score(name: str) -> typing.Any:
         (PseudoHammersteinWiener) is, in percent, as the paper states it (0 for the proposed model);
         None for a model the paper does not report.
     """
-def run_paper_experiment(parameters: typing.Any = None, *, robustness: bool = False) -> PaperExperimentResult:
+def run_paper_experiment(parameters: bonl._bonl.plant.Parameters | None = None, *, robustness: bool = False) -> PaperExperimentResult:
     """
     The paper's experiment on the plant, as ``bonl_demo`` runs it (docs/explanation/plant.md).
     
@@ -396,7 +425,7 @@ def run_paper_experiment(parameters: typing.Any = None, *, robustness: bool = Fa
     Parameters
     ----------
     parameters : bonl.plant.Parameters, optional
-        The plant; None: ``bonl.plant.default_parameters()``.
+        The plant; None: ``bonl.plant.Parameters.excavator_20t()``.
     robustness : bool, optional
         Also validate on the eight further trajectories of ``bonl_demo``'s robustness check.
     
@@ -409,7 +438,7 @@ def run_paper_experiment(parameters: typing.Any = None, *, robustness: bool = Fa
     ValueError
         For non-physical parameters.
     """
-def run_tracking_experiment(parameters: typing.Any = None, *, method: str = 'paper', reference_seed: typing.SupportsInt | typing.SupportsIndex = 2020, noise_seed: typing.SupportsInt | typing.SupportsIndex = 99) -> TrackingResult:
+def run_tracking_experiment(parameters: bonl._bonl.plant.Parameters | None = None, *, method: str = 'paper', reference_seed: typing.SupportsInt | typing.SupportsIndex = 2020, noise_seed: typing.SupportsInt | typing.SupportsIndex = 99) -> TrackingResult:
     """
     The tracking experiment, as ``bonl_demo --control`` runs it (docs/how-to/control.md).
     

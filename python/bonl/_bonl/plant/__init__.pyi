@@ -6,17 +6,19 @@ call); the paper's experiment on it is ``bonl.experiment``.
 from __future__ import annotations
 import collections.abc
 import numpy
+import numpy.typing
 import typing
 from . import excitation
-__all__: tuple = ('Parameters', 'default_parameters', 'small_parameters', 'Command', 'excitation', 'simulate', 'initial_state', 'derivative', 'SteppingPlant', 'Measurement')
+__all__: tuple = ('Parameters', 'Command', 'excitation', 'simulate', 'Trajectory', 'initial_state', 'derivative', 'SteppingPlant', 'Measurement')
 class Parameters:
     """
     Parameters of the excavator dipper-joint plant (docs/explanation/plant.md).
     
     Valve, asymmetric cylinder, linkage and backlash of a 20 t excavator's stick cylinder by
-    default; ``small_parameters()`` gives the 5-6 t machine. Every value can be overridden, as a
-    keyword argument of the constructor or by assigning the attribute; ``validate()`` rejects
-    non-physical values with a ValueError that names the parameter (``simulate`` validates too).
+    default (``Parameters.excavator_20t()``); ``Parameters.excavator_5t()`` gives the 5-6 t machine.
+    Every value can be overridden, as a keyword argument of the constructor or by assigning the
+    attribute; ``validate()`` rejects non-physical values with a ValueError that names the parameter
+    (``simulate`` validates too).
     
     Parameters
     ----------
@@ -99,6 +101,24 @@ class Parameters:
         sigma_theta, inclinometer noise standard deviation [rad].
     """
     __hash__: typing.ClassVar[None] = None
+    @staticmethod
+    def excavator_20t() -> Parameters:
+        """
+        The 20 t excavator's stick cylinder (plant.md's defaults, as ``Parameters()``).
+        
+        Returns
+        -------
+        Parameters
+        """
+    @staticmethod
+    def excavator_5t() -> Parameters:
+        """
+        The 5-6 t machine of plant.md.
+        
+        Returns
+        -------
+        Parameters
+        """
     def __copy__(self) -> Parameters:
         ...
     def __deepcopy__(self, memo: dict) -> Parameters:
@@ -535,7 +555,7 @@ class Command:
         ...
     def __repr__(self) -> str:
         ...
-    def sample(self, t: typing.Any) -> numpy.ndarray:
+    def sample(self, t: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         V at every time of an array.
         
@@ -558,6 +578,118 @@ class Command:
     def calls_python(self) -> bool:
         """
         True when the command wraps a Python callable (``simulate`` then keeps the GIL).
+        """
+class Trajectory:
+    """
+    What ``simulate`` returns: float64 arrays on the output grid, sample k at ``time[k] = k * sample_time``,
+    and the run's summary (``min_position``, ``max_position``, ``reached_end_stop``, ``steps``).
+    """
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def to_dict(self) -> dict[str, numpy.typing.NDArray[numpy.float64] | float | bool | int]:
+        """
+        Every field by name (the arrays view this Trajectory's).
+        
+        Returns
+        -------
+        dict[str, numpy.ndarray | float | bool | int]
+        """
+    @property
+    def command(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: V, as held on the command grid [V].
+        """
+    @property
+    def head_flow(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: Q1, into the head chamber [m^3/s].
+        """
+    @property
+    def head_pressure(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: p1 [Pa].
+        """
+    @property
+    def input(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: u = V - V0, the identification input [V].
+        """
+    @property
+    def joint_angle(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: theta [rad].
+        """
+    @property
+    def joint_rate(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: dtheta/dt = v / r(h) [rad/s].
+        """
+    @property
+    def max_position(self) -> float:
+        """
+        float: largest h reached on the command grid [m].
+        """
+    @property
+    def measured_angle(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: theta_m + sensor noise [rad].
+        """
+    @property
+    def min_position(self) -> float:
+        """
+        float: smallest h reached on the command grid [m].
+        """
+    @property
+    def pilot(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: xc, the pilot stage's output (after its hysteresis) [-].
+        """
+    @property
+    def pin_angle(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: theta_m = play(theta; delta / 2), noise-free [rad].
+        """
+    @property
+    def position(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: h [m].
+        """
+    @property
+    def reached_end_stop(self) -> bool:
+        """
+        bool: h left [0, L] at some point of the command grid.
+        """
+    @property
+    def rod_flow(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: Q2, out of the rod chamber [m^3/s].
+        """
+    @property
+    def rod_pressure(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: p2 [Pa].
+        """
+    @property
+    def spool(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: xv [-].
+        """
+    @property
+    def steps(self) -> int:
+        """
+        int: CVODE's internal steps.
+        """
+    @property
+    def time(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: t_k = k * sample_time [s].
+        """
+    @property
+    def velocity(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: v [m/s].
         """
 class Measurement:
     """
@@ -659,7 +791,7 @@ class SteppingPlant:
     Parameters
     ----------
     parameters : Parameters, optional
-        The plant; None: ``default_parameters()``.
+        The plant; None: ``Parameters.excavator_20t()``.
     sample_time, command_rate, rtol, atol, max_steps_per_interval, sensor_noise, noise_seed, initial_position, load
         As for ``simulate`` (which has ``duration`` too: a stepping plant runs as long as it is stepped),
         validated the same way.
@@ -678,11 +810,11 @@ class SteppingPlant:
     >>> m.time, m.measured_angle               # doctest: +SKIP
     (0.01, ...)
     """
-    def __init__(self, parameters: typing.Any = None, *, sample_time: typing.SupportsFloat | typing.SupportsIndex = 0.01, command_rate: typing.SupportsFloat | typing.SupportsIndex = 1000.0, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: typing.Any = None, max_steps_per_interval: typing.SupportsInt | typing.SupportsIndex = 5000, sensor_noise: bool = True, noise_seed: typing.SupportsInt | typing.SupportsIndex = 1, initial_position: typing.Any = None, load: typing.Any = None) -> None:
+    def __init__(self, parameters: Parameters | None = None, *, sample_time: typing.SupportsFloat | typing.SupportsIndex = 0.01, command_rate: typing.SupportsFloat | typing.SupportsIndex = 1000.0, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: dict[str, float] | None = None, max_steps_per_interval: typing.SupportsInt | typing.SupportsIndex = 5000, sensor_noise: bool = True, noise_seed: typing.SupportsInt | typing.SupportsIndex = 1, initial_position: float | None = None, load: Command | collections.abc.Callable[[float], float] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
-    def reset(self, initial_position: typing.Any = None, noise_seed: typing.SupportsInt | typing.SupportsIndex | None = None) -> Measurement:
+    def reset(self, initial_position: float | None = None, noise_seed: typing.SupportsInt | typing.SupportsIndex | None = None) -> Measurement:
         """
         Back to rest at t = 0.
         
@@ -703,7 +835,7 @@ class SteppingPlant:
         ValueError
             For a bad ``initial_position``; the plant is left as it was.
         """
-    def set_parameters(self, parameters: typing.Any) -> None:
+    def set_parameters(self, parameters: Parameters | None) -> None:
         """
         Change the plant from the current sample on, keeping its state.
         
@@ -723,7 +855,7 @@ class SteppingPlant:
         ValueError
             For non-physical parameters or a changed geometry, naming them; the plant is left as it was.
         """
-    def step(self, command: typing.Any) -> Measurement:
+    def step(self, command: float) -> Measurement:
         """
         Hold ``command`` over one sample and return the measurement at its end.
         
@@ -770,15 +902,7 @@ class SteppingPlant:
         """
         float: t_k, the latest measurement's time [s].
         """
-def default_parameters() -> Parameters:
-    """
-    The 20 t excavator's stick cylinder (plant.md's defaults).
-    
-    Returns
-    -------
-    Parameters
-    """
-def derivative(parameters: typing.Any, state: typing.Any, pilot: typing.SupportsFloat | typing.SupportsIndex, load: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> numpy.ndarray:
+def derivative(parameters: Parameters | None, state: numpy.typing.ArrayLike, pilot: typing.SupportsFloat | typing.SupportsIndex, load: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> numpy.typing.NDArray[numpy.float64]:
     """
     Right-hand side of the plant's ODE, d(state)/dt, for a held pilot output and load.
     
@@ -800,7 +924,7 @@ def derivative(parameters: typing.Any, state: typing.Any, pilot: typing.Supports
     numpy.ndarray
         d(state)/dt, 5 entries.
     """
-def initial_state(parameters: typing.Any, position: typing.SupportsFloat | typing.SupportsIndex) -> numpy.ndarray:
+def initial_state(parameters: Parameters | None, position: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """
     Initial state of plant.md's experiment at piston position h0.
     
@@ -818,7 +942,7 @@ def initial_state(parameters: typing.Any, position: typing.SupportsFloat | typin
     numpy.ndarray
         The state (h [m], v [m/s], p1 [Pa], p2 [Pa], xv [-]).
     """
-def simulate(command: typing.Any, parameters: typing.Any = None, *, duration: typing.SupportsFloat | typing.SupportsIndex = 50.0, sample_time: typing.SupportsFloat | typing.SupportsIndex = 0.01, command_rate: typing.SupportsFloat | typing.SupportsIndex = 1000.0, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: typing.Any = None, max_steps_per_interval: typing.SupportsInt | typing.SupportsIndex = 5000, sensor_noise: bool = True, noise_seed: typing.SupportsInt | typing.SupportsIndex = 1, initial_position: typing.Any = None, load: typing.Any = None) -> dict:
+def simulate(command: Command | collections.abc.Callable[[float], float] | tuple[numpy.typing.ArrayLike, float], parameters: Parameters | None = None, *, duration: typing.SupportsFloat | typing.SupportsIndex = 50.0, sample_time: typing.SupportsFloat | typing.SupportsIndex = 0.01, command_rate: typing.SupportsFloat | typing.SupportsIndex = 1000.0, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: dict[str, float] | None = None, max_steps_per_interval: typing.SupportsInt | typing.SupportsIndex = 5000, sensor_noise: bool = True, noise_seed: typing.SupportsInt | typing.SupportsIndex = 1, initial_position: float | None = None, load: Command | collections.abc.Callable[[float], float] | None = None) -> Trajectory:
     """
     Integrate the plant under a command with CVODE (BDF, Newton, dense solver).
     
@@ -833,7 +957,7 @@ def simulate(command: typing.Any, parameters: typing.Any = None, *, duration: ty
         V(t) [V]: a ``Command`` (``bonl.plant.excitation``), a Python callable f(t) -> float, or a
         ``(values, ts)`` pair held between samples (``excitation.sampled``).
     parameters : Parameters, optional
-        The plant; None: ``default_parameters()``.
+        The plant; None: ``Parameters.excavator_20t()``.
     duration : float, optional
         [s], an integer multiple of ``sample_time``.
     sample_time : float, optional
@@ -858,7 +982,7 @@ def simulate(command: typing.Any, parameters: typing.Any = None, *, duration: ty
     
     Returns
     -------
-    dict
+    Trajectory
         float64 arrays on the output grid, sample k at ``time[k] = k * sample_time``: ``time`` [s],
         ``command`` [V], ``input`` u = V - V0 [V], ``position`` h [m], ``velocity`` v [m/s],
         ``head_pressure`` p1 [Pa], ``rod_pressure`` p2 [Pa], ``spool`` xv [-], ``pilot`` xc [-],
@@ -872,12 +996,4 @@ def simulate(command: typing.Any, parameters: typing.Any = None, *, duration: ty
         For non-physical parameters or bad options, naming them.
     bonl.NumericalError
         When CVODE fails (its flag and the time reached are in the message).
-    """
-def small_parameters() -> Parameters:
-    """
-    The 5-6 t machine of plant.md.
-    
-    Returns
-    -------
-    Parameters
     """

@@ -4,6 +4,7 @@ Command signals V(t) for the plant, on the 0-5 V scale around the neutral voltag
 from __future__ import annotations
 import bonl._bonl.plant
 import collections.abc
+import numpy.typing
 import typing
 __all__: tuple = ('step', 'multisine', 'paper_multisine', 'smooth_random', 'chirp', 'sampled')
 def chirp(f0_hz: typing.SupportsFloat | typing.SupportsIndex, f1_hz: typing.SupportsFloat | typing.SupportsIndex, duration: typing.SupportsFloat | typing.SupportsIndex, amplitude: typing.SupportsFloat | typing.SupportsIndex, offset: typing.SupportsFloat | typing.SupportsIndex = 2.5) -> bonl._bonl.plant.Command:
@@ -59,7 +60,7 @@ def paper_multisine(amplitude: typing.SupportsFloat | typing.SupportsIndex = 0.4
     -------
     Command
     """
-def sampled(values: typing.Any, ts: typing.SupportsFloat | typing.SupportsIndex, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> bonl._bonl.plant.Command:
+def sampled(values: numpy.typing.ArrayLike, ts: typing.SupportsFloat | typing.SupportsIndex, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> bonl._bonl.plant.Command:
     """
     A sampled sequence held between samples (zero-order hold).
     

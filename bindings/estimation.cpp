@@ -87,6 +87,7 @@ bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
   options.recover_after = arguments.recover_after;
   options.stability_radius = arguments.stability_radius;
   options.backlash_hold = arguments.backlash_hold;
+  options.window = arguments.window;
   options.validate();
   return options;
 }
@@ -313,13 +314,16 @@ template <class Model>
 void def_estimator_init(py::class_<AnyEstimator>& cls) {
   cls.def(py::init([](const Model& model, const std::string& method, const Forgetting& forgetting,
                       std::optional<double> p0, double c0, std::optional<double> trace_ceiling,
-                      Eigen::Index recover_after, double stability_radius, Eigen::Index backlash_hold) {
+                      Eigen::Index recover_after, double stability_radius, Eigen::Index backlash_hold,
+                      std::optional<bonl::WindowRefinementOptions> window) {
             return AnyEstimator(model, estimator_options({method, forgetting, p0, c0, trace_ceiling, recover_after,
-                                                          stability_radius, backlash_hold}));
+                                                          stability_radius, backlash_hold,
+                                                          window.value_or(bonl::WindowRefinementOptions{})}));
           }),
           py::arg("model"), py::kw_only(), py::arg("method") = "output_error", py::arg("forgetting") = py::none(),
           py::arg("p0") = py::none(), py::arg("c0") = 0.01, py::arg("trace_ceiling") = py::none(),
-          py::arg("recover_after") = 0, py::arg("stability_radius") = 0.999, py::arg("backlash_hold") = 200);
+          py::arg("recover_after") = 0, py::arg("stability_radius") = 0.999, py::arg("backlash_hold") = 200,
+          py::arg("window") = py::none());
 }
 
 }  // namespace
@@ -373,7 +377,45 @@ void bind_estimation(py::module_& m) {
              "the update would have broken the covariance, or the internal variables left the finite numbers; "
              "theta and P kept, diverged is set");
 
+  py::class_<bonl::WindowRefinementOptions>(
+      m, "WindowRefinementOptions",
+      "The output-error method's window refinement (Estimator(..., window=...)): Levenberg-Marquardt on the\n"
+      "free-run error of the newest samples, spread over the updates, its estimate swapped in where it\n"
+      "predicts the newest samples better. Off by default (docs/explanation/algorithm.md).")
+      .def(py::init([](bool enabled, Eigen::Index length, Eigen::Index work_per_sample) {
+             bonl::WindowRefinementOptions options;
+             options.enabled = enabled;
+             options.length = length;
+             options.work_per_sample = work_per_sample;
+             return options;
+           }),
+           py::kw_only(), py::arg("enabled") = true, py::arg("length") = 4000, py::arg("work_per_sample") = 8,
+           "Window refinement options; ``enabled`` is True here (the estimator's default is off).\n\n"
+           "Parameters\n----------\nenabled : bool, default True\n    Whether the refinement runs.\n"
+           "length : int, default 4000\n    The most samples it fits at once (>= 100).\n"
+           "work_per_sample : int, default 8\n    Model steps of the refinement per update (>= 2).\n\n"
+           "Returns\n-------\nWindowRefinementOptions\n    The options; the Estimator checks them.")
+      .def_readwrite("enabled", &bonl::WindowRefinementOptions::enabled, "bool: whether the refinement runs")
+      .def_readwrite("length", &bonl::WindowRefinementOptions::length,
+                     "int: the most samples it fits at once (>= 100)")
+      .def_readwrite("work_per_sample", &bonl::WindowRefinementOptions::work_per_sample,
+                     "int: model steps of the refinement per update (>= 2)");
+
+  py::class_<bonl::WindowRefinementCounts>(m, "WindowRefinementCounts",
+                                           "What the window refinement did since the Estimator's reset().")
+      .def_readonly("iterations", &bonl::WindowRefinementCounts::iterations, "int: Levenberg-Marquardt steps kept")
+      .def_readonly("refused_steps", &bonl::WindowRefinementCounts::refused_steps,
+                    "int: trial steps that did not simulate the window better")
+      .def_readonly("swaps", &bonl::WindowRefinementCounts::swaps, "int: refined estimates swapped into the recursion")
+      .def_readonly("refusals", &bonl::WindowRefinementCounts::refusals,
+                    "int: refined estimates not swapped in (the recursion predicted the newest samples as well)")
+      .def_readonly("reseeds", &bonl::WindowRefinementCounts::reseeds,
+                    "int: restarts with the newest samples only (a change of the plant)")
+      .def_readonly("overruns", &bonl::WindowRefinementCounts::overruns,
+                    "int: restarts because the slices fell behind or a run left the finite numbers");
+
   py::class_<bonl::EstimatorHealth>(m, "EstimatorHealth", "What an Estimator's numerical safeguards did since reset().")
+      .def_readonly("window", &bonl::EstimatorHealth::window, "WindowRefinementCounts: what the window refinement did")
       .def_readonly("diverged", &bonl::EstimatorHealth::diverged,
                     "bool: a numerical failure happened (cleared by recover() and reset())")
       .def_readonly("failures", &bonl::EstimatorHealth::failures, "int: updates refused for numerical reasons")
@@ -404,7 +446,7 @@ void bind_estimation(py::module_& m) {
       "    Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,\n"
       "    c = 0 for output_error).\n" +
       option_docs({"method", "forgetting", "p0", "c0", "trace_ceiling", "recover_after", "stability_radius",
-                   "backlash_hold"});
+                   "backlash_hold", "window"});
   py::class_<AnyEstimator> estimator(m, "Estimator", estimator_doc.c_str());
   bonl::for_each_model(bonl::Models{}, [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
   py::class_<UpdateResults>(m, "UpdateResults", "What Estimator.update_record returns for a record.")

@@ -29,6 +29,7 @@ struct OptionArguments {
   Eigen::Index recover_after = 0;
   double stability_radius = 0.999;
   Eigen::Index backlash_hold = 200;
+  bonl::WindowRefinementOptions window = {};
 };
 
 /// The options, validated (std::invalid_argument, a ValueError, naming the bad one).

@@ -44,6 +44,9 @@ inline constexpr OptionDoc kOptionDocs[] = {
      "output_error: the linear block's poles are kept inside this radius (updates shortened)."},
     {"backlash_hold", "int, default 200",
      "output_error, P-H-W: c is held at 0 for this many samples after each start from rest."},
+    {"window", "WindowRefinementOptions, optional",
+     "output_error: the window refinement, Levenberg-Marquardt on the newest samples spread over the\n"
+     "updates (``bonl.WindowRefinementOptions()``); None: off."},
     {"refine_iterations", "int, default 100",
      "Levenberg-Marquardt iterations of the refinement that follows the recursive stage for\n"
      "'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the\n"

@@ -1,6 +1,9 @@
 """bonl.Estimator: online updates, their status, and rejection of non-finite samples."""
 
+import warnings
+
 import numpy as np
+import pytest
 
 import bonl
 from conftest import known_models, random_levels
@@ -60,3 +63,39 @@ def test_gap_samples_carry_no_information_and_reset_restarts():
     np.testing.assert_array_equal(output_error.theta, np.zeros(14))
     estimator.reset(truth.theta)
     np.testing.assert_array_equal(estimator.theta, truth.theta)
+
+
+def test_window_refinement_is_an_option_of_the_output_error_estimator():
+    # Off by default; on, it refines over the newest samples and counts what it did. Median over 3
+    # seeds of 2% noise: closer to identify() than the recursion alone (measured 8.8e-4 against 1.4e-3,
+    # identify() 7.0e-4; one seed of the three is the other way round). The C++ suite checks every model.
+    truth = bonl.ARX(2, 1, 1, a=[-1.5, 0.7], b=[1.0, 0.5])
+    u_check = np.repeat(np.random.default_rng(4).uniform(-1, 1, 800), 5)
+
+    def error(model):
+        return bonl.metrics.nrmse(truth.simulate(u_check), model.simulate(u_check))
+
+    errors = {"plain": [], "window": [], "identify": []}
+    for seed in (3, 5, 7):
+        rng = np.random.default_rng(seed)
+        u = np.repeat(rng.uniform(-1, 1, 800), 5)
+        clean = truth.simulate(u)
+        y = clean + rng.normal(0.0, 0.02 * clean.std(), u.size)
+        plain = bonl.Estimator(truth)
+        windowed = bonl.Estimator(truth, window=bonl.WindowRefinementOptions())
+        for estimator in (plain, windowed):
+            estimator.update_record(u, y)
+        assert plain.health.window.swaps == 0
+        assert windowed.health.window.swaps > 0 and windowed.health.window.iterations > 0
+        errors["plain"].append(error(plain.model))
+        errors["window"].append(error(windowed.model))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", bonl.ExtrapolationWarning)
+            errors["identify"].append(error(bonl.identify(truth, u, y)))
+    median = {name: float(np.median(values)) for name, values in errors.items()}
+    assert median["window"] <= median["plain"]
+    assert median["window"] <= 1.5 * median["identify"]
+    with pytest.raises(ValueError, match="window length must be >= 100 samples, got 99"):
+        bonl.Estimator(truth, window=bonl.WindowRefinementOptions(length=99))
+    with pytest.raises(ValueError, match="window work_per_sample must be >= 2 model steps, got 1"):
+        bonl.Estimator(truth, window=bonl.WindowRefinementOptions(work_per_sample=1))

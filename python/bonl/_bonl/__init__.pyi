@@ -12,7 +12,7 @@ from . import metrics
 from . import plant
 from . import experiment
 from . import control
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'EstimatorTrajectory', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'EstimatorTrajectory', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'WindowRefinementCounts', 'WindowRefinementOptions', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     """
     Numerical trouble found while computing: a diverging simulation, a covariance that lost
@@ -1798,6 +1798,88 @@ class UpdateStatus:
     @property
     def value(self) -> int:
         ...
+class WindowRefinementOptions:
+    """
+    The output-error method's window refinement (Estimator(..., window=...)): Levenberg-Marquardt on the
+    free-run error of the newest samples, spread over the updates, its estimate swapped in where it
+    predicts the newest samples better. Off by default (docs/explanation/algorithm.md).
+    """
+    def __init__(self, *, enabled: bool = True, length: typing.SupportsInt | typing.SupportsIndex = 4000, work_per_sample: typing.SupportsInt | typing.SupportsIndex = 8) -> None:
+        """
+        Window refinement options; ``enabled`` is True here (the estimator's default is off).
+        
+        Parameters
+        ----------
+        enabled : bool, default True
+            Whether the refinement runs.
+        length : int, default 4000
+            The most samples it fits at once (>= 100).
+        work_per_sample : int, default 8
+            Model steps of the refinement per update (>= 2).
+        
+        Returns
+        -------
+        WindowRefinementOptions
+            The options; the Estimator checks them.
+        """
+    @property
+    def enabled(self) -> bool:
+        """
+        bool: whether the refinement runs
+        """
+    @enabled.setter
+    def enabled(self, arg0: bool) -> None:
+        ...
+    @property
+    def length(self) -> int:
+        """
+        int: the most samples it fits at once (>= 100)
+        """
+    @length.setter
+    def length(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def work_per_sample(self) -> int:
+        """
+        int: model steps of the refinement per update (>= 2)
+        """
+    @work_per_sample.setter
+    def work_per_sample(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+class WindowRefinementCounts:
+    """
+    What the window refinement did since the Estimator's reset().
+    """
+    @property
+    def iterations(self) -> int:
+        """
+        int: Levenberg-Marquardt steps kept
+        """
+    @property
+    def overruns(self) -> int:
+        """
+        int: restarts because the slices fell behind or a run left the finite numbers
+        """
+    @property
+    def refusals(self) -> int:
+        """
+        int: refined estimates not swapped in (the recursion predicted the newest samples as well)
+        """
+    @property
+    def refused_steps(self) -> int:
+        """
+        int: trial steps that did not simulate the window better
+        """
+    @property
+    def reseeds(self) -> int:
+        """
+        int: restarts with the newest samples only (a change of the plant)
+        """
+    @property
+    def swaps(self) -> int:
+        """
+        int: refined estimates swapped into the recursion
+        """
 class EstimatorHealth:
     """
     What an Estimator's numerical safeguards did since reset().
@@ -1839,6 +1921,11 @@ class EstimatorHealth:
         """
         int: automatic covariance resets (recover_after)
         """
+    @property
+    def window(self) -> WindowRefinementCounts:
+        """
+        WindowRefinementCounts: what the window refinement did
+        """
 class Estimator:
     """
     Online recursive estimator for one model.
@@ -1871,30 +1958,33 @@ class Estimator:
         output_error: the linear block's poles are kept inside this radius (updates shortened).
     backlash_hold : int, default 200
         output_error, P-H-W: c is held at 0 for this many samples after each start from rest.
+    window : WindowRefinementOptions, optional
+        output_error: the window refinement, Levenberg-Marquardt on the newest samples spread over the
+        updates (``bonl.WindowRefinementOptions()``); None: off.
     """
     @typing.overload
-    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200) -> None:
+    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
         ...
     def recover(self) -> None:
         """

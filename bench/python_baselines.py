@@ -80,12 +80,12 @@ def rls_baselines(repeats: int) -> dict:
         phi, y = regressors(n)
         samples = len(y)
 
-        def run_padasip() -> None:
-            f = padasip.filters.FilterRLS(n=n, mu=LAMBDA, eps=1.0 / P0, w="zeros")
-            f.run(y, phi)
+        def run_padasip() -> None:  # timed within this iteration, so the loop's variables are current
+            f = padasip.filters.FilterRLS(n=n, mu=LAMBDA, eps=1.0 / P0, w="zeros")  # noqa: B023
+            f.run(y, phi)  # noqa: B023
 
         out["padasip"][str(n)] = best_of(repeats, run_padasip) / samples * 1e9
-        out["numpy"][str(n)] = best_of(repeats, lambda: numpy_rls(phi, y)) / samples * 1e9
+        out["numpy"][str(n)] = best_of(repeats, lambda: numpy_rls(phi, y)) / samples * 1e9  # noqa: B023
     # Sanity: both baselines estimate the same theta on these data (they are the same recursion).
     phi, y = regressors(PHW_PARAMS)
     f = padasip.filters.FilterRLS(n=PHW_PARAMS, mu=LAMBDA, eps=1.0 / P0, w="zeros")
@@ -129,7 +129,7 @@ def bonl_bindings(quick: bool, smoke: bool = False) -> dict:
     for name, kwargs in cases.items():
         bonl.identify(structure, u, y, **kwargs)  # warm-up
         repeats = 1 if smoke else (2 if quick else 5) if name == "output_error" else (5 if quick else 30)
-        seconds = best_of(repeats, lambda: bonl.identify(structure, u, y, **kwargs))
+        seconds = best_of(repeats, lambda: bonl.identify(structure, u, y, **kwargs))  # noqa: B023 (timed here)
         out[f"identify_{name}_5000_ms"] = seconds * 1e3
 
     # Estimator.update from a Python loop: Python floats, and numpy float64 scalars (indexing an array).
@@ -156,8 +156,8 @@ def bonl_bindings(quick: bool, smoke: bool = False) -> dict:
     for model_class in bonl.MODELS:
         model = model_class(*model_class.PAPER_ORDERS)  # bench_data.hpp's structures: bonl::PaperOrders
         for method in ("output_error", "equation_error", "paper"):
-            def stream() -> None:
-                bonl.Estimator(model, method=method).update_record(u, y)
+            def stream() -> None:  # timed within this iteration, so model and method are current
+                bonl.Estimator(model, method=method).update_record(u, y)  # noqa: B023
             streaming[f"{model_class.__name__}/{method}"] = best_of(repeats, stream) / len(u) * 1e9
     out["estimator_update_record_ns"] = streaming
     return out

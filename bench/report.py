@@ -424,7 +424,7 @@ def main() -> int:
         "`ceiling limited` and `step shortened`: fractions of the samples whose forgetting the trace ceiling limited and "
         "whose step the stability projection shortened (bench/bench_data.hpp describes the records). C++: CPU time per sample "
         "(fastest of 5 repetitions); Python: best wall time of several repeats. Same random regressors, "
-        f"forgetting factor 0.99 and P(0) = 1e3 I for every RLS baseline; float equation_error and paper estimators use P(0) = 1e4 I."
+        "forgetting factor 0.99 and P(0) = 1e3 I for every RLS baseline; float equation_error and paper estimators use P(0) = 1e4 I."
     )
     text = "\n\n".join(f"### {title}\n\n{body}" for title, body in sections) + "\n\n" + legend + "\n"
     if notes:

@@ -1,8 +1,32 @@
 # Sourced by scripts/test.sh, scripts/demo.sh and .ci/run: the Debian 12 packages bonl needs
-# (doxygen for scripts/api_reference.sh's C++ reference).
-BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev nlohmann-json3-dev python3 python3-pip python3-venv doxygen)
+# (doxygen for scripts/api_reference.sh's C++ reference, ccache for the compiler cache below).
+BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev nlohmann-json3-dev python3 python3-pip python3-venv doxygen ccache)
 # scripts/fuzz.sh only: clang and its runtimes (libclang_rt.fuzzer, asan, ubsan).
 BONL_FUZZ_APT_PACKAGES=(clang-14 libclang-rt-14-dev)
+# scripts/clang.sh only: clang, and the OpenMP that Debian's SUNDIALSConfig.cmake looks for.
+BONL_CLANG_APT_PACKAGES=(clang-14 libomp-14-dev)
+# scripts/format.sh only: clang-format for C++, and ruff for Python from PyPI (pinned: its rules
+# change between versions), which scripts/test.sh installs into build/venv too.
+BONL_FORMAT_APT_PACKAGES=(clang-format-14)
+BONL_RUFF=ruff==0.17.6
+
+# The compiler cache: every CMake build the scripts make (build/ci, build/asan, build/clang,
+# build/fuzz, the Python extension's, examples/consumer's, ...) compiles through ccache when it is
+# installed; CMake (3.17 and later) reads CMAKE_CXX_COMPILER_LAUNCHER from the environment when it
+# first configures a build folder. Paths under the clone are hashed relative to the compiler's
+# working folder and that folder itself is not hashed, so a fresh clone in another folder hits
+# the objects an earlier clone compiled (the debug information of a hit then names that clone's
+# build folder). The cache is in ccache's default folder (~/.cache/ccache, or CCACHE_DIR). An empty
+# CMAKE_CXX_COMPILER_LAUNCHER turns the cache off.
+if command -v ccache >/dev/null 2>&1 && [[ -z ${CMAKE_CXX_COMPILER_LAUNCHER+set} ]]; then
+  export CMAKE_CXX_COMPILER_LAUNCHER=ccache
+fi
+CCACHE_BASEDIR=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+export CCACHE_BASEDIR
+export CCACHE_NOHASHDIR=1
+# The compiler is identified by its contents, not its modification time (which a copied or
+# reinstalled toolchain changes without changing the compiler).
+export CCACHE_COMPILERCHECK=${CCACHE_COMPILERCHECK:-content}
 
 # Each step prints the wall time since the first script of the run started (the CI's log shows
 # where its minutes go); BONL_STEP_T0 is exported so that scripts started by scripts share it.
@@ -23,48 +47,56 @@ bonl_apt_install() {
     apt-get install -y --no-install-recommends "${BONL_APT_PACKAGES[@]}"
 }
 
-# Like bonl_apt_install, but skips apt when dpkg says every package is already installed.
-bonl_ensure_deps() {
-  local missing=() p
-  if ! command -v dpkg-query >/dev/null 2>&1; then
-    step "no dpkg-query (not Debian?): assuming the dependencies are installed"
-    return
-  fi
-  for p in "${BONL_APT_PACKAGES[@]}"; do
-    [[ $(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null) == installed ]] || missing+=("$p")
-  done
-  if ((${#missing[@]} == 0)); then
-    step "apt packages already installed, skipping apt"
-  else
-    echo "missing packages: ${missing[*]}"
-    bonl_apt_install
-  fi
-}
-
-# scripts/fuzz.sh: apt-get update + install of BONL_FUZZ_APT_PACKAGES when dpkg says one is missing.
-bonl_ensure_fuzz_deps() {
+# apt-get update + install of the given packages when dpkg says one of them is missing, else no apt
+# at all: bonl_ensure_packages PACKAGE... (scripts/fuzz.sh: BONL_FUZZ_APT_PACKAGES, scripts/clang.sh:
+# BONL_CLANG_APT_PACKAGES, scripts/format.sh: BONL_FORMAT_APT_PACKAGES).
+bonl_ensure_packages() {
   local missing=() p sudo=()
   [[ $(id -u) -eq 0 ]] || sudo=(sudo)
   if ! command -v dpkg-query >/dev/null 2>&1; then
-    step "no dpkg-query (not Debian?): assuming clang-14 and its runtimes are installed"
+    step "no dpkg-query (not Debian?): assuming $* are installed"
     return
   fi
-  for p in "${BONL_FUZZ_APT_PACKAGES[@]}"; do
+  for p in "$@"; do
     [[ $(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null) == installed ]] || missing+=("$p")
   done
   if ((${#missing[@]} > 0)); then
     step "apt-get install ${missing[*]}"
     "${sudo[@]}" apt-get update
     "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+  else
+    step "apt packages already installed, skipping apt"
   fi
 }
 
+# The packages of BONL_APT_PACKAGES (scripts/test.sh, scripts/demo.sh, ...), as bonl_ensure_packages.
+bonl_ensure_deps() {
+  bonl_ensure_packages "${BONL_APT_PACKAGES[@]}"
+}
+
 # build/venv with the given PyPI packages and this package installed from the working tree (pip
-# install .), as scripts/test.sh, bench/run and scripts/api_reference.sh need it: bonl_venv_install PACKAGE...
+# install .), as scripts/test.sh, bench/run and scripts/api_reference.sh need it:
+#   bonl_venv_install [--reuse BUILD] PACKAGE...
+# The build requirements (pyproject.toml's [build-system] requires) are installed into the venv too
+# and the package is built without pip's isolated build environment, whose folder changes at every
+# build and so would keep the compiler cache from hitting on pybind11's headers. --reuse BUILD links
+# the plant and experiment libraries of that built bonl build folder into the extension instead of
+# compiling them again (BONL_REUSE_BUILD in CMakeLists.txt), with warnings as errors.
 bonl_venv_install() {
+  # Both given every time: the extension's build folder (build/python) keeps its CMake cache.
+  local reuse="" werror=OFF
+  if [[ ${1:-} == --reuse ]]; then
+    reuse="$PWD/$2" werror=ON
+    shift 2
+  fi
+  local config=(--config-settings=cmake.define.BONL_REUSE_BUILD="$reuse"
+                --config-settings=cmake.define.BONL_WARNINGS_AS_ERRORS="$werror")
   [[ -x build/venv/bin/python ]] || python3 -m venv build/venv
-  build/venv/bin/python -m pip install -q --disable-pip-version-check "$@"
-  build/venv/bin/python -m pip install -q --disable-pip-version-check .
+  local build_requires
+  mapfile -t build_requires < <(build/venv/bin/python -c \
+    'import tomllib; print("\n".join(tomllib.load(open("pyproject.toml", "rb"))["build-system"]["requires"]))')
+  build/venv/bin/python -m pip install -q --disable-pip-version-check "${build_requires[@]}" "$@"
+  build/venv/bin/python -m pip install -q --disable-pip-version-check --no-build-isolation "${config[@]}" .
 }
 
 # Configures build/examples (Release, examples only) and builds one example target, for the scripts

@@ -36,7 +36,7 @@ done
 ((${#targets[@]})) || targets=(fuzz_model_json fuzz_plant_parameters fuzz_estimator_update fuzz_inverse_model)
 
 bonl_ensure_deps
-bonl_ensure_fuzz_deps
+bonl_ensure_packages "${BONL_FUZZ_APT_PACKAGES[@]}"
 
 # Milliseconds since the epoch, and a duration in seconds with one decimal (no bc on a bare machine).
 now_ms() { echo $(($(date +%s%N) / 1000000)); }

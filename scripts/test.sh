@@ -29,7 +29,8 @@ step "install to a temporary prefix, build and run examples/consumer against it"
 bash examples/consumer/check.sh build/ci
 
 step "Python: build and install the package in a virtual environment (build/venv)"
-bonl_venv_install numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm padasip pdoc==16.0.0
+# The extension links build/ci's plant and experiment libraries rather than compiling them again.
+bonl_venv_install --reuse build/ci numpy scipy matplotlib pytest pybind11-stubgen==3.0.0 "dask[distributed]" tqdm padasip pdoc==16.0.0 "$BONL_RUFF"
 
 step "pytest"
 pytest_status=0

@@ -9,7 +9,11 @@ set -euo pipefail
 build=$(cd "$1" && pwd)
 cd "$(dirname "${BASH_SOURCE[0]}")"
 say() { printf '\n--> consumer: %s\n' "$*"; }
-tmp=$(mktemp -d)
+# A fixed folder inside the bonl build, not a random one: the compiler cache (scripts/deps.sh) hits
+# only on paths that are the same, relative to the clone, from one run to the next.
+tmp="$build/consumer_check"
+rm -rf "$tmp"
+mkdir -p "$tmp"
 trap 'rm -rf "$tmp"' EXIT
 configure=(cmake -S . -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$tmp/prefix")
 no_deps=(-DCMAKE_DISABLE_FIND_PACKAGE_SUNDIALS=ON -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON)

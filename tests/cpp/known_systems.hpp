@@ -14,9 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#ifndef BONL_TEST_DATA_DIR
-#error "BONL_TEST_DATA_DIR must name tests/data (tests/CMakeLists.txt defines it)"
-#endif
+#include "test_data_dir.hpp"
 
 namespace bonl_test {
 
@@ -33,7 +31,7 @@ inline constexpr Eigen::Index kNk = 8;
 
 inline const nlohmann::json& known_systems_file() {
   static const nlohmann::json file = [] {
-    const std::string path = std::string(BONL_TEST_DATA_DIR) + "/known_systems.json";
+    const std::string path = std::string(data_dir()) + "/known_systems.json";
     std::ifstream in(path);
     if (!in) throw std::runtime_error("cannot read " + path);
     std::stringstream text;

@@ -255,7 +255,7 @@ TEST_CASE("the operating point is written and read back bit for bit", "[io]") {
 }
 
 TEST_CASE("the shared fixture tests/data/phw_model.json loads", "[io]") {
-  const std::string text = read_file(std::string(BONL_TEST_DATA_DIR) + "/phw_model.json");
+  const std::string text = read_file(std::string(bonl_test::data_dir()) + "/phw_model.json");
   bonl::PseudoHammersteinWienerd expected(2, 1, 2, 2);
   expected.set_b(vec({1.0, 0.5}));
   expected.set_a(vec({-1.2, 0.35}));

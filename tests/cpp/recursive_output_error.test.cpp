@@ -49,7 +49,7 @@ Eigen::MatrixXd sensitivities(const Model& model, const Eigen::VectorXd& u, Eige
 
 /// The known systems of tests/data/online_systems.json.
 std::vector<std::pair<std::string, bonl::io::AnyModel>> online_systems() {
-  std::ifstream in(BONL_TEST_DATA_DIR "/online_systems.json");
+  std::ifstream in(std::string(bonl_test::data_dir()) + "/online_systems.json");
   REQUIRE(in);
   const nlohmann::json document = nlohmann::json::parse(in);
   std::vector<std::pair<std::string, bonl::io::AnyModel>> out;

@@ -32,7 +32,7 @@ def test_an_integrating_arx_is_identified_from_its_difference_equation():
     # y(k) = y(k-1) + z(k), z(k) = -a_1 z(k-1) + b_0 u(k-1) + b_1 u(k-2): nk = 1, one integrator.
     z, y = np.zeros(u.size), np.zeros(u.size)
     for k in range(u.size):
-        lag = lambda x, j: x[k - j] if k - j >= 0 else 0.0  # noqa: E731
+        lag = lambda x, j: x[k - j] if k - j >= 0 else 0.0  # noqa: E731, B023 (used in this iteration)
         z[k] = -a[0] * lag(z, 1) + b[0] * lag(u, 1) + b[1] * lag(u, 2)
         y[k] = lag(y, 1) + z[k]
     truth = bonl.ARX(1, 1, 1, ni=1, b=b, a=a)

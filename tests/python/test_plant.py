@@ -265,8 +265,8 @@ class ReferencePlant:
         self.phi0 = self.phi(p.stroke / 2)
 
     def phi(self, h):
-        a, b, l = self.p.pivot_to_rod_pin, self.p.pivot_to_base_pin, self.p.retracted_length + h
-        return math.acos((a * a + b * b - l * l) / (2 * a * b))
+        a, b, c = self.p.pivot_to_rod_pin, self.p.pivot_to_base_pin, self.p.retracted_length + h
+        return math.acos((a * a + b * b - c * c) / (2 * a * b))
 
     def spring_force(self, h):
         # plant.md leaves the geometry outside the stroke open; bonl evaluates Fs at h clamped to

@@ -51,7 +51,10 @@ def test_each_run_is_scored_as_documented(result):
     assert len(t) == 8000 and t[1] == pytest.approx(0.01)
     for run in result.runs:
         error = result.reference - run.joint_rate
-        window = lambda a, b: np.sqrt(np.mean(error[int(a * 100):int(b * 100)] ** 2))
+
+        def window(a, b, error=error):
+            return np.sqrt(np.mean(error[int(a * 100):int(b * 100)] ** 2))
+
         assert run.rms == pytest.approx(window(20, 80), rel=1e-12), run.controller
         assert run.rms_before_change == pytest.approx(window(20, 40), rel=1e-12)
         assert run.rms_after_change == pytest.approx(window(60, 80), rel=1e-12)

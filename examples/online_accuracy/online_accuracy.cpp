@@ -238,47 +238,6 @@ std::string format(double value, const char* spec = "%.2g") {
   return text;
 }
 
-std::string targets(const Json& results);
-
-/// The summary: for each condition and estimator, the range over
-/// the block-model systems (ARX apart) of the NRMSE (noise-free) or of its median over the seeds.
-std::string summary(const Json& results) {
-  const auto range = [&](bool arx, const std::function<double(const Json&)>& value) {
-    double low = kInfinity, high = 0.0;
-    for (const Json& system : results.at("systems")) {
-      const bool is_arx = system.at("name").get<std::string>().rfind("ARX", 0) == 0;
-      if (is_arx != arx) continue;
-      const double v = value(system);
-      low = std::min(low, v);
-      high = std::max(high, v);
-    }
-    return format(low) + " to " + format(high);
-  };
-  const char* estimators[] = {"output_error", "output_error_window", "equation_error", "paper", "identify"};
-  std::ostringstream out;
-  out << "| models | condition | online output_error | output_error, window | online equation_error | online paper | identify() |\n"
-      << "|---|---|---|---|---|---|---|\n";
-  for (bool arx : {false, true}) {
-    const char* models = arx ? "ARX" : "block models";
-    for (const char* input : {"random_levels", "multisine"}) {
-      out << "| " << models << " | noise-free, " << (std::string(input) == "multisine" ? "multi-sine" : "random levels");
-      for (const char* key : estimators) {
-        out << " | " << range(arx, [&](const Json& s) { return as_number(s.at("noise_free").at(input).at(key)); });
-      }
-      out << " |\n";
-    }
-    for (const Noise& noise : kNoises) {
-      out << "| " << models << " | " << noise.label;
-      for (const char* key : estimators) {
-        out << " | " << range(arx, [&](const Json& s) { return median_of(s.at("noisy").at(noise.key), key); });
-      }
-      out << " |\n";
-    }
-  }
-  out << "\n" << targets(results);
-  return out.str();
-}
-
 /// Against the online targets, the recursion alone and with the window refinement: the online over
 /// offline ratio of the median NRMSE under noise over every system-noise pair; the noise-free
 /// systems at max(1e-6, identify()'s NRMSE) or below; the systems back under 1% within 1000 samples
@@ -321,6 +280,45 @@ std::string targets(const Json& results) {
         << ratios.size() << " | " << within(1.5) << " of " << ratios.size() << " | " << noise_free[0] << " of "
         << systems << " | " << noise_free[1] << " of " << systems << " | " << tracked << " of " << systems << " |\n";
   }
+  return out.str();
+}
+
+/// The summary: for each condition and estimator, the range over
+/// the block-model systems (ARX apart) of the NRMSE (noise-free) or of its median over the seeds.
+std::string summary(const Json& results) {
+  const auto range = [&](bool arx, const std::function<double(const Json&)>& value) {
+    double low = kInfinity, high = 0.0;
+    for (const Json& system : results.at("systems")) {
+      const bool is_arx = system.at("name").get<std::string>().rfind("ARX", 0) == 0;
+      if (is_arx != arx) continue;
+      const double v = value(system);
+      low = std::min(low, v);
+      high = std::max(high, v);
+    }
+    return format(low) + " to " + format(high);
+  };
+  const char* estimators[] = {"output_error", "output_error_window", "equation_error", "paper", "identify"};
+  std::ostringstream out;
+  out << "| models | condition | online output_error | output_error, window | online equation_error | online paper | identify() |\n"
+      << "|---|---|---|---|---|---|---|\n";
+  for (bool arx : {false, true}) {
+    const char* models = arx ? "ARX" : "block models";
+    for (const char* input : {"random_levels", "multisine"}) {
+      out << "| " << models << " | noise-free, " << (std::string(input) == "multisine" ? "multi-sine" : "random levels");
+      for (const char* key : estimators) {
+        out << " | " << range(arx, [&](const Json& s) { return as_number(s.at("noise_free").at(input).at(key)); });
+      }
+      out << " |\n";
+    }
+    for (const Noise& noise : kNoises) {
+      out << "| " << models << " | " << noise.label;
+      for (const char* key : estimators) {
+        out << " | " << range(arx, [&](const Json& s) { return median_of(s.at("noisy").at(noise.key), key); });
+      }
+      out << " |\n";
+    }
+  }
+  out << "\n" << targets(results);
   return out.str();
 }
 

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "../detail/damping.hpp"
 #include "../detail/validate.hpp"
 #include "../models/poles.hpp"
 #include "record_view.hpp"
@@ -119,7 +120,8 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
   for (; iteration < max_iterations; ++iteration) {
     if (!simulation_normal_equations(best, records, normal, gradient)) break;
     const typename Model::Params theta = best.theta();
-    const VectorX scale = normal.diagonal().cwiseMax(Scalar(1e-12) * (normal.diagonal().maxCoeff() + Scalar(1e-300)));
+    VectorX scale(normal.rows());
+    damping_scale(normal, scale);
 
     bool accepted = false;
     double new_cost = cost;
@@ -138,7 +140,7 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
           const double predicted = static_cast<double>(
               step.dot(gradient) + Scalar(damping) * step.dot(scale.cwiseProduct(step)));
           const double rho = predicted > 0.0 ? (cost - new_cost) * samples / predicted : 1.0;
-          damping = std::max(damping * std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)), 1e-15);
+          damping = damping_after_kept_step(damping, rho);
           accepted = true;
           break;
         }

@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "../detail/damping.hpp"
 #include "../detail/validate.hpp"
 
 namespace bonl {
@@ -289,11 +290,11 @@ class WindowRefinement {
     }
     if (kept) {
       if (m_have_iterate && !m_delta.isZero()) {
-        // Nielsen's damping update on the gain ratio, as refine_output_error.
+        // The damping follows the gain ratio, as in refine_output_error.
         const double predicted = static_cast<double>(m_delta.dot(m_gradient) +
                                                      Scalar(m_damping) * m_delta.dot(m_scale.cwiseProduct(m_delta)));
         const double rho = predicted > 0.0 ? (m_objective - m_sse_common) / predicted : 1.0;
-        m_damping = std::max(m_damping * std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)), 1e-15);
+        m_damping = detail::damping_after_kept_step(m_damping, rho);
         ++m_counts.iterations;
       }
       m_theta = m_trial_theta;
@@ -386,7 +387,7 @@ class WindowRefinement {
       return;
     }
     m_system = m_normal;
-    m_scale = m_system.diagonal().cwiseMax(Scalar(1e-12) * (m_system.diagonal().maxCoeff() + Scalar(1e-300)));
+    detail::damping_scale(m_system, m_scale);
     m_system.diagonal() += Scalar(m_damping) * m_scale;
     m_ldlt.compute(m_system);
     m_delta = m_ldlt.solve(m_gradient);

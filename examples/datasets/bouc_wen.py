@@ -50,7 +50,10 @@ def make():
         # the velocity, and with np = 8 a Prandtl-Ishlinskii operator of it (the hysteresis, rate-
         # independent in the benchmark's Bouc-Wen law with nu = 1), its thresholds spread over one
         # standard deviation of what the plays see in the estimation record (_plays).
-        family_orders={"NonlinearFeedback": dict(nh=[0], nd=[1, 2], nv=[0, 1], np=[0, 8])},
+        # The Bouc-Wen feedback model: the benchmark's law itself in the loop, with one to three taps of
+        # the force's block D.
+        family_orders={"NonlinearFeedback": dict(nh=[0], nd=[1, 2], nv=[0, 1], np=[0, 8]),
+                       "BoucWenFeedback": dict(nd=[1, 2, 3])},
         prepare={"NonlinearFeedback": _plays(train["y"])},
         published=[("NFIR local model network (Belz et al. 2017)", "1.63e-4"),
                    ("dynoNet (Forgione and Piga 2021)", "4.52e-5"),

@@ -20,6 +20,7 @@
 #include <array>
 
 #include "models/arx.hpp"
+#include "models/bouc_wen_feedback.hpp"
 #include "models/hammerstein.hpp"
 #include "models/fixed_orders.hpp"
 #include "models/hammerstein_wiener.hpp"
@@ -44,12 +45,13 @@ using Wienerd = Wiener<double>;  ///< Wiener in double
 using WienerHammersteind = WienerHammerstein<double>;  ///< WienerHammerstein in double
 using NonlinearFeedbackd = NonlinearFeedback<double>;  ///< NonlinearFeedback in double
 using PrandtlIshlinskiiHammersteind = PrandtlIshlinskiiHammerstein<double>;  ///< PrandtlIshlinskiiHammerstein in double
+using BoucWenFeedbackd = BoucWenFeedback<double>;  ///< BoucWenFeedback in double
 
 /// Every model, at run-time orders in double: what a model file can hold, what Python binds, what
 /// the property suites run over. A new model is one entry here.
 using Models =
     ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd, WienerHammersteind,
-              NonlinearFeedbackd, PrandtlIshlinskiiHammersteind>;
+              NonlinearFeedbackd, PrandtlIshlinskiiHammersteind, BoucWenFeedbackd>;
 
 /// The orders of the fixed-order variants (WithOrders), by name: the paper's (section 5), na = 3,
 /// nb = 2, r = r1 = 3 and nk = 8 (a run-time order: the structures of the benchmarks and of the

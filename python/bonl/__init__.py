@@ -1,10 +1,10 @@
 """bonl: identification of block-oriented nonlinear models of electro-hydraulic machines.
 
 Models (after Yan et al., the excavator-arm paper, the Wiener, the Wiener-Hammerstein, the
-nonlinear-feedback (Lur'e) and the Prandtl-Ishlinskii Hammerstein model): every class of :data:`MODELS`
-(:class:`ARX`, :class:`Hammerstein`, :class:`HammersteinWiener`, :class:`PseudoHammersteinWiener`,
-:class:`Wiener`, :class:`WienerHammerstein`, :class:`NonlinearFeedback`,
-:class:`PrandtlIshlinskiiHammerstein`); whole-record identification with :func:`identify`,
+nonlinear-feedback (Lur'e), the Prandtl-Ishlinskii Hammerstein and the Bouc-Wen feedback model): every
+class of :data:`MODELS` (:class:`ARX`, :class:`Hammerstein`, :class:`HammersteinWiener`,
+:class:`PseudoHammersteinWiener`, :class:`Wiener`, :class:`WienerHammerstein`, :class:`NonlinearFeedback`,
+:class:`PrandtlIshlinskiiHammerstein`, :class:`BoucWenFeedback`); whole-record identification with :func:`identify`,
 online estimation with :class:`Estimator`; :mod:`bonl.metrics`; the inverse models for control in
 :mod:`bonl.control`; the simulated excavator dipper joint in :mod:`bonl.plant`, and
 :mod:`bonl.experiment`, the paper's experiment on it (:func:`bonl.experiment.run_paper_experiment`).

@@ -1,6 +1,6 @@
 #pragma once
-// Where identify() starts a nonlinear-feedback model besides its recursive estimates: with the loop
-// open. The recursive estimates fit the feedback with the measured output in the loop; in a free run
+// Where identify() starts a feedback model (nonlinear feedback, Bouc-Wen feedback) besides its
+// recursive estimates: with the loop open. The recursive estimates fit the feedback with the measured output in the loop; in a free run
 // the loop sees the model's own output, and a stiffening feedback (a cubic spring) can then diverge
 // from every recursive estimate (on Silverbox with three feedback taps all of them did), which left
 // the refinement nothing to start from. The open loop (the records' best linear approximation, no
@@ -25,14 +25,13 @@
 
 namespace bonl {
 
-/// identify()'s start for a NonlinearFeedback model (the model's identify_starts): the records' best
-/// linear approximation as its linear block (its orders, delay and integrators), the feedback's
-/// coefficients 0 and its block D = q^-1; and with ni = 1 and nv = 1 the velocity model identified on
-/// the records' first differences. The records are deviations from the operating point. A start whose
-/// fit broke down numerically is left out.
+/// identify()'s start with the loop open, for a feedback model (NonlinearFeedback, BoucWenFeedback:
+/// the model's identify_starts): the records' best linear approximation as its linear block (its
+/// orders, delay and integrators), every other coefficient 0 (the feedback's block D = q^-1). The
+/// records are deviations from the operating point. None where the fit broke down numerically.
 template <class Model>
-std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Records<typename Model::Scalar>& records,
-                                             int linear_iterations = 100) {
+std::vector<Model> open_loop_starts(const Model& structure, const Records<typename Model::Scalar>& records,
+                                    int linear_iterations = 100) {
   std::vector<Model> starts;
   try {
     const auto linear = detail::best_linear_approximation(records, structure.na(), structure.nb(), structure.nk(),
@@ -45,6 +44,16 @@ std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Recor
     starts.push_back(open);
   } catch (const NumericalError&) {
   }
+  return starts;
+}
+
+/// identify()'s start for a NonlinearFeedback model (the model's identify_starts): the loop open
+/// (open_loop_starts); and with ni = 1 and nv = 1 the velocity model identified on the records' first
+/// differences. A start whose fit broke down numerically is left out.
+template <class Model>
+std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Records<typename Model::Scalar>& records,
+                                             int linear_iterations = 100) {
+  std::vector<Model> starts = open_loop_starts(structure, records, linear_iterations);
   if (structure.ni() == 1 && structure.nv() == 1) {
     // The first differences from rest (y(-1) = 0: the records are deviations from the operating point).
     using VectorX = typename Model::VectorX;

@@ -1,0 +1,471 @@
+#pragma once
+// Bouc-Wen feedback model: a linear block driven by the input, and a hysteretic restoring force w
+// that the Bouc-Wen law makes of the output, fed back through a second, delayed linear block over
+// the same denominator:
+//   y(k) = -sum_{j=1..na} a_j y(k-j) + sum_{i=0..nb} b_i u(k-nk-i) - sum_{j=1..nd} d_j w(k-j),  d_1 = 1,
+//   w(k) = w(k-1) + alpha dy(k) - gamma |dy(k)| w(k-1) - delta dy(k) |w(k-1)|,  dy(k) = y(k) - y(k-1).
+// The second line is the Bouc-Wen law w' = alpha y' - beta (gamma |y'| w + delta y' |w|) with nu = 1
+// (rate-independent hysteresis: a structure's bolted joint, a damper, a cylinder's friction), stepped
+// once per sample, beta taken into gamma and delta. Its slope dw/dy = alpha - gamma sign(dy) w -
+// delta |w| depends on the force itself, which is what a Prandtl-Ishlinskii operator's plays cannot
+// hold (their loops are congruent, their slope set by the distance from the last reversal alone).
+// The feedback starts one sample back, so there is no algebraic loop; w is subtracted, as a
+// restoring force is (alpha > 0 stiffens), and d_1 = 1 fixes the scale between D and w.
+// Parameters: b_0..b_nb, a_1..a_na, alpha, gamma, delta, d_2..d_nd.
+// Key-term form, with w(k-1) written out by the law (its coefficients are then linear):
+//   y(k) + w(k-2) = [u lags] . b - [y lags] . a - alpha dy(k-1) + gamma |dy(k-1)| w(k-2)
+//                   + delta dy(k-1) |w(k-2)| - sum_{j=2..nd} d_j w(k-j),
+// linear in theta once the internal variables w(k-2), w(k-3), ... are computed; they are the law run
+// over the measured output's past, with the step's theta, for both key-term methods.
+// The output-error sensitivities run through the law: dw(k) = (1 - gamma |dy| - delta dy sign(w))
+// dw(k-1) + (alpha - gamma sign(dy) w - delta |w|) d dy(k) + [dy, -|dy| w, -dy |w|] at alpha, gamma,
+// delta (w = w(k-1), dy = dy(k)). A step so large that the stepped law would overshoot (1 - gamma |dy|
+// - delta dy sign(w) < 0) carries none of w(k-1): w(k) = alpha dy (Law). A free run whose force
+// leaves the finite numbers is reported as every model's is (try_simulate() false). With ni integrators the denominator is A (1 - q^-1)^ni
+// (detail/integrators.hpp).
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "../blocks/linear_block.hpp"
+#include "../detail/history.hpp"
+#include "../detail/integrators.hpp"
+#include "../detail/stability.hpp"
+#include "../detail/validate.hpp"
+#include "detail/model_runs.hpp"
+#include "model_description.hpp"
+#include "model_steps.hpp"
+
+namespace bonl {
+
+/// The Bouc-Wen feedback model: a linear block driven by the input and by a hysteretic restoring
+/// force w of the output, fed back through a second, delayed linear block D over the same
+/// denominator: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) - sum_{j=1..nd} d_j w(k-j), d_1 = 1, with
+/// w(k) = w(k-1) + alpha dy - gamma |dy| w(k-1) - delta dy |w(k-1)|, dy = y(k) - y(k-1) (the
+/// Bouc-Wen law with nu = 1). Parameters: b_0..b_nb, a_1..a_na, alpha, gamma, delta, d_2..d_nd. The
+/// file's header says more.
+template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic, int Nd_ = Eigen::Dynamic>
+class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, Nb_, Nd_>> {
+  static constexpr int kLinearParams = detail::add_sizes(detail::poly_size(Nb_), Na_);  // b, a
+
+ public:
+  /// \copydoc ARX::Scalar
+  using Scalar = Scalar_;
+  /// \copydoc ARX::kNumParams
+  static constexpr int kNumParams =
+      detail::add_sizes(detail::add_sizes(kLinearParams, 3), Nd_ == Eigen::Dynamic ? Eigen::Dynamic : Nd_ - 1);
+  /// The Bouc-Wen feedback model has an unmeasured internal variable, the restoring force w.
+  static constexpr bool kHasInternalVariables = true;
+  /// No inverse for control yet: it would subtract the force the reference's past makes from the
+  /// linear block's inverse (control/inverse_model.hpp).
+  static constexpr bool kInvertible = false;
+  /// \copydoc ARX::kName
+  static constexpr const char* kName = "BoucWenFeedback";
+  /// \copydoc ARX::kDescription
+  static constexpr ModelDescription<5, 6> kDescription{
+      kName,
+      "Bouc-Wen feedback model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) - sum_{j=1..nd} d_j w(k-j), d_1 = 1, "
+      "the restoring force w(k) = w(k-1) + alpha dy - gamma |dy| w(k-1) - delta dy |w(k-1)|, dy = y(k) - y(k-1) "
+      "(the Bouc-Wen law of hysteresis with nu = 1).",
+      {{{"na", 1, detail::kMaxOrder, Na_, "poles of the linear block (na >= 1)"},
+        {"nb", 0, detail::kMaxOrder, Nb_, "B has nb + 1 coefficients b_0..b_nb"},
+        {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay of the input in samples"},
+        {"nd", 1, 32, Nd_, "taps of the force's block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32)"},
+        detail::kIntegratorsOrder}},
+      {{{"b", ParameterShape::Vector, 0, "b_0..b_nb", nullptr, false, {1, 0, -1, 0}},
+        {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
+        {"alpha", ParameterShape::Number, 0, "the force's stiffness: dw = alpha dy where w = 0", nullptr, false, {}},
+        {"gamma", ParameterShape::Number, 0, "the law's |dy| w coefficient (beta gamma)", nullptr, false,
+         {-1, 0, 0, 0}},
+        {"delta", ParameterShape::Number, 0, "the law's dy |w| coefficient (beta delta)", nullptr, false,
+         {-1, 0, 0, 0}},
+        {"d", ParameterShape::Vector, 1, "d_1..d_nd with d_1 = 1",
+         "the Bouc-Wen feedback model is normalised so that d_1 = 1", false, {}}}}};
+  /// \copydoc ARX::Params
+  using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
+  /// \copydoc ARX::VectorX
+  using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  /// \copydoc ARX::Linear
+  using Linear = LinearBlock<Scalar, Na_, Nb_>;
+
+  /// A model with the orders na >= 1, nb >= 0, nk >= 0, nd >= 1 and ni in 0..2, all parameters zero
+  /// (d = 1, 0, ..., 0). Throws std::invalid_argument for an order out of range or one that differs
+  /// from the model's template orders.
+  BoucWenFeedback(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index nd, Eigen::Index ni = 0)
+      : m_na(na), m_nb(nb), m_nk(nk), m_nd(nd), m_ni(ni) {
+    detail::require_order(na, 1, "na");
+    detail::require_order(nb, 0, "nb");
+    detail::require_order(nk, 0, "nk");
+    detail::require_order(nd, 1, "nd (force taps)");
+    detail::require(nd <= 32, "nd (force taps) must be <= 32");
+    detail::require_integrators(ni);
+    detail::require_matches_template(na, Na_, "na");
+    detail::require_matches_template(nb, Nb_, "nb");
+    detail::require_matches_template(nd, Nd_, "nd");
+    m_theta = Params::Zero(nb + 1 + na + 3 + nd - 1);
+  }
+
+  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
+  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
+  Eigen::Index nd() const noexcept { return m_nd; }  ///< the order nd: taps of the force's block D (d_1 = 1)
+  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  /// \copydoc ARX::num_params
+  Eigen::Index num_params() const noexcept { return m_theta.size(); }
+  /// \copydoc ARX::orders
+  std::array<Eigen::Index, 5> orders() const noexcept { return {m_na, m_nb, m_nk, m_nd, m_ni}; }
+
+  /// identify()'s start beside its recursive estimates: the loop open, the records' best linear
+  /// approximation as the linear block and no force (estimator/nonlinear_feedback_start.hpp, in
+  /// <bonl/estimator.hpp>, found by argument-dependent lookup where identify() calls this). The
+  /// key-term recursions fit the law with the measured output's force; a free run from their estimate
+  /// can leave the law's range (a step |dy| beyond 1 / (|gamma| + |delta|) overshoots), the open loop
+  /// simulates like a stable linear model.
+  template <class RecordList>
+  static std::vector<BoucWenFeedback> identify_starts(const BoucWenFeedback& structure, const RecordList& records) {
+    return open_loop_starts(structure, records);
+  }
+
+  /// \copydoc ARX::theta
+  const Params& theta() const noexcept { return m_theta; }
+  /// \copydoc ARX::set_theta
+  template <typename T>
+  void set_theta(const Eigen::MatrixBase<T>& theta) {
+    detail::assign_checked(m_theta, theta, "theta");
+  }
+
+  VectorX b() const { return m_theta.head(m_nb + 1); }  ///< the numerator coefficients b_0..b_nb
+  VectorX a() const { return m_theta.segment(first_a(), m_na); }  ///< the denominator coefficients a_1..a_na
+  Scalar alpha() const noexcept { return m_theta[first_law()]; }  ///< the force's stiffness where w = 0
+  Scalar gamma() const noexcept { return m_theta[first_law() + 1]; }  ///< the law's |dy| w coefficient
+  Scalar delta() const noexcept { return m_theta[first_law() + 2]; }  ///< the law's dy |w| coefficient
+  /// d_1..d_nd with d_1 = 1.
+  VectorX d() const {
+    VectorX out(m_nd);
+    out[0] = Scalar(1);
+    out.tail(m_nd - 1) = m_theta.segment(first_d(), m_nd - 1);
+    return out;
+  }
+  /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
+  template <typename T>
+  void set_b(const Eigen::MatrixBase<T>& b) {
+    detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
+  }
+  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
+  template <typename T>
+  void set_a(const Eigen::MatrixBase<T>& a) {
+    detail::assign_checked(m_theta.segment(first_a(), m_na), a, "a");
+  }
+  /// Sets alpha (finite, else std::invalid_argument).
+  void set_alpha(Scalar alpha) { set_law(0, alpha, "alpha"); }
+  /// Sets gamma (finite, else std::invalid_argument).
+  void set_gamma(Scalar gamma) { set_law(1, gamma, "gamma"); }
+  /// Sets delta (finite, else std::invalid_argument).
+  void set_delta(Scalar delta) { set_law(2, delta, "delta"); }
+  /// Sets d_1..d_nd: nd finite values with d_1 = 1 (the normalisation), else std::invalid_argument.
+  template <typename T>
+  void set_d(const Eigen::MatrixBase<T>& d) {
+    detail::require_size(d, m_nd, "d");
+    detail::require_finite(d, "d");
+    detail::require(d[0] == 1, std::string("d[0] (d_1) must be 1: ") + kDescription.parameters[5].normalised);
+    m_theta.segment(first_d(), m_nd - 1) = d.tail(m_nd - 1);
+  }
+
+  /// The parameter block kDescription.parameters[i]: b, a, alpha, gamma, delta, d.
+  VectorX parameter(std::size_t i) const {
+    switch (i) {
+      case 0: return b();
+      case 1: return a();
+      case 2:
+      case 3:
+      case 4: return VectorX::Constant(1, m_theta[first_law() + static_cast<Eigen::Index>(i) - 2]);
+      case 5: return d();
+      default: detail::no_such_parameter(kName, i);
+    }
+  }
+  /// \copydoc ARX::set_parameter
+  void set_parameter(std::size_t i, const VectorX& value) {
+    switch (i) {
+      case 0: return set_b(value);
+      case 1: return set_a(value);
+      case 2:
+      case 3:
+      case 4: {
+        const char* name = kDescription.parameters[i].name;
+        detail::require_size(value, 1, name);
+        return set_law(static_cast<Eigen::Index>(i) - 2, value[0], name);
+      }
+      case 5: return set_d(value);
+      default: detail::no_such_parameter(kName, i);
+    }
+  }
+
+  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
+  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  template <typename U>
+  bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
+    const Law law(*this);
+    detail::History<Scalar> u_lags(m_nk + m_nb + 1);
+    detail::History<Scalar> force(m_nd);  // w(k-1), w(k-2), ...
+    detail::History<Scalar> z_lags(m_na);  // the denominator's past: y differenced ni times
+    detail::IntegratorLags<Scalar> integrators(m_ni);
+    y.resize(u.size());
+    Scalar before = Scalar(0);  // y(k-1)
+    for (Eigen::Index k = 0; k < u.size(); ++k) {
+      u_lags.push(u[k]);
+      Scalar out = Scalar(0);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) out += m_theta[i] * u_lags[m_nk + i];
+      for (Eigen::Index j = 0; j < m_na; ++j) out -= m_theta[first_a() + j] * z_lags[j];
+      for (Eigen::Index j = 0; j < m_nd; ++j) out -= tap(m_theta, j) * force[j];
+      if (m_ni > 0) out += integrators.carried();
+      y[k] = out;
+      const Scalar next = law.next(m_theta, force[0], out - before);
+      if (!std::isfinite(out) || !std::isfinite(next)) return false;
+      force.push(next);
+      z_lags.push(integrators.push(out));
+      before = out;
+    }
+    return true;
+  }
+
+  /// Where the recursive estimator starts (all zero: no force, d = 1, 0, ..., 0).
+  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
+  /// Projects an estimate onto the model's valid set: every theta is valid.
+  void constrain(Params& /*theta*/) const noexcept {}
+
+ private:
+  /// The Bouc-Wen law on theta: the next force, its partial derivatives, and its parameters' entries.
+  /// A step is w(k) = m w(k-1) + alpha dy, m = 1 - gamma |dy| - delta dy sign(w(k-1)), stepped at
+  /// most to the force's rest: m is held at 0 where a step would take it below (|dy| beyond about
+  /// 1 / (|gamma| + |delta|)), since there the stepped law overshoots and, from step to step, would
+  /// grow without bound where the law it steps saturates.
+  class Law {
+   public:
+    explicit Law(const BoucWenFeedback& model) : m_first(model.first_law()) {}
+    /// m, the factor w(k-1) is carried with (0 where it would be below).
+    template <typename Theta>
+    Scalar carried(const Theta& theta, Scalar w, Scalar dy) const noexcept {
+      const Scalar m = Scalar(1) - theta[m_first + 1] * std::abs(dy) - theta[m_first + 2] * dy * sign(w);
+      return m > Scalar(0) ? m : Scalar(0);
+    }
+    /// w(k) from w(k-1) and dy(k).
+    template <typename Theta>
+    Scalar next(const Theta& theta, Scalar w, Scalar dy) const noexcept {
+      return carried(theta, w, dy) * w + theta[m_first] * dy;
+    }
+    /// d w(k) / d w(k-1).
+    template <typename Theta>
+    Scalar by_force(const Theta& theta, Scalar w, Scalar dy) const noexcept {
+      return carried(theta, w, dy);
+    }
+    /// d w(k) / d dy(k).
+    template <typename Theta>
+    Scalar by_step(const Theta& theta, Scalar w, Scalar dy) const noexcept {
+      const Scalar law = carried(theta, w, dy) > Scalar(0) ? theta[m_first + 1] * sign(dy) * w + theta[m_first + 2] * std::abs(w)
+                                                            : Scalar(0);
+      return theta[m_first] - law;
+    }
+    /// weight * d w(k) / d [alpha, gamma, delta] added into out's entries.
+    template <typename Theta, typename Out>
+    void add_regressor(const Theta& theta, Scalar w, Scalar dy, Scalar weight, Out& out) const noexcept {
+      out[m_first] += weight * dy;
+      if (carried(theta, w, dy) == Scalar(0)) return;
+      out[m_first + 1] -= weight * std::abs(dy) * w;
+      out[m_first + 2] -= weight * dy * std::abs(w);
+    }
+
+   private:
+    // The slope of |x|: 0 at 0, where |x| has no slope (the one-sided ones are -1 and 1).
+    static Scalar sign(Scalar x) noexcept { return Scalar((x > 0) - (x < 0)); }
+    Eigen::Index m_first;
+  };
+
+ public:
+  /// Key-term form: regressor [u(k-nk..k-nk-nb), -y(k-1..k-na), -dy(k-1), |dy(k-1)| w(k-2),
+  /// dy(k-1) |w(k-2)|, -w(k-2..k-nd)], target y(k) + w(k-2), with the law run over the measured
+  /// outputs with the step's theta (the model's prediction where y is NaN). predict() runs it. With
+  /// integrators the a-entries hold the differenced past and the target is less their part.
+  class KeyTerms {
+   public:
+    /// \copydoc ARX::KeyTerms::KeyTerms
+    KeyTerms(const BoucWenFeedback& model, KeyTermMethod /*method*/)
+        : m_law(model), m_u(model.nk() + model.nb() + 1), m_y(2), m_z(model.na()), m_force(model.nd()),
+          m_integrators(model.ni()), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_nd(model.nd()),
+          m_first_law(model.first_law()), m_first_d(model.first_d()), m_phi(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::KeyTerms::reset
+    void reset() noexcept {
+      m_u.clear();
+      m_y.clear();
+      m_z.clear();
+      m_force.clear();
+      m_integrators.clear();
+    }
+    /// \copydoc ARX::KeyTerms::step
+    Regression<Scalar, Params> step(const Params& theta, Scalar u, Scalar y) noexcept {
+      m_u.push(u);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) m_phi[i] = m_u[m_nk + i];
+      for (Eigen::Index j = 0; j < m_na; ++j) m_phi[m_nb + 1 + j] = -m_z[j];
+      // w(k-1) by the law from w(k-2) and the measured dy(k-1): its coefficients enter the regressor.
+      const Scalar w2 = m_force[0], dy1 = m_y[0] - m_y[1];
+      m_phi.segment(m_first_law, 3).setZero();
+      m_law.add_regressor(theta, w2, dy1, Scalar(-1), m_phi);
+      const Scalar held = m_law.carried(theta, w2, dy1) > Scalar(0) ? w2 : Scalar(0);  // w(k-2)'s part of w(k-1)
+      m_force.push(m_law.next(theta, w2, dy1));
+      for (Eigen::Index j = 1; j < m_nd; ++j) m_phi[m_first_d + j - 1] = -m_force[j];
+      const Scalar carried = m_integrators.carried() - held;
+      const Scalar prediction = m_phi.dot(theta) + carried;
+      const Scalar lag = std::isnan(y) ? prediction : y;
+      m_y.push(lag);
+      m_z.push(m_integrators.push(lag));
+      return {m_phi, y - carried, prediction, m_force[0], true};
+    }
+
+   private:
+    Law m_law;
+    detail::History<Scalar> m_u, m_y;  // m_y: y(k-1), y(k-2), measured
+    detail::History<Scalar> m_z;       // the denominator's past: y differenced ni times
+    detail::History<Scalar> m_force;   // w(k-1), w(k-2), ... of the measured past
+    detail::IntegratorLags<Scalar> m_integrators;
+    Eigen::Index m_na, m_nb, m_nk, m_nd, m_first_law, m_first_d;
+    Params m_phi;
+  };
+
+  /// The output-error method's view: one step of the free run with its sensitivities,
+  ///   dy(k) = [u lags at b] + [-y lags at a] + [-w(k-j) at d_j] - sum_j a_j dy(k-j) - sum_j d_j dw(k-j),
+  /// and the force's, dw(k) = (d w(k) / d w(k-1)) dw(k-1) + (d w(k) / d dy(k)) (dy(k) - dy(k-1)) + its
+  /// parameters' entries (the law's partial derivatives, Law). With integrators the denominator's
+  /// past is z = (1 - q^-1)^ni y, kept with its sensitivities beside y's, and y(k) and dy(k) carry
+  /// the integrators' part of the past y and dy.
+  class OutputErrorTerms {
+   public:
+    /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
+    explicit OutputErrorTerms(const BoucWenFeedback& model, Eigen::Index /*hold*/ = 0)
+        : m_law(model), m_u(model.nk() + model.nb() + 1), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()),
+          m_nd(model.nd()), m_first_d(model.first_d()), m_ni(model.ni()), m_y(VectorX::Zero(std::max<Eigen::Index>(model.ni(), 1))),
+          m_dy(SensitivityLags::Zero(model.num_params(), std::max<Eigen::Index>(model.ni(), 1))),
+          m_z(VectorX::Zero(model.na())), m_dz(SensitivityLags::Zero(model.num_params(), model.na())),
+          m_w(VectorX::Zero(model.nd())), m_dw(SensitivityLags::Zero(model.num_params(), model.nd())),
+          m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())), m_psi(Params::Zero(model.num_params())),
+          m_dw_next(Params::Zero(model.num_params())) {}
+    /// \copydoc ARX::OutputErrorTerms::reset
+    void reset() noexcept {
+      m_u.clear();
+      m_y.setZero();
+      m_dy.setZero();
+      m_z.setZero();
+      m_dz.setZero();
+      m_w.setZero();
+      m_dw.setZero();
+    }
+    /// \copydoc ARX::OutputErrorTerms::step
+    SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
+      m_u.push(u);
+      Scalar y = Scalar(0);
+      for (Eigen::Index i = 0; i <= m_nb; ++i) {
+        m_psi[i] = m_u[m_nk + i];
+        y += theta[i] * m_psi[i];
+      }
+      for (Eigen::Index j = 0; j < m_na; ++j) {
+        m_psi[m_nb + 1 + j] = -m_z[j];
+        y -= theta[m_nb + 1 + j] * m_z[j];
+      }
+      m_psi.segment(m_nb + 1 + m_na, 3).setZero();
+      for (Eigen::Index j = 0; j < m_nd; ++j) {
+        y -= (j == 0 ? Scalar(1) : theta[m_first_d + j - 1]) * m_w[j];
+        if (j > 0) m_psi[m_first_d + j - 1] = -m_w[j];
+      }
+      // Through the loop: the denominator's past and the force's.
+      for (Eigen::Index j = 0; j < m_na; ++j) m_psi -= theta[m_nb + 1 + j] * m_dz.col(j);
+      for (Eigen::Index j = 0; j < m_nd; ++j) m_psi -= (j == 0 ? Scalar(1) : theta[m_first_d + j - 1]) * m_dw.col(j);
+      if (m_ni > 0) {
+        y += detail::carried<Scalar>(m_ni, m_y);
+        detail::add_carried_sensitivity(m_ni, m_dy, Scalar(1), m_psi);
+      }
+      // The force this step makes, for the steps after it (accept() stores it).
+      const Scalar w = m_w[0], dy = y - m_y[0];
+      m_w_next = m_law.next(theta, w, dy);
+      m_dw_next = m_law.by_force(theta, w, dy) * m_dw.col(0) + m_law.by_step(theta, w, dy) * (m_psi - m_dy.col(0));
+      m_law.add_regressor(theta, w, dy, Scalar(1), m_dw_next);
+      m_output = y;
+      return {y, m_psi, w};
+    }
+    /// \copydoc ARX::OutputErrorTerms::accept()
+    void accept() noexcept {
+      for (Eigen::Index j = m_z.size() - 1; j > 0; --j) {
+        m_z[j] = m_z[j - 1];
+        m_dz.col(j) = m_dz.col(j - 1);
+      }
+      if (m_z.size() > 0) {
+        m_z[0] = m_output;  // z(k) = y(k) - carried(k), read before the y lags move
+        m_dz.col(0) = m_psi;
+        if (m_ni > 0) {
+          m_z[0] -= detail::carried<Scalar>(m_ni, m_y);
+          detail::add_carried_sensitivity(m_ni, m_dy, Scalar(-1), m_dz.col(0));
+        }
+      }
+      for (Eigen::Index j = m_y.size() - 1; j > 0; --j) {
+        m_y[j] = m_y[j - 1];
+        m_dy.col(j) = m_dy.col(j - 1);
+      }
+      m_y[0] = m_output;
+      m_dy.col(0) = m_psi;
+      for (Eigen::Index j = m_w.size() - 1; j > 0; --j) {
+        m_w[j] = m_w[j - 1];
+        m_dw.col(j) = m_dw.col(j - 1);
+      }
+      m_w[0] = m_w_next;
+      m_dw.col(0) = m_dw_next;
+    }
+    /// After the estimate moved by delta: the stored outputs and forces to first order (as
+    /// SimulatedLags does).
+    void correct(const Params& delta) noexcept {
+      for (Eigen::Index j = 0; j < m_y.size(); ++j) m_y[j] += m_dy.col(j).dot(delta);
+      for (Eigen::Index j = 0; j < m_z.size(); ++j) m_z[j] += m_dz.col(j).dot(delta);
+      for (Eigen::Index j = 0; j < m_w.size(); ++j) m_w[j] += m_dw.col(j).dot(delta);
+    }
+    /// \copydoc ARX::OutputErrorTerms::stable
+    bool stable(const Params& theta, Scalar radius) noexcept {
+      return detail::roots_inside(theta.template segment<Na_>(m_nb + 1, m_na), radius, m_work);
+    }
+
+   private:
+    using SensitivityLags = Eigen::Matrix<Scalar, kNumParams, Eigen::Dynamic>;
+
+    Law m_law;
+    detail::History<Scalar> m_u;
+    Eigen::Index m_na, m_nb, m_nk, m_nd, m_first_d, m_ni;
+    VectorX m_y;            // y(k-1), y(k-2): the simulated outputs, newest first (dy(k) and the integrators)
+    SensitivityLags m_dy;   // their sensitivities, one column each
+    VectorX m_z;            // z(k-1..k-na): the denominator's past, y differenced ni times
+    SensitivityLags m_dz;   // their sensitivities
+    VectorX m_w;            // w(k-1..k-nd): the simulated force
+    SensitivityLags m_dw;   // its sensitivities
+    Eigen::Matrix<Scalar, Na_, 1> m_work;  // for the stability test
+    Params m_psi;
+    Params m_dw_next;       // dw(k), stored by accept()
+    Scalar m_w_next = Scalar(0);
+    Scalar m_output = Scalar(0);
+  };
+
+ private:
+  Eigen::Index first_a() const noexcept { return m_nb + 1; }
+  Eigen::Index first_law() const noexcept { return m_nb + 1 + m_na; }
+  Eigen::Index first_d() const noexcept { return first_law() + 3; }
+  /// d_{j+1} on theta (d_1 = 1).
+  Scalar tap(const Params& theta, Eigen::Index j) const noexcept { return j == 0 ? Scalar(1) : theta[first_d() + j - 1]; }
+  void set_law(Eigen::Index i, Scalar value, const char* name) {
+    detail::require(std::isfinite(value), std::string(name) + " must be finite, got " + detail::format_number(value));
+    m_theta[first_law() + i] = value;
+  }
+
+  Params m_theta;
+  Eigen::Index m_na, m_nb, m_nk, m_nd, m_ni;
+};
+
+}  // namespace bonl

@@ -94,6 +94,7 @@ struct TypeTag {
 /// \code
 /// for_each_model(Models{}, [](auto tag) { using Model = typename decltype(tag)::type; ... });
 /// \endcode
+/// \param f called once per model with its TypeTag; what it returns is discarded
 template <class... Models, class F>
 void for_each_model(ModelList<Models...>, F&& f) {
   (f(TypeTag<Models>{}), ...);

@@ -65,6 +65,8 @@ void set_denominator(Model& model, std::size_t i, const A& a) {
 
 /// The largest pole magnitude of `model`'s linear blocks: < 1 stable, >= 1 not; near 1 barely damped.
 /// Infinity where the coefficients are not finite.
+/// \param model any model of the list
+/// \return the largest |pole| over the linear blocks' denominators (integrators' poles at 1 not included)
 template <class Model>
 double pole_radius(const Model& model) {
   double radius = 0.0;

@@ -18,6 +18,8 @@
 namespace bonl {
 
 /// The roots of z^na + a_1 z^(na-1) + ... + a_na (the poles of 1 / A(z^-1)).
+/// \param a a_1..a_na
+/// \return the na poles, complex
 template <typename A>
 Eigen::Matrix<std::complex<typename A::Scalar>, Eigen::Dynamic, 1> denominator_poles(const Eigen::MatrixBase<A>& a) {
   using Scalar = typename A::Scalar;

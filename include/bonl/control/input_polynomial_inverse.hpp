@@ -39,10 +39,10 @@ class InputPolynomialInverse {
   using Scalar = Scalar_;  ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
-  /// The inverse of the polynomial with f and p (as TwoSegmentPolynomial) on a command range. Throws std::invalid_argument for f and p of different lengths
-  /// or fewer than 2 entries, non-finite coefficients, a range that is not finite or leaves out 0, or a
-  /// polynomial with no inverse: w rising with u on one side of 0 and falling on the other, or
-  /// constant over the range.
+  /// The inverse of the polynomial with f and p (as TwoSegmentPolynomial) on a command range. Throws
+  /// std::invalid_argument for f and p of different lengths or fewer than 2 entries, non-finite
+  /// coefficients, a range that is not finite or leaves out 0, or a polynomial with no inverse: w
+  /// rising with u on one side of 0 and falling on the other, or constant over the range.
   /// \param f f_0..f_r, the polynomial for u >= 0
   /// \param p p_0..p_r, added for u < 0
   /// \param u_min the command range's lower end, finite, <= 0 (a deviation from the operating point)

@@ -26,8 +26,8 @@ class OutputPolynomialInverse {
   using Scalar = Scalar_;  ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
-  /// The inverse of the polynomial with coefficients q. Throws std::invalid_argument for an empty or non-finite q, or q_1 = 0 (no inverse
-  /// through the operating point).
+  /// The inverse of the polynomial with coefficients q. Throws std::invalid_argument for an empty or
+  /// non-finite q, or q_1 = 0 (no inverse through the operating point).
   /// \param q q_1..q_r1
   template <typename Q>
   explicit OutputPolynomialInverse(const Eigen::MatrixBase<Q>& q) {

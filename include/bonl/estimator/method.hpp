@@ -28,7 +28,7 @@ enum class Method {
 /// The name of a method, as Python, model files and the command line spell it ("output_error",
 /// "equation_error", "paper").
 /// \param method the method
-/// \return a static string
+/// \return the name, a string literal
 inline const char* to_string(Method method) noexcept {
   switch (method) {
     case Method::OutputError: return "output_error";

@@ -40,7 +40,7 @@ enum class SelectionCriterion { Validation, AIC, BIC };
 
 /// The name of a criterion, as Python spells it: "validation", "aic", "bic".
 /// \param criterion the criterion
-/// \return a static string
+/// \return the name, a string literal
 inline const char* to_string(SelectionCriterion criterion) {
   switch (criterion) {
     case SelectionCriterion::AIC: return "aic";

@@ -88,7 +88,7 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   void set_theta(const Eigen::MatrixBase<T>& theta) {
     detail::assign_checked(m_theta, theta, "theta");
   }
-  /// The parameter block kDescription.parameters[i]. ARX's blocks: b, a.
+  /// The parameter block kDescription.parameters[i]: b, a.
   /// \param i the block's index in kDescription.parameters
   /// \return a copy of the block's entries in its order (a normalised block without its fixed first entry)
   VectorX parameter(std::size_t i) const {

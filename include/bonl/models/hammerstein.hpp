@@ -48,8 +48,8 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   std::array<Eigen::Index, 5> orders() const noexcept {
     return {this->na(), this->nb(), this->nk(), this->r(), this->ni()};
   }
-  /// \copydoc ARX::parameter
-  /// The blocks here: b, a, f, p.
+  /// The parameter block kDescription.parameters[i]: b, a, f, p.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     if (i >= 4) detail::no_such_parameter(kName, i);
     return this->front_parameter(i);

@@ -63,8 +63,8 @@ class HammersteinWiener
   std::array<Eigen::Index, 6> orders() const noexcept {
     return {this->na(), this->nb(), this->nk(), this->r(), m_r1, this->ni()};
   }
-  /// \copydoc ARX::parameter
-  /// The blocks here: b, a, f, p, q.
+  /// The parameter block kDescription.parameters[i]: b, a, f, p, q.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     if (i < Front::kFrontBlocks) return this->front_parameter(i);
     if (i == Front::kFrontBlocks) return this->q();

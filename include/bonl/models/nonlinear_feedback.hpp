@@ -186,7 +186,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// above the models (estimator/nonlinear_feedback_start.hpp, in <bonl/estimator.hpp>): found by
   /// argument-dependent lookup where identify() calls this.
   /// \param structure the orders, knots and thresholds to start from
-  /// \param records the identification records, each with u() and y()
+  /// \param records the identification records (deviations from the operating point, as identify() hands them)
   /// \return the starts, each a model with structure's orders, knots and thresholds
   template <class RecordList>
   static std::vector<NonlinearFeedback> identify_starts(const NonlinearFeedback& structure, const RecordList& records) {
@@ -273,8 +273,8 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     m_theta.segment(first_d(), m_nd - 1) = d.tail(m_nd - 1);
   }
 
-  /// \copydoc ARX::parameter
-  /// The blocks here: b, a, f, knots, g, thresholds, w, d.
+  /// The parameter block kDescription.parameters[i]: b, a, f, knots, g, thresholds, w, d.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b();

@@ -193,8 +193,8 @@ class PrandtlIshlinskiiHammerstein
     detail::assign_checked(m_theta.segment(basis_size() + m_nb, m_na), a, "a");
   }
 
-  /// \copydoc ARX::parameter
-  /// The blocks here: b, a, f, thresholds, g.
+  /// The parameter block kDescription.parameters[i]: b, a, f, thresholds, g.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b();
@@ -222,7 +222,7 @@ class PrandtlIshlinskiiHammerstein
   /// prandtl_ishlinskii_starts belongs to the estimator, a layer above the models
   /// (estimator/play_thresholds.hpp, in <bonl/estimator.hpp>): found by argument-dependent lookup.
   /// \param structure the orders (and the structure's other settings) to start from
-  /// \param records the identification records, each with u() and y()
+  /// \param records the identification records (deviations from the operating point, as identify() hands them)
   /// \return the starts, each with structure's orders
   template <class RecordList>
   static std::vector<PrandtlIshlinskiiHammerstein> identify_starts(const PrandtlIshlinskiiHammerstein& structure,

@@ -53,8 +53,8 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   std::array<Eigen::Index, 5> orders() const noexcept {
     return {this->na(), this->nb(), this->nk(), this->r(), this->ni()};
   }
-  /// \copydoc ARX::parameter
-  /// The blocks here: b, a, f, p, c (one entry).
+  /// The parameter block kDescription.parameters[i]: b, a, f, p, c (one entry).
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     if (i < Front::kFrontBlocks) return this->front_parameter(i);
     if (i == Front::kFrontBlocks) return VectorX::Constant(1, c());

@@ -126,8 +126,8 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     detail::assign_checked(m_theta.segment(m_nb + 1, m_na), a, "a");
   }
 
-  /// \copydoc ARX::parameter
-  /// The blocks here: b, a, q.
+  /// The parameter block kDescription.parameters[i]: b, a, q.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     if (i == 0) return b();
     if (i == 1) return a();

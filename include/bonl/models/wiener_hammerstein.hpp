@@ -229,8 +229,8 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     detail::assign_checked(m_theta.segment(first_a2(), m_na2), a2, "a2");
   }
 
-  /// \copydoc ARX::parameter
-  /// The blocks here: b1, a1, f, knots, g, b2, a2.
+  /// The parameter block kDescription.parameters[i]: b1, a1, f, knots, g, b2, a2.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b1();
@@ -262,7 +262,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// (estimator/wiener_hammerstein_start.hpp, in <bonl/estimator.hpp>): found by argument-dependent
   /// lookup where identify() calls this.
   /// \param structure the orders (and the structure's other settings) to start from
-  /// \param records the identification records, each with u() and y()
+  /// \param records the identification records (deviations from the operating point, as identify() hands them)
   /// \return the starts, each with structure's orders and knots
   template <class RecordList>
   static std::vector<WienerHammerstein> identify_starts(const WienerHammerstein& structure, const RecordList& records) {

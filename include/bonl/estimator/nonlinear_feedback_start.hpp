@@ -30,6 +30,10 @@ namespace bonl {
 /// coefficients 0 and its block D = q^-1; and with ni = 1 and nv = 1 the velocity model identified on
 /// the records' first differences. The records are deviations from the operating point. A start whose
 /// fit broke down numerically is left out.
+/// \param structure the orders, knots and thresholds
+/// \param records the identification records, deviations from the operating point
+/// \param linear_iterations the Levenberg-Marquardt iterations of the best linear approximation
+/// \return the starts, possibly none
 template <class Model>
 std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Records<typename Model::Scalar>& records,
                                              int linear_iterations = 100) {

@@ -231,6 +231,20 @@ void def_inits(Class& cls, DefInit def_init) {
   });
 }
 
+/// InverseModel.step's docstring, and AdaptiveInverse.step's (the step of the inverse in use).
+const char* kStepDoc = R"doc(The command u(k) for the reference ahead.
+
+Parameters
+----------
+reference : float or 1-D array
+    r(k + nk) (a float, where window_size is 1), or the window r(k + nk), ..., r(k + preview) (at
+    least window_size entries).
+
+Returns
+-------
+InverseStep: ``value`` (the command) and ``status`` (InverseStatus flags). A non-finite reference or a
+window too short raises ValueError and leaves the inverse untouched.)doc";
+
 }  // namespace
 
 void bind_control(py::module_& m) {
@@ -291,24 +305,22 @@ Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1,
 polynomial that is not monotone through 0, input hysteresis whose slope can take either sign near 0).)doc");
   def_inits(inverse, [](auto& cls, auto tag) { def_inverse_init<typename decltype(tag)::type>(cls); });
   inverse
-      .def("step", &AnyInverse::step, py::arg("reference"), R"doc(The command u(k) for the reference ahead.
-
-Parameters
-----------
-reference : float or 1-D array
-    r(k + nk) (a float, where window_size is 1), or the window r(k + nk), ..., r(k + preview) (at
-    least window_size entries).
-
-Returns
--------
-InverseStep: ``value`` (the command) and ``status`` (InverseStatus flags). A non-finite reference or a
-window too short raises ValueError and leaves the inverse untouched.)doc")
+      .def("step", &AnyInverse::step, py::arg("reference"), kStepDoc)
       .def("commands", &AnyInverse::commands, py::arg("reference"),
            R"doc(The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
 
 u(k) is computed from r(k + nk), ..., r(k + preview), the reference held at its last value beyond its end;
-model.simulate(run.command) then follows r from k = nk on where every status is exact. ValueError for a
-non-finite reference or one of preview samples or fewer. Returns InverseRun (command, status).)doc")
+model.simulate(run.command) then follows r from k = nk on where every status is exact.
+
+Parameters
+----------
+reference : array_like, shape (N,)
+    r(0..N-1), in the model's output units; finite, longer than preview (else ValueError).
+
+Returns
+-------
+InverseRun
+    ``command``, the N commands, and ``status``, each command's InverseStatus.)doc")
       .def("reset", &AnyInverse::reset, "Back to rest, as the model's free run starts.")
       .def_property_readonly("nk", &AnyInverse::nk, "int: the model's delay")
       .def_property_readonly("preview", &AnyInverse::preview,
@@ -365,13 +377,28 @@ Raises ValueError for bad options or a model without an inverse.)doc";
   py::class_<AnyAdaptive> adaptive(control, "AdaptiveInverse", adaptive_doc.c_str());
   def_inits(adaptive, [](auto& cls, auto tag) { def_adaptive_init<typename decltype(tag)::type>(cls); });
   adaptive
-      .def("step", &AnyAdaptive::step, py::arg("reference"),
-           "The command for the reference ahead, from the inverse in use (as InverseModel.step).")
+      .def("step", &AnyAdaptive::step, py::arg("reference"), kStepDoc)
       .def("update", &AnyAdaptive::update, py::arg("u"), py::arg("y"),
-           "One sample of the plant: u the command applied and y the output measured. Returns the estimator's\n"
-           "UpdateStatus (rejected_non_finite for a NaN or infinite value: nothing changes).")
+           R"doc(One sample of the plant, to the estimator; every rederive_every samples, rederive().
+
+Parameters
+----------
+u : float
+    The command applied (the whole command, feedback included).
+y : float
+    The output measured.
+
+Returns
+-------
+UpdateStatus
+    The estimator's (rejected_non_finite for a NaN or infinite value: nothing changes).)doc")
       .def("rederive", &AnyAdaptive::rederive,
-           "Derive the inverse from the estimate now, if the guard trusts it; returns whether it is in use.")
+           R"doc(Derive the inverse from the estimate now, if the guard trusts it.
+
+Returns
+-------
+bool
+    Whether the new inverse is in use; if not, the last good one stays and health says why.)doc")
       .def_property_readonly("model", &AnyAdaptive::model, "The model the inverse in use was derived from.")
       .def_property_readonly("estimate", &AnyAdaptive::estimate, "The estimator's current estimate, as a model.")
       .def_property_readonly("health", &AnyAdaptive::health,

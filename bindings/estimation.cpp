@@ -505,9 +505,13 @@ UpdateResults
       .def_property_readonly("samples", &AnyEstimator::samples, "int: samples since the last pass started.")
       .def_property_readonly("diverged", &AnyEstimator::diverged, "bool: an update was refused for numerical reasons.")
       .def("reset", &AnyEstimator::reset, py::arg("theta0") = py::none(),
-           "Back to the initial estimate, P = p0 I, internal variables at rest; or, given theta0, restart from\n"
-           "the estimate theta0 (a warm start: the model's parameter vector, e.g. an identified model's theta).\n"
-           "ValueError for theta0 of another length.")
+           R"doc(Back to the initial estimate, P = p0 I, internal variables at rest; or restart from theta0.
+
+Parameters
+----------
+theta0 : array_like, shape (num_params,), optional
+    The estimate to restart from (a warm start: the model's parameter vector, e.g. an identified
+    model's theta). ValueError for theta0 of another length.)doc")
       .def("start_pass", &AnyEstimator::start_pass,
            "A new pass over a record: theta and P carry on, the forgetting schedule and internals restart.")
       .def_property_readonly("last_prediction", &AnyEstimator::last_prediction,
@@ -521,7 +525,12 @@ UpdateResults
       .def("recover", &AnyEstimator::recover,
            "Leave the diverged state: P = p0 I, theta kept (a covariance reset); the counters in health stay.")
       .def("start_recording", &AnyEstimator::start_recording, py::arg("capacity"),
-           "Record theta, the internal variable and the status of the next updates, keeping the newest `capacity`.")
+           R"doc(Record theta, the internal variable and the status of the next updates.
+
+Parameters
+----------
+capacity : int
+    How many of the newest updates to keep, >= 1 (a ring buffer, allocated here once).)doc")
       .def("stop_recording", &AnyEstimator::stop_recording, "Stop recording and free the buffer.")
       .def_property_readonly("recording", &AnyEstimator::recording, "bool: updates are being recorded.")
       .def("trajectory", &AnyEstimator::trajectory, R"doc(What was recorded, oldest first.

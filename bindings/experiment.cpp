@@ -276,9 +276,24 @@ void bind_tracking(py::module_& sub) {
                     "plant change.")
       .def("run", &experiment::TrackingResult::run, py::arg("controller"), py::arg("plant_changes") = false,
            py::return_value_policy::reference_internal,
-           "The run of ``controller`` (its label, e.g. \"PI + P-H-W\"), with the plant change at 40 s when\n"
-           "``plant_changes`` is true, else without.\n\nRaises\n------\nValueError\n"
-           "    When there is no such run.")
+           R"doc(The run of a controller, with or without the plant change.
+
+Parameters
+----------
+controller : str
+    Its label, e.g. "PI + P-H-W".
+plant_changes : bool, default False
+    True: the run with the plant change at 40 s.
+
+Returns
+-------
+TrackingRun
+    The run.
+
+Raises
+------
+ValueError
+    When there is no such run.)doc")
       .def_property_readonly(
           "tracking_rms",
           [](const experiment::TrackingResult& r) {

@@ -144,7 +144,17 @@ void bind_common(py::class_<Model>& cls) {
       .def(
           "extrapolated_samples",
           [](const Model& model, const ArrayLike& u) { return model.extrapolated_samples(to_vector(u, "u")); },
-          py::arg("u"), "int: how many samples of u lie outside input_range (0: no extrapolation).")
+          py::arg("u"), R"doc(How many samples of u lie outside input_range.
+
+Parameters
+----------
+u : array_like, shape (n,)
+    An input record.
+
+Returns
+-------
+int
+    The number of samples outside input_range (0: no extrapolation).)doc")
       .def_property(
           "theta", [](const Model& model) { return to_numpy(Eigen::VectorXd(model.theta())); },
           [](Model& model, const ArrayLike& theta) { model.set_theta(to_vector(theta, "theta")); },
@@ -160,12 +170,31 @@ void bind_common(py::class_<Model>& cls) {
             return bonl::rescaled(model, input_scale, output_scale);
           },
           py::arg("input_scale"), py::arg("output_scale"),
-          "The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.")
+          R"doc(The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+
+Parameters
+----------
+input_scale, output_scale : float
+    The input's and the output's scale, finite and > 0.
+
+Returns
+-------
+model
+    A model of this class, the parameters in the new units.)doc")
       .def(
           "to_json", [](const Model& model, int indent) { return bonl::io::to_json(model, indent); },
           py::arg("indent") = -1,
-          "str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent\n"
-          "spaces per level of nesting, -1 (the default) for one line.")
+          R"doc(The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+
+Parameters
+----------
+indent : int, default -1
+    Spaces per level of nesting; -1 for one line.
+
+Returns
+-------
+str
+    The model file's text.)doc")
       .def(py::pickle([](const Model& model) { return bonl::io::to_json(model); },
                       [](const std::string& text) { return bonl::io::model_from_json<Model>(text); }))
       .def("__copy__", [](const Model& model) { return Model(model); })

@@ -149,12 +149,17 @@ void bind_plant_parameters(py::module_& sub) {
   cls.def("validate", &plant::Parameters::validate,
           "Check that every parameter is physical.\n\n"
           "Raises\n------\nValueError\n    Naming the first non-physical parameter, its requirement and its value.")
-      .def("head_area", &plant::Parameters::head_area, "A1 = pi D^2 / 4, piston area [m^2].")
-      .def("annulus_area", &plant::Parameters::annulus_area, "A2 = pi (D^2 - d^2) / 4, annulus area [m^2].")
-      .def("flow_gain", &plant::Parameters::flow_gain, "Kq = Cd w xv_max sqrt(2 / rho) [m^3/(s sqrt(Pa))].")
+      .def("head_area", &plant::Parameters::head_area, "The piston area A1 = pi D^2 / 4.\n\n"
+           "Returns\n-------\nfloat\n    A1 [m^2].")
+      .def("annulus_area", &plant::Parameters::annulus_area, "The annulus area A2 = pi (D^2 - d^2) / 4.\n\n"
+           "Returns\n-------\nfloat\n    A2 [m^2].")
+      .def("flow_gain", &plant::Parameters::flow_gain, "The flow gain Kq = Cd w xv_max sqrt(2 / rho).\n\n"
+           "Returns\n-------\nfloat\n    Kq [m^3/(s sqrt(Pa))].")
       .def("valve_gain", &plant::Parameters::valve_gain,
-           "kv = 1 / (V0 - d) [1/V]: a full command opens the spool fully.")
-      .def("angle_offset", &plant::Parameters::angle_offset, "phi0, the linkage angle at mid-stroke [rad].")
+           "The valve gain kv = 1 / (V0 - d): a full command opens the spool fully.\n\n"
+           "Returns\n-------\nfloat\n    kv [1/V].")
+      .def("angle_offset", &plant::Parameters::angle_offset, "phi0, the linkage angle at mid-stroke.\n\n"
+           "Returns\n-------\nfloat\n    phi0 [rad].")
       .def("linkage_angle", &plant::Parameters::linkage_angle, py::arg("position"),
            "Linkage angle phi at piston position h (law of cosines).\n\n"
            "Parameters\n----------\nposition : float\n    h [m].\n\nReturns\n-------\nfloat\n    phi [rad].")
@@ -171,7 +176,8 @@ void bind_plant_parameters(py::module_& sub) {
            "Parameters\n----------\nposition : float\n    h [m].\n\nReturns\n-------\nfloat\n    Fs [N].")
       .def("to_dict", &parameters_to_dict, "Every parameter by name.\n\nReturns\n-------\ndict[str, float]")
       .def(
-          "copy", [](const plant::Parameters& p) { return p; }, "An independent copy.")
+          "copy", [](const plant::Parameters& p) { return p; }, "An independent copy.\n\n"
+          "Returns\n-------\nParameters\n    The copy, equal to this one.")
       .def("__copy__", [](const plant::Parameters& p) { return p; })
       .def("__deepcopy__", [](const plant::Parameters& p, const py::dict&) { return p; }, py::arg("memo"))
       .def("__eq__",

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds the API reference, offline, warnings as errors: the C++ headers' comments and the
 # documentation's pages (docs/) with Doxygen (docs/api/Doxyfile) into build/api/cpp, and the
-# installed Python package's docstrings with pdoc into build/api/python. Fails on an undocumented public C++ class or member, a broken comment, or a
-# warning from pdoc. The Python package and pdoc come from build/venv (made here when scripts/test.sh
-# has not made it), or
+# installed Python package's docstrings with pdoc into build/api/python. Fails on an undocumented
+# public C++ class or member, a function's undocumented parameter or return value, a broken comment,
+# or a warning from pdoc. The Python package and pdoc come from build/venv (made here when
+# scripts/test.sh has not made it), or
 #   PYTHON=/path/to/python scripts/api_reference.sh
 # with bonl and pdoc importable by that interpreter.
 set -euo pipefail

@@ -51,6 +51,9 @@ int common_exponent(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& y
 /// The mean squared error of yhat against y, mean((y - yhat)^2), computed on values scaled by a power
 /// of two so that it neither overflows nor underflows needlessly. Throws std::invalid_argument for
 /// different lengths, an empty y or a non-finite value.
+/// \param y the measured output
+/// \param yhat its prediction or simulation, as long as y
+/// \return the MSE, in y's units squared, >= 0
 template <typename A, typename B>
 double mse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   detail::check_pair(y, yhat);
@@ -59,6 +62,9 @@ double mse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
 
 /// sqrt(mse). Where the mean square overflows (errors beyond 1e154) the root is computed from
 /// scaled values, so that a representable RMSE is returned as a number, not infinity.
+/// \param y the measured output
+/// \param yhat its prediction or simulation, as long as y
+/// \return the RMSE, in y's units, >= 0
 template <typename A, typename B>
 double rmse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   const double mean_square = mse(y, yhat);
@@ -72,6 +78,9 @@ double rmse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
 /// y and yhat scaled by a common power of two, so that data near the ends of double's range
 /// (1e200, 1e-200) neither overflow nor underflow; elsewhere the scaling is exact and the result is
 /// the plain formula's.
+/// \param y the measured output
+/// \param yhat its prediction or simulation, as long as y
+/// \return the NRMSE, >= 0 (0 is perfect, 1 no better than y's mean)
 template <typename A, typename B>
 double nrmse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   detail::check_pair(y, yhat);
@@ -88,12 +97,18 @@ double nrmse(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
 
 /// The fit in percent, 100 (1 - nrmse(y, yhat)): 100 is perfect, 0 no better than y's mean. Throws as
 /// nrmse() does.
+/// \param y the measured output
+/// \param yhat its prediction or simulation, as long as y
+/// \return the fit in percent, <= 100
 template <typename A, typename B>
 double fit_percent(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   return 100.0 * (1.0 - nrmse(y, yhat));
 }
 
 /// mse(), rmse(), nrmse() and fit_percent() of yhat against y, in one Scores; throws as nrmse() does.
+/// \param y the measured output
+/// \param yhat its prediction or simulation, as long as y
+/// \return the four scores
 template <typename A, typename B>
 Scores scores(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
   Scores s;
@@ -105,6 +120,10 @@ Scores scores(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
 }
 
 /// Free-run simulation of `model` on u, scored against y.
+/// \param model the model
+/// \param u the input
+/// \param y the measured output, as long as u
+/// \return the scores of the simulated output
 template <class Model, typename U, typename Y>
 Scores simulation_scores(const Model& model, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) {
   bonl::detail::require_same_length(u, "u", y, "y");
@@ -112,6 +131,10 @@ Scores simulation_scores(const Model& model, const Eigen::MatrixBase<U>& u, cons
 }
 
 /// One-step-ahead prediction of `model` from u and the measured y, scored against y.
+/// \param model the model
+/// \param u the input
+/// \param y the measured output, as long as u
+/// \return the scores of the one-step-ahead prediction
 template <class Model, typename U, typename Y>
 Scores prediction_scores(const Model& model, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y) {
   return scores(y, model.predict(u, y));

@@ -12,6 +12,11 @@
 namespace bonl::signals {
 
 /// Levels drawn uniformly from [-amplitude, amplitude], each held for `hold` samples.
+/// \param n the number of samples, >= 0
+/// \param hold samples per level, >= 1
+/// \param amplitude the levels' bound, >= 0
+/// \param seed the generator's seed (std::mt19937_64): the same seed, the same signal
+/// \return n samples
 inline Eigen::VectorXd random_levels(Eigen::Index n, Eigen::Index hold, double amplitude, std::uint64_t seed) {
   detail::require(n >= 0, "n must be >= 0");
   detail::require(hold >= 1, "hold must be >= 1");
@@ -31,6 +36,8 @@ inline Eigen::VectorXd random_levels(Eigen::Index n, Eigen::Index hold, double a
 }
 
 /// Schroeder phases phi_k = -pi k (k + 1) / n, k = 1..n: a low crest factor for a flat spectrum.
+/// \param tones n, the number of tones
+/// \return n phases, in radians
 inline Eigen::VectorXd schroeder_phases(Eigen::Index tones) {
   detail::require(tones >= 1, "tones must be >= 1");
   Eigen::VectorXd phases(tones);
@@ -42,6 +49,12 @@ inline Eigen::VectorXd schroeder_phases(Eigen::Index tones) {
 }
 
 /// u(k) = amplitude * sum_i sin(2 pi f_i k ts + phase_i).
+/// \param n the number of samples, >= 0
+/// \param ts the sampling period, s
+/// \param frequencies_hz the tones' frequencies f_i, Hz
+/// \param amplitude each tone's amplitude
+/// \param phases the tones' phases, radians, one per tone
+/// \return n samples
 inline Eigen::VectorXd multisine(Eigen::Index n, double ts, const Eigen::VectorXd& frequencies_hz, double amplitude,
                                  const Eigen::VectorXd& phases) {
   detail::require(n >= 0, "n must be >= 0");
@@ -63,14 +76,23 @@ inline Eigen::VectorXd multisine(Eigen::Index n, double ts, const Eigen::VectorX
 }
 
 /// The tones of the paper's identification experiment: 0.1, 0.2, 0.4, 0.5 and 1 Hz.
+/// \return five frequencies, Hz
 inline Eigen::VectorXd paper_tones() { return (Eigen::VectorXd(5) << 0.1, 0.2, 0.4, 0.5, 1.0).finished(); }
 
 /// The paper's multi-sine: its five tones with Schroeder phases, `amplitude` per tone.
+/// \param n the number of samples, >= 0
+/// \param ts the sampling period, s
+/// \param amplitude each tone's amplitude
+/// \return n samples
 inline Eigen::VectorXd paper_multisine(Eigen::Index n = 5000, double ts = 0.01, double amplitude = 0.4) {
   return multisine(n, ts, paper_tones(), amplitude, schroeder_phases(5));
 }
 
 /// Gaussian white noise with standard deviation sigma.
+/// \param n the number of samples, >= 0
+/// \param sigma the standard deviation, >= 0
+/// \param seed the generator's seed (std::mt19937_64): the same seed, the same signal
+/// \return n samples
 inline Eigen::VectorXd white_noise(Eigen::Index n, double sigma, std::uint64_t seed) {
   detail::require(n >= 0, "n must be >= 0");
   detail::require(std::isfinite(sigma) && sigma >= 0.0, "sigma must be finite and >= 0");

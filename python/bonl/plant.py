@@ -71,10 +71,20 @@ class SteppingEnv:
         self.plant = SteppingPlant(parameters, **options)
 
     def reset(self, *, seed=None, options=None):
-        """Back to rest at t = 0: ``(observation, info)``.
+        """Back to rest at t = 0.
 
-        ``seed`` is the sensor noise's seed (None: the plant's, so that every episode replays the same
-        noise); ``options`` may hold ``initial_position`` [m].
+        Parameters
+        ----------
+        seed : int, optional
+            The sensor noise's seed (None: the plant's, so that every episode replays the same noise).
+        options : dict, optional
+            May hold ``initial_position`` [m]; ValueError for any other key.
+
+        Returns
+        -------
+        tuple
+            ``(observation, info)``: the measured angle [rad] as a 1-element array, and the
+            measurement as a dict.
         """
         options = dict(options or {})
         initial_position = options.pop("initial_position", None)
@@ -84,7 +94,20 @@ class SteppingEnv:
         return self._observation(measurement), measurement.to_dict()
 
     def step(self, action):
-        """Hold the command ``action`` [V] over one sample: ``(observation, reward, terminated, truncated, info)``."""
+        """Hold the command over one sample.
+
+        Parameters
+        ----------
+        action : float or 1-element array
+            The command [V].
+
+        Returns
+        -------
+        tuple
+            ``(observation, reward, terminated, truncated, info)``: the measured angle [rad] as a
+            1-element array, 0.0, whether the piston reached an end stop, False, and the measurement as
+            a dict.
+        """
         if np.ndim(action) == 1 and len(action) == 1:
             action = action[0]
         measurement = self.plant.step(action)

@@ -76,10 +76,22 @@ class Selection:
 
 
 def grid(model_class: type, **orders: Iterable[int]) -> List[Any]:
-    """Every structure of ``model_class`` over the lists of orders given by name (one value or a list
-    per order; every order of ``model_class.ORDERS`` must be given but those of
-    ``model_class.ORDER_DEFAULTS``, the integrators ``ni``, which take their default). Returns the
-    structures, a list to pass to :func:`select`; ValueError for an order unknown or missing."""
+    """Every structure of ``model_class`` over the lists of orders given by name.
+
+    Parameters
+    ----------
+    model_class : type
+        One of ``bonl.MODELS``.
+    **orders : int or iterable of int
+        One value or a list per order; every order of ``model_class.ORDERS`` must be given but those
+        of ``model_class.ORDER_DEFAULTS``, the integrators ``ni``, which take their default.
+        ValueError for an order unknown or missing.
+
+    Returns
+    -------
+    list
+        The structures, every combination of the orders, to pass to :func:`select`.
+    """
     if model_class not in _bonl.MODELS:
         raise ValueError(f"bonl: grid: model_class must be one of bonl.MODELS, got {model_class!r}")
     names = model_class.ORDERS
@@ -95,8 +107,19 @@ def grid(model_class: type, **orders: Iterable[int]) -> List[Any]:
 
 
 def named_orders(structure: Any) -> Dict[str, int]:
-    """The structure's orders by name, as its model file writes them: an order at its default
-    (``ORDER_DEFAULTS``, the integrators ``ni = 0``) is left out. Returns a dict, name to order."""
+    """The structure's orders by name, as its model file writes them.
+
+    Parameters
+    ----------
+    structure : bonl model
+        The model whose orders are read.
+
+    Returns
+    -------
+    dict
+        Name to order; an order at its default (``ORDER_DEFAULTS``, the integrators ``ni = 0``) is
+        left out.
+    """
     defaults = type(structure).ORDER_DEFAULTS
     return {name: value for name, value in zip(type(structure).ORDERS, structure.orders)
             if defaults.get(name) != value}
@@ -152,6 +175,8 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
         the data. Every candidate is scored by C++'s ``bonl::score_candidate``, as ``bonl::select``
         scores it; one that cannot be fitted (more parameters than its fit part has samples, or an
         identification that fails) is ranked last with the reason.
+    validation_fraction : float, default 0.25
+        criterion 'validation': the held-out last part of every record, in (0, 1).
     window : int, default 0
         criterion 'validation': each held-out part is scored the way a test record with a
         state-initialisation window of this many samples is: simulated after its first ``window``

@@ -1,10 +1,14 @@
 """Every public name of the bonl package has a docstring (scripts/api_reference.sh renders them with
-pdoc): the names of each module's __all__ and the public methods and properties of its classes."""
+pdoc): the names of each module's __all__ and the public methods and properties of its classes; and
+every public function and method has numpydoc Parameters and Returns sections where it takes
+parameters or returns something."""
 
+import ast
 import enum
 import importlib
 import inspect
 import re
+import textwrap
 
 MODULES = ["bonl", "bonl.control", "bonl.experiment", "bonl.metrics", "bonl.plant"]
 # What pybind11 and enum give every enumeration, documented by them and not by bonl.
@@ -27,6 +31,8 @@ def public_names():
                         continue
                     if isinstance(member, type(obj)) or isinstance(member, enum.Enum):
                         continue  # an enumeration's values: their class is documented
+                    if isinstance(member, (staticmethod, classmethod)):
+                        member = member.__func__  # the function, not the wrapper (whose docstring is Python's)
                     yield f"{module_name}.{name}.{member_name}", member
 
 
@@ -58,26 +64,58 @@ def signature_of(function):
     names = [name for name, p in signature.parameters.items()
              if name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
     returned = signature.return_annotation
-    return names, returned not in (None, "None", inspect.Signature.empty)
+    if returned is inspect.Signature.empty:
+        return names, returns_a_value(function)
+    return names, returned not in (None, "None")
 
 
-def test_every_public_function_documents_its_parameters_and_what_it_returns():
-    """Each public function and method names every parameter in its docstring (a numpydoc section or
-    the prose), and one that returns something says what: a Returns section, the word "return", or the
-    `-> type` of pybind11's signature line."""
+def returns_a_value(function):
+    """Whether a function without a return annotation returns something: a `return` with a value
+    (not None) or a `yield` in its own body."""
+    try:
+        source = textwrap.dedent(inspect.getsource(function))
+    except (OSError, TypeError):
+        return False
+    nodes = list(ast.iter_child_nodes(ast.parse(source).body[0]))
+    while nodes:
+        node = nodes.pop()
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
+            continue  # a nested function's returns are its own
+        if isinstance(node, (ast.Yield, ast.YieldFrom)):
+            return True
+        if isinstance(node, ast.Return) and node.value is not None and not (
+                isinstance(node.value, ast.Constant) and node.value.value is None):
+            return True
+        nodes.extend(ast.iter_child_nodes(node))
+    return False
+
+
+def numpydoc_section(doc, title):
+    """The body of a numpydoc section (`title` underlined with dashes), or None where there is none."""
+    match = re.search(r"^%s\n-{3,}\n(.*?)(?=^\w[\w ]*\n-{3,}$|\Z)" % title, doc, re.M | re.S)
+    return match.group(1) if match else None
+
+
+def test_every_public_function_has_parameters_and_returns_sections():
+    """Each public function and method that takes parameters has a numpydoc Parameters section naming
+    every one of them, and each that returns something a Returns (or Yields) section."""
     checked, problems = 0, []
     for name, obj in public_names():
         if isinstance(obj, property) or inspect.isclass(obj) or not callable(obj):
             continue
         doc = inspect.getdoc(obj) or ""
-        text = "\n".join(line for line in doc.splitlines()  # the prose, not the signature lines
-                         if not re.match(r"(\d+\. )?\w+\(.*\)( -> .*)?$", line))
         parameters, returns = signature_of(obj)
-        missing = [p for p in parameters if not re.search(r"\b%s\b" % re.escape(p), text)]
-        if missing:
-            problems.append(f"{name}: parameters {missing} not described")
-        if returns and not re.search(r"(?i)\breturn|->", doc):
-            problems.append(f"{name}: what it returns is not said")
+        section = numpydoc_section(doc, "Parameters")
+        if parameters and section is None:
+            problems.append(f"{name}: no Parameters section")
+        elif parameters:
+            described = set(re.findall(r"^(\w+(?:, \w+)*)(?: :|$)", section, re.M))
+            names = {n for entry in described for n in entry.split(", ")}
+            missing = [p for p in parameters if p not in names]
+            if missing:
+                problems.append(f"{name}: {missing} not in its Parameters section")
+        if returns and numpydoc_section(doc, "Returns") is None and numpydoc_section(doc, "Yields") is None:
+            problems.append(f"{name}: no Returns section")
         checked += 1
-    assert not problems, "\n".join(problems)
-    assert checked > 80, checked  # the walk found the package's functions
+    assert not problems, f"{len(problems)} problems:\n" + "\n".join(problems)
+    assert checked > 80, checked

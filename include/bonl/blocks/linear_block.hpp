@@ -24,8 +24,12 @@ class LinearBlock {
   using ACoeffs = Eigen::Matrix<Scalar, Na_, 1>;  ///< a_1..a_na (fixed size when Na_ is)
   using BCoeffs = Eigen::Matrix<Scalar, detail::poly_size(Nb_), 1>;  ///< b_0..b_nb (fixed size when Nb_ is)
 
-  /// na >= 1 poles, nb >= 0 (b has nb + 1 coefficients), pure delay nk >= 0, ni in 0..2 integrators
-  /// (poles fixed at 1). a = 0, b = [1, 0...].
+  /// A block at rest with a = 0, b = [1, 0...]. Throws std::invalid_argument for an order out of range
+  /// or one that differs from the compile-time order.
+  /// \param na estimated poles, >= 1
+  /// \param nb b has nb + 1 coefficients, >= 0
+  /// \param nk pure delay in samples, >= 0
+  /// \param ni integrators (poles fixed at 1), 0..2
   LinearBlock(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index ni = 0) : m_nk(nk), m_integrators(ni) {
     detail::require_order(na, 1, "na");
     detail::require_order(nb, 0, "nb");
@@ -40,22 +44,30 @@ class LinearBlock {
     m_z = detail::History<Scalar>(na);
   }
 
-  Eigen::Index na() const noexcept { return m_a.size(); }  ///< the order na: estimated poles
-  Eigen::Index nb() const noexcept { return m_b.size() - 1; }  ///< the order nb: b has nb + 1 coefficients
-  Eigen::Index nk() const noexcept { return m_nk; }  ///< the pure delay nk in samples
-  Eigen::Index ni() const noexcept { return m_integrators.size(); }  ///< the integrators ni (poles fixed at 1)
+  Eigen::Index na() const noexcept { return m_a.size(); }  ///< the order na: estimated poles \return na, >= 1
+  /// The order nb: b has nb + 1 coefficients
+  /// \return nb, >= 0
+  Eigen::Index nb() const noexcept { return m_b.size() - 1; }
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the pure delay nk in samples \return nk, >= 0
+  /// The integrators ni (poles fixed at 1)
+  /// \return ni, 0..2
+  Eigen::Index ni() const noexcept { return m_integrators.size(); }
   /// The estimated denominator a_1..a_na (without the integrators).
+  /// \return na values
   const ACoeffs& a() const noexcept { return m_a; }
   /// The whole denominator a_1..a_{na+ni} of A(z^-1) (1 - z^-1)^ni.
+  /// \return na + ni values
   Eigen::Matrix<Scalar, Eigen::Dynamic, 1> denominator() const { return detail::with_integrators(m_a, ni()); }
-  const BCoeffs& b() const noexcept { return m_b; }  ///< the numerator b_0..b_nb
+  const BCoeffs& b() const noexcept { return m_b; }  ///< the numerator b_0..b_nb \return nb + 1 values
 
   /// Sets a_1..a_na (na finite values, else std::invalid_argument).
+  /// \param a a_1..a_na
   template <typename A>
   void set_a(const Eigen::MatrixBase<A>& a) {
     detail::assign_checked(m_a, a, "a");
   }
   /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
+  /// \param b b_0..b_nb
   template <typename B>
   void set_b(const Eigen::MatrixBase<B>& b) {
     detail::assign_checked(m_b, b, "b");
@@ -68,7 +80,9 @@ class LinearBlock {
     m_integrators.clear();
   }
 
-  /// Feeds w(k), returns x(k).
+  /// One sample of the block.
+  /// \param w the input w(k)
+  /// \return the output x(k)
   Scalar step(Scalar w) noexcept {
     m_w.push(w);
     Scalar x = Scalar(0);

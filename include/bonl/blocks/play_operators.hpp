@@ -34,6 +34,7 @@ class PlayOperators {
   using Vector = Eigen::Matrix<Scalar, Np_, 1>;  ///< the thresholds or the plays' outputs (fixed size when Np_ is)
 
   /// The plays of `thresholds` (require_valid; Np of them where Np is fixed), at rest.
+  /// \param thresholds r_1..r_np, in the units of the input
   template <typename T>
   explicit PlayOperators(const Eigen::MatrixBase<T>& thresholds) {
     require_valid(thresholds, Np_ == Eigen::Dynamic ? thresholds.size() : Eigen::Index(Np_));
@@ -45,6 +46,9 @@ class PlayOperators {
   /// (max - min) / 2 of the input's deviations, evenly spread over the plays' reach (a play with
   /// r >= the half-range never leaves its rest value once the input has swept it, and only follows
   /// the input's mean). `half_range` <= 0 or not finite (a constant input) counts as 1.
+  /// \param np the number of thresholds
+  /// \param half_range (max - min) / 2 of the input's deviations
+  /// \return r_1..r_np
   static Vector spread_thresholds(Eigen::Index np, Scalar half_range = Scalar(1)) {
     const Scalar scale = std::isfinite(half_range) && half_range > Scalar(0) ? half_range : Scalar(1);
     Vector thresholds(np);
@@ -56,6 +60,8 @@ class PlayOperators {
 
   /// What the plays accept: np finite thresholds, > 0, strictly increasing; otherwise
   /// std::invalid_argument saying which entry is wrong.
+  /// \param thresholds the thresholds to check
+  /// \param np how many there must be
   template <typename T>
   static void require_valid(const Eigen::MatrixBase<T>& thresholds, Eigen::Index np) {
     detail::require_size(thresholds, np, "thresholds");
@@ -75,18 +81,26 @@ class PlayOperators {
   }
 
   /// One play: its output for input v after the output `previous`.
+  /// \param previous the play's output P(k-1)
+  /// \param v the input v(k)
+  /// \param threshold the play's threshold r
+  /// \return P(k)
   static Scalar play(Scalar previous, Scalar v, Scalar threshold) noexcept {
     return Backlash<Scalar>::map(v, previous, threshold);
   }
 
-  Eigen::Index size() const noexcept { return m_thresholds.size(); }  ///< the number of plays, np
-  const Vector& thresholds() const noexcept { return m_thresholds; }  ///< the thresholds r_1..r_np
+  Eigen::Index size() const noexcept { return m_thresholds.size(); }  ///< the number of plays, np \return np
+  /// The thresholds r_1..r_np
+  /// \return r_1..r_np, strictly increasing, > 0
+  const Vector& thresholds() const noexcept { return m_thresholds; }
   /// The plays' outputs P_i(k) after the last step (their memory): the PI part's regressors.
+  /// \return P_1(k)..P_np(k), valid until the next step or reset
   const Vector& state() const noexcept { return m_state; }
 
   /// Back to rest: every play at 0.
   void reset() noexcept { m_state.setZero(); }
   /// Takes over `other`'s outputs (their memory) where it has as many plays; else back to rest.
+  /// \param other the plays whose memory to take
   void continue_from(const PlayOperators& other) noexcept {
     if (other.m_state.size() == m_state.size()) {
       m_state = other.m_state;
@@ -95,7 +109,9 @@ class PlayOperators {
     }
   }
 
-  /// Steps every play with the input v(k); returns their outputs.
+  /// Steps every play with the input v(k).
+  /// \param v the input v(k)
+  /// \return the plays' outputs P_1(k)..P_np(k), state(), valid until the next step or reset
   const Vector& step(Scalar v) noexcept {
     for (Eigen::Index i = 0; i < m_state.size(); ++i) m_state[i] = play(m_state[i], v, m_thresholds[i]);
     return m_state;
@@ -103,6 +119,9 @@ class PlayOperators {
 
   /// sum_i g_i play_{r_i}(P_i, v): the output step(v) would give for the weights g, the plays left
   /// as they are.
+  /// \param v the input v(k)
+  /// \param g the weights g_1..g_np
+  /// \return the weighted sum
   template <typename G>
   Scalar output_for(Scalar v, const Eigen::MatrixBase<G>& g) const noexcept {
     Scalar sum = Scalar(0);
@@ -111,6 +130,8 @@ class PlayOperators {
   }
 
   /// sum_i g_i P_i(k) for the weights g (np of them).
+  /// \param g the weights g_1..g_np
+  /// \return the weighted sum
   template <typename G>
   Scalar output(const Eigen::MatrixBase<G>& g) const noexcept {
     Scalar sum = Scalar(0);

@@ -29,9 +29,11 @@ class PrandtlIshlinskiiInput {
   using Coeffs = Eigen::Matrix<Scalar, detail::poly_size(R_), 1>;  ///< f_0..f_r (fixed size when R_ is)
   using Weights = Eigen::Matrix<Scalar, Np_, 1>;  ///< g_1..g_np (fixed size when Np_ is)
 
-  /// f = f_0..f_r (r >= 1), the plays' thresholds (PlayOperators::require_valid) and their weights
-  /// g (as many, finite); the plays at rest. Throws std::invalid_argument for fewer than 2 entries of f,
-  /// a degree that differs from R_, invalid thresholds, or a g of another length or not finite.
+  /// The block with the plays at rest. Throws std::invalid_argument for fewer than 2 entries of f, a
+  /// degree that differs from R_, invalid thresholds, or a g of another length or not finite.
+  /// \param f the polynomial's coefficients f_0..f_r, r >= 1
+  /// \param thresholds the plays' thresholds r_1..r_np (PlayOperators::require_valid), in the units of u
+  /// \param g the plays' weights g_1..g_np, as many as thresholds, finite
   template <typename F, typename T, typename G>
   PrandtlIshlinskiiInput(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<T>& thresholds,
                          const Eigen::MatrixBase<G>& g)
@@ -45,27 +47,34 @@ class PrandtlIshlinskiiInput {
     detail::assign_checked(m_g, g, "g");
   }
 
-  const Coeffs& f() const noexcept { return m_f; }  ///< the polynomial's coefficients f_0..f_r
-  const Weights& g() const noexcept { return m_g; }  ///< the plays' weights g_1..g_np
-  /// The plays' thresholds r_1..r_np.
+  const Coeffs& f() const noexcept { return m_f; }  ///< the polynomial's coefficients f_0..f_r \return r + 1 values
+  const Weights& g() const noexcept { return m_g; }  ///< the plays' weights g_1..g_np \return np values
+  /// The plays' thresholds. \return r_1..r_np, strictly increasing, > 0
   const typename Plays::Vector& thresholds() const noexcept { return m_plays.thresholds(); }
-  /// The plays' outputs after the last step, P_i(k-1) for the next one.
+  /// The plays' outputs after the last step, P_i(k-1) for the next one. \return np values
   const typename Plays::Vector& state() const noexcept { return m_plays.state(); }
-  Eigen::Index size() const noexcept { return m_plays.size(); }  ///< the number of plays, np
+  Eigen::Index size() const noexcept { return m_plays.size(); }  ///< the number of plays, np \return np
 
   /// Back to rest: every play at 0.
   void reset() noexcept { m_plays.reset(); }
   /// Takes over `other`'s play memory (PlayOperators::continue_from).
+  /// \param other the block whose play memory to take
   void continue_from(const PrandtlIshlinskiiInput& other) noexcept { m_plays.continue_from(other.m_plays); }
 
-  /// w(k) for the input u(k): steps the plays.
+  /// One sample: steps the plays.
+  /// \param u the input u(k)
+  /// \return w(k)
   Scalar step(Scalar u) noexcept {
     m_plays.step(u);
     return polynomial(u) + m_plays.output(m_g);
   }
   /// The w that step(u) would give, the plays left as they are.
+  /// \param u the input u(k)
+  /// \return w(k)
   Scalar peek(Scalar u) const noexcept { return polynomial(u) + m_plays.output_for(u, m_g); }
   /// sum_l f_l u^l (Horner's scheme).
+  /// \param u the input u(k)
+  /// \return the polynomial part of w(k)
   Scalar polynomial(Scalar u) const noexcept {
     Scalar w = Scalar(0);
     for (Eigen::Index l = m_f.size() - 1; l >= 0; --l) w = w * u + m_f[l];

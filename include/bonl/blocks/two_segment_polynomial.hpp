@@ -11,6 +11,8 @@
 namespace bonl {
 
 /// Switching function h(u) of eq. (4): 1 on the negative side, 0 for u >= 0.
+/// \param u the input
+/// \return 1 for u < 0, else 0
 template <typename Scalar>
 constexpr Scalar input_switch(Scalar u) noexcept {
   return u < Scalar(0) ? Scalar(1) : Scalar(0);
@@ -26,7 +28,9 @@ class TwoSegmentPolynomial {
   static constexpr int kBasisSize = kCoeffs == Eigen::Dynamic ? Eigen::Dynamic : 2 * kCoeffs;  ///< the regressor's length, f's and p's: 2 (r + 1)
   using Coeffs = Eigen::Matrix<Scalar, kCoeffs, 1>;  ///< f_0..f_r or p_0..p_r
 
-  /// Degree r >= 1; all coefficients zero.
+  /// All coefficients zero. Throws std::invalid_argument for a degree below 1 or one that differs from
+  /// R_.
+  /// \param r the degree of each segment, >= 1
   explicit TwoSegmentPolynomial(Eigen::Index r = (R_ == Eigen::Dynamic ? 1 : R_)) {
     detail::require_order(r, 1, "r (input polynomial degree)");
     detail::require_matches_template(r, R_, "r");
@@ -34,7 +38,10 @@ class TwoSegmentPolynomial {
     m_p = Coeffs::Zero(r + 1);
   }
 
-  /// f holds f_0..f_r (u >= 0), p holds p_0..p_r = g_l - f_l (added for u < 0).
+  /// The block with the given coefficients, of equal length r + 1 >= 2, finite (else
+  /// std::invalid_argument).
+  /// \param f f_0..f_r, the polynomial for u >= 0
+  /// \param p p_0..p_r = g_l - f_l, added for u < 0
   template <typename F, typename P>
   TwoSegmentPolynomial(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p)
       : TwoSegmentPolynomial(degree_of(f)) {
@@ -42,27 +49,36 @@ class TwoSegmentPolynomial {
     set_p(p);
   }
 
-  Eigen::Index degree() const noexcept { return m_f.size() - 1; }  ///< the degree r
-  const Coeffs& f() const noexcept { return m_f; }  ///< f_0..f_r, the polynomial for u >= 0
-  const Coeffs& p() const noexcept { return m_p; }  ///< p_0..p_r = g_l - f_l, added for u < 0
+  Eigen::Index degree() const noexcept { return m_f.size() - 1; }  ///< the degree r \return r, >= 1
+  const Coeffs& f() const noexcept { return m_f; }  ///< f_0..f_r, the polynomial for u >= 0 \return r + 1 values
+  const Coeffs& p() const noexcept { return m_p; }  ///< p_0..p_r = g_l - f_l, added for u < 0 \return r + 1 values
   /// Coefficients of the negative-side polynomial, g_l = f_l + p_l.
+  /// \return g_0..g_r
   Coeffs g() const { return m_f + m_p; }
 
   /// Sets f_0..f_r (r + 1 finite values, else std::invalid_argument).
+  /// \param f f_0..f_r
   template <typename F>
   void set_f(const Eigen::MatrixBase<F>& f) {
     detail::assign_checked(m_f, f, "f");
   }
   /// Sets p_0..p_r (r + 1 finite values, else std::invalid_argument).
+  /// \param p p_0..p_r
   template <typename P>
   void set_p(const Eigen::MatrixBase<P>& p) {
     detail::assign_checked(m_p, p, "p");
   }
 
   /// The output w for the input u.
+  /// \param u the input
+  /// \return w
   Scalar operator()(Scalar u) const noexcept { return evaluate(m_f, m_p, u); }
 
   /// w for coefficient vectors f and p of equal length (Horner's scheme).
+  /// \param f f_0..f_r
+  /// \param p p_0..p_r
+  /// \param u the input
+  /// \return w
   template <typename F, typename P>
   static Scalar evaluate(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p, Scalar u) noexcept {
     Scalar w = Scalar(0);
@@ -76,6 +92,9 @@ class TwoSegmentPolynomial {
 
   /// The key-term regressor of the block: [1, u, ..., u^r, h, h u, ..., h u^r], so that
   /// w = basis . [f; p]. `out` must have 2 (r + 1) entries.
+  /// \param u the input
+  /// \param r the degree
+  /// \param out set to the regressor
   template <typename Out>
   static void basis(Scalar u, Eigen::Index r, Eigen::MatrixBase<Out>& out) noexcept {
     const Scalar h = input_switch(u);
@@ -89,6 +108,11 @@ class TwoSegmentPolynomial {
 
   /// basis() and, returned, w = basis . [f; p] summed as the entries are made (f, p of length
   /// r + 1): an estimator needs both, and reading `out` back would stall on store forwarding.
+  /// \param u the input
+  /// \param f f_0..f_r
+  /// \param p p_0..p_r
+  /// \param out set to the regressor, 2 (r + 1) entries
+  /// \return w
   template <typename Out, typename F, typename P>
   static Scalar basis(Scalar u, const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p,
                       Eigen::MatrixBase<Out>& out) noexcept {

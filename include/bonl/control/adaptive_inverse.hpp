@@ -77,6 +77,8 @@ class AdaptiveInverse {
   /// Starts from `initial` (an identified model): the inverse is derived from it, and the estimator
   /// is warm-started from its parameters (P = p0 I). Throws std::invalid_argument for bad options or
   /// a model without an inverse.
+  /// \param initial the identified model to start from
+  /// \param options the inverse's, the estimator's and the guard's options
   explicit AdaptiveInverse(const Model& initial, const AdaptiveInverseOptions& options = {})
       : m_options(validated(options)),
         m_model(initial),
@@ -86,17 +88,24 @@ class AdaptiveInverse {
   }
 
   /// The command for the reference window, from the inverse in use (InverseModel::step).
+  /// \param reference r(k+nk), ..., r(k+nk+window_size()-1), in the model's output units
+  /// \return the command u(k) and its status
   template <typename W>
   InverseStep<Scalar> step(const Eigen::MatrixBase<W>& reference) noexcept {
     return m_inverse.step(reference);
   }
   /// The command for a window of one sample, r(k + nk), from the inverse in use (InverseModel::step):
   /// only where its window_size() is 1, else RejectedShortPreview.
+  /// \param reference r(k + nk), in the model's output units
+  /// \return the command u(k) and its status
   InverseStep<Scalar> step(Scalar reference) noexcept { return m_inverse.step(reference); }
 
   /// One sample of the plant: the command u applied (the whole command, feedback included) and the
   /// output y measured. Every rederive_every accepted samples the inverse is derived again from the
   /// estimate, where the guard trusts it (rederive()).
+  /// \param u the command u(k) applied
+  /// \param y the output y(k) measured
+  /// \return what the estimator did with the sample
   UpdateStatus update(Scalar u, Scalar y) {
     const UpdateStatus status = m_estimator.update(u, y);
     if (status == UpdateStatus::RejectedNonFinite) return status;
@@ -107,8 +116,9 @@ class AdaptiveInverse {
     return status;
   }
 
-  /// Derives the inverse from the current estimate now, if the guard trusts it; returns whether the
-  /// new inverse is in use. Otherwise the last good one stays, and health() says why.
+  /// Derives the inverse from the current estimate now, if the guard trusts it. Otherwise the last
+  /// good one stays, and health() says why.
+  /// \return true when the new inverse is in use
   bool rederive() {
     if (m_estimator.diverged()) return refuse(m_health.refused_diverged, "the estimator diverged");
     const double trace = static_cast<double>(m_estimator.covariance().trace());
@@ -134,14 +144,21 @@ class AdaptiveInverse {
     return true;
   }
 
-  /// The inverse in use, and the model it was derived from.
+  /// The inverse in use, and the model it was derived from. \return the inverse, valid until the next
+  /// update() or rederive()
   const InverseModel<Model>& inverse() const noexcept { return m_inverse; }
-  const Model& model() const noexcept { return m_model; }  ///< the model the inverse in use was derived from
+  /// The model the inverse in use was derived from
+  /// \return the model, valid until the next update() or rederive()
+  const Model& model() const noexcept { return m_model; }
   /// The online estimator, whose current estimate may be newer than model() (or refused by the guard).
+  /// \return the estimator
   const Estimator<Model>& estimator() const noexcept { return m_estimator; }
   /// What the guard did since the start: inverses derived, estimates refused and why.
+  /// \return the counters and the last refusal's reason
   const AdaptiveInverseHealth& health() const noexcept { return m_health; }
-  const AdaptiveInverseOptions& options() const noexcept { return m_options; }  ///< the options, validated
+  /// The options, validated
+  /// \return the options given
+  const AdaptiveInverseOptions& options() const noexcept { return m_options; }
 
  private:
   static const AdaptiveInverseOptions& validated(const AdaptiveInverseOptions& options) {

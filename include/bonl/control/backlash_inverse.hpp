@@ -41,8 +41,11 @@ class BacklashInverse {
     Scalar extremum = Scalar(0);  ///< the reference's last extremum (its start value before it moved)
   };
 
-  /// Half-width c >= 0 and transition band >= 0 (in the output's units); the output starts at y0.
-  /// Throws std::invalid_argument unless c and band are finite and >= 0 and y0 is finite.
+  /// The inverse at the start. Throws std::invalid_argument unless c and band are finite and >= 0 and
+  /// y0 is finite.
+  /// \param c the backlash's half-width, in the output's units, >= 0
+  /// \param band the transition band, in the output's units, >= 0 (0: the exact switch)
+  /// \param y0 the backlash's output at the start
   explicit BacklashInverse(Scalar c, Scalar band = Scalar(0), Scalar y0 = Scalar(0)) : m_c(c), m_band(band) {
     bonl::detail::require(std::isfinite(c) && c >= Scalar(0), "the backlash half-width c must be finite and >= 0, got " +
                                                                   bonl::detail::format_number(static_cast<double>(c)));
@@ -53,24 +56,34 @@ class BacklashInverse {
     reset(y0);
   }
 
-  Scalar c() const noexcept { return m_c; }  ///< the backlash's half-width c
-  Scalar band() const noexcept { return m_band; }  ///< the transition band (0: the exact switch)
+  Scalar c() const noexcept { return m_c; }  ///< the backlash's half-width c \return c, >= 0
+  Scalar band() const noexcept { return m_band; }  ///< the transition band (0: the exact switch) \return the band, >= 0
   /// The reference's direction and last extremum, to carry over with continue_from().
+  /// \return the state
   const State& state() const noexcept { return m_state; }
   /// Goes on from `state` (another inverse's, for one re-derived with a new c or band).
+  /// \param state the state to go on from
   void continue_from(const State& state) noexcept { m_state = state; }
   /// Back to the start: the output at rest at y0, direction unknown.
+  /// \param y0 the backlash's output at the start
   void reset(Scalar y0 = Scalar(0)) noexcept { m_state = State{0, y0}; }
 
   /// The backlash input for the reference y_d; advances the direction.
+  /// \param y_d the reference output y_d(k)
+  /// \return the backlash input x(k)
   Scalar step(Scalar y_d) noexcept { return map(y_d, m_state); }
   /// The same without advancing: the input for y_d from the current state.
+  /// \param y_d the reference output y_d(k)
+  /// \return the backlash input x(k)
   Scalar peek(Scalar y_d) const noexcept {
     State state = m_state;
     return map(y_d, state);
   }
 
   /// One step of the inverse on `state`.
+  /// \param y_d the reference output y_d(k)
+  /// \param state the direction and extremum, advanced
+  /// \return the backlash input x(k)
   Scalar map(Scalar y_d, State& state) const noexcept {
     const Scalar away = y_d - state.extremum;  // > 0 above the extremum
     Scalar s;

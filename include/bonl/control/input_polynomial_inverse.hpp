@@ -39,11 +39,14 @@ class InputPolynomialInverse {
   using Scalar = Scalar_;  ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
-  /// f = f_0..f_r, p = p_0..p_r (as TwoSegmentPolynomial), and the command range [u_min, u_max],
-  /// finite, with u_min <= 0 <= u_max. Throws std::invalid_argument for f and p of different lengths
-  /// or fewer than 2 entries, non-finite coefficients, a range that is not finite or leaves out 0, or a
-  /// polynomial with no inverse: w rising with u on one side of 0 and falling on the other, or
-  /// constant over the range.
+  /// The inverse of the polynomial with f and p (as TwoSegmentPolynomial) on a command range. Throws
+  /// std::invalid_argument for f and p of different lengths or fewer than 2 entries, non-finite
+  /// coefficients, a range that is not finite or leaves out 0, or a polynomial with no inverse: w
+  /// rising with u on one side of 0 and falling on the other, or constant over the range.
+  /// \param f f_0..f_r, the polynomial for u >= 0
+  /// \param p p_0..p_r, added for u < 0
+  /// \param u_min the command range's lower end, finite, <= 0 (a deviation from the operating point)
+  /// \param u_max the command range's upper end, finite, >= 0
   template <typename F, typename P>
   InputPolynomialInverse(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p, Scalar u_min, Scalar u_max)
       : m_f(f), m_g(f + p), m_u_min(u_min), m_u_max(u_max) {
@@ -70,11 +73,16 @@ class InputPolynomialInverse {
   }
 
   /// The block's f and p (TwoSegmentPolynomial) and the command range, as above.
+  /// \param block the input polynomial to invert
+  /// \param u_min the command range's lower end, finite, <= 0
+  /// \param u_max the command range's upper end, finite, >= 0
   template <int R>
   InputPolynomialInverse(const TwoSegmentPolynomial<Scalar, R>& block, Scalar u_min, Scalar u_max)
       : InputPolynomialInverse(block.f(), block.p(), u_min, u_max) {}
 
   /// The command for w: {u, status}. Exact when f(u) (u >= 0) or g(u) (u < 0) equals w to rounding.
+  /// \param w the block's output the linear block needs
+  /// \return the command u and its status (Exact, Saturated or DeadBand)
   InverseStep<Scalar> operator()(Scalar w) const noexcept {
     const Scalar s = m_direction;
     const Scalar at_hi = detail::polynomial(m_f, m_hi);
@@ -97,6 +105,8 @@ class InputPolynomialInverse {
   }
 
   /// The w the command u gives (TwoSegmentPolynomial::evaluate's arithmetic).
+  /// \param u the command, a deviation from the operating point
+  /// \return w
   Scalar output(Scalar u) const noexcept { return detail::polynomial(u < Scalar(0) ? m_g : m_f, u); }
   /// The polynomial has no memory: nothing to advance, reset or take over (InverseModel calls these
   /// on every input block's inverse).
@@ -106,11 +116,17 @@ class InputPolynomialInverse {
 
   /// The monotone branches the inverse uses: commands [lower(), upper()] (the command range, or
   /// nearer where a side stops being monotone).
+  /// \return the lowest command used, <= 0
   Scalar lower() const noexcept { return m_lo; }
-  Scalar upper() const noexcept { return m_hi; }  ///< the commands' upper end (see lower())
+  /// The commands' upper end (see lower())
+  /// \return the highest command used, >= 0
+  Scalar upper() const noexcept { return m_hi; }
   /// The w no command reaches between the two segments at u = 0: [min, max] of g_0 and f_0.
+  /// \return min(g_0, f_0)
   Scalar dead_band_lower() const noexcept { return std::min(m_f[0], m_g[0]); }
-  Scalar dead_band_upper() const noexcept { return std::max(m_f[0], m_g[0]); }  ///< see dead_band_lower()
+  /// See dead_band_lower()
+  /// \return max(g_0, f_0)
+  Scalar dead_band_upper() const noexcept { return std::max(m_f[0], m_g[0]); }
 
  private:
   VectorX m_f;  // f_0..f_r: u >= 0

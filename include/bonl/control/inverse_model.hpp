@@ -150,6 +150,8 @@ class InverseModel {
   /// q_1 = 0, an input polynomial not monotone through 0 or constant, input hysteresis whose slope
   /// can take either sign near 0), for a command range that is not finite (with an input block) or
   /// does not contain u0, or a band < 0.
+  /// \param model the identified model to invert
+  /// \param options the command range and the backlash inverse's band
   explicit InverseModel(const Model& model, const InverseOptions& options = {})
       : m_linear(bonl::detail::with_integrators(model.a(), model.ni()), model.b(), model.nk()),
         m_u0(static_cast<Scalar>(model.u0())),
@@ -169,20 +171,28 @@ class InverseModel {
   }
 
   /// The reference the step at sample k takes: r(k + nk), ..., r(k + preview()).
+  /// \return nk, the model's delay in samples
   Eigen::Index nk() const noexcept { return m_linear.nk(); }
   /// How far ahead the last reference sample a step takes is: nk plus ZPETC's preview
   /// (LinearInverse::preview(); 0 when B is minimum phase).
+  /// \return the preview in samples, >= nk
   Eigen::Index preview() const noexcept { return m_linear.nk() + m_linear.preview(); }
   /// How many reference samples step() needs: preview() - nk() + 1 (1 when B is minimum phase).
+  /// \return the window's length, >= 1
   Eigen::Index window_size() const noexcept { return m_linear.window_size(); }
   /// Are all of B's zeros inside the unit circle (the exact inverse), or is the linear block's
   /// inverse ZPETC?
+  /// \return true for the exact inverse, false for ZPETC
   bool minimum_phase() const noexcept { return m_linear.minimum_phase(); }
   /// The command range's lower end, in the model's input units (InverseOptions::command_min, or the
   /// model's input_min()).
+  /// \return the lowest command
   Scalar command_min() const noexcept { return m_command_min; }
-  Scalar command_max() const noexcept { return m_command_max; }  ///< the command range's upper end (see command_min())
+  /// The command range's upper end (see command_min())
+  /// \return the highest command
+  Scalar command_max() const noexcept { return m_command_max; }
   /// The linear block's inverse, for its factors (LinearInverse::stable_factor(), unstable_factor()).
+  /// \return the linear block's inverse
   const LinearInverse<Scalar>& linear_inverse() const noexcept { return m_linear; }
 
   /// Back to rest, as the model's free run starts.
@@ -196,6 +206,7 @@ class InverseModel {
   /// estimate) is, instead of from rest: its linear block's stored past (LinearInverse::continue_from),
   /// its plays' memory and its backlash's direction. What AdaptiveInverse does when it re-derives the
   /// inverse.
+  /// \param previous the inverse to go on from
   void continue_from(const InverseModel& previous) noexcept {
     m_linear.continue_from(previous.m_linear);
     if constexpr (kHasInputBlock) m_input.continue_from(previous.m_input);
@@ -206,6 +217,8 @@ class InverseModel {
   /// output units; more entries are ignored). A window too short (RejectedShortPreview), with a
   /// non-finite entry (RejectedNonFinite), or so large that the arithmetic overflows
   /// (RejectedOverflow) leaves the inverse untouched and the command NaN.
+  /// \param reference the window, at least window_size() entries
+  /// \return the command u(k), in the model's input units, and its status
   template <typename W>
   InverseStep<Scalar> step(const Eigen::MatrixBase<W>& reference) noexcept {
     const Eigen::Index n = m_window.size();
@@ -250,6 +263,8 @@ class InverseModel {
 
   /// step() for a window of one sample, r(k + nk): only where window_size() is 1 (else
   /// RejectedShortPreview).
+  /// \param reference r(k + nk), in the model's output units
+  /// \return the command u(k), in the model's input units, and its status
   InverseStep<Scalar> step(Scalar reference) noexcept {
     return step(Eigen::Matrix<Scalar, 1, 1>::Constant(reference));
   }
@@ -258,6 +273,8 @@ class InverseModel {
   /// changed): u(k) for k = 0..N-1 from r(k+nk), ..., r(k+preview()), the reference held at r(N-1)
   /// beyond its end. model.simulate(command) then follows r from k = nk on. Throws
   /// std::invalid_argument for a non-finite reference, or one of preview() samples or fewer.
+  /// \param reference r(0..N-1), in the model's output units, more than preview() samples
+  /// \return N commands and their statuses
   template <typename R>
   InverseRun<Scalar> commands(const Eigen::MatrixBase<R>& reference) const {
     bonl::detail::require_finite(reference, "reference");

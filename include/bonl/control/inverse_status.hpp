@@ -26,17 +26,28 @@ enum class InverseStatus : std::uint8_t {
 };
 
 /// The flags of a and of b together.
+/// \param a a status
+/// \param b another
+/// \return the union of their flags
 constexpr InverseStatus operator|(InverseStatus a, InverseStatus b) noexcept {
   return static_cast<InverseStatus>(static_cast<std::uint8_t>(a) | static_cast<std::uint8_t>(b));
 }
 /// Adds b's flags to a; returns a.
+/// \param a the status to add to
+/// \param b the flags to add
+/// \return a
 constexpr InverseStatus& operator|=(InverseStatus& a, InverseStatus b) noexcept { return a = a | b; }
 /// Does `status` carry every flag of `flags`? has(status, InverseStatus::Exact) is status == Exact.
+/// \param status the status to test
+/// \param flags the flags it must carry
+/// \return true when it carries them all
 constexpr bool has(InverseStatus status, InverseStatus flags) noexcept {
   if (flags == InverseStatus::Exact) return status == InverseStatus::Exact;
   return (static_cast<std::uint8_t>(status) & static_cast<std::uint8_t>(flags)) == static_cast<std::uint8_t>(flags);
 }
 /// A refused sample: the inverse did not advance and the command is not meaningful.
+/// \param status a step's status
+/// \return true for a refused sample (a Rejected* flag)
 constexpr bool rejected(InverseStatus status) noexcept {
   return (static_cast<std::uint8_t>(status) &
           (static_cast<std::uint8_t>(InverseStatus::RejectedNonFinite) |

@@ -47,9 +47,12 @@ class LinearInverse {
   using Scalar = Scalar_;  ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
-  /// a = a_1..a_na, b = b_0..b_nb with b_0 != 0, delay nk >= 0. Throws std::invalid_argument for an
+  /// The inverse of the block with the given coefficients and delay. Throws std::invalid_argument for an
   /// empty or non-finite a or b, nk < 0, b_0 = 0, or (not minimum phase) a zero of B at z = 1, which
   /// leaves no ZPETC, or zeros that cannot be computed.
+  /// \param a a_1..a_na
+  /// \param b b_0..b_nb, b_0 != 0
+  /// \param nk the delay in samples, >= 0
   template <typename A, typename B>
   LinearInverse(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b, Eigen::Index nk)
       : m_a(a), m_b(b), m_nk(nk) {
@@ -74,16 +77,21 @@ class LinearInverse {
   }
 
   /// Are all of B's zeros inside the unit circle (the exact inverse), or is this ZPETC?
+  /// \return true for the exact inverse, false for ZPETC
   bool minimum_phase() const noexcept { return m_minimum_phase; }
-  Eigen::Index nk() const noexcept { return m_nk; }  ///< the delay nk in samples
+  Eigen::Index nk() const noexcept { return m_nk; }  ///< the delay nk in samples \return nk, >= 0
   /// Samples of preview beyond the delay: 0 (exact), s = B_u's degree (ZPETC).
+  /// \return the preview beyond nk in samples, >= 0
   Eigen::Index preview() const noexcept { return m_minimum_phase ? 0 : m_unstable.size() - 1; }
   /// The reference window's length: x_d(k+nk), ..., x_d(k+nk+preview()).
+  /// \return preview() + 1
   Eigen::Index window_size() const noexcept { return preview() + 1; }
   /// ZPETC's factors: B_a (b_0 included) and B_u, ascending powers of q^-1 (B_u = [1] and B_a = B
   /// when minimum phase).
+  /// \return B_a's coefficients
   VectorX stable_factor() const { return m_minimum_phase ? m_b : m_stable; }
   /// ZPETC's factor B_u, the zeros on or outside the unit circle (see stable_factor()).
+  /// \return B_u's coefficients, B_u_0 = 1
   VectorX unstable_factor() const { return m_minimum_phase ? VectorX::Ones(1) : m_unstable; }
 
   /// Back to rest: every past x and w zero.
@@ -96,12 +104,15 @@ class LinearInverse {
   /// each as both keep (an adaptive inverse re-derived from a new estimate; where one inverse is
   /// exact and the other ZPETC, the stored x are the block's in one and the reference's in the other,
   /// which differ by the tracking error).
+  /// \param previous the inverse to go on from
   void continue_from(const LinearInverse& previous) noexcept {
     copy_newest(m_x, previous.m_x);
     copy_newest(m_w, previous.m_w);
   }
 
   /// w(k) for the reference window (at least window_size() entries; window[0] = x_d(k+nk)).
+  /// \param window x_d(k+nk), ..., x_d(k+nk+preview())
+  /// \return w(k)
   template <typename W>
   Scalar input(const Eigen::MatrixBase<W>& window) const noexcept {
     if (m_minimum_phase) {
@@ -121,8 +132,11 @@ class LinearInverse {
     return v / m_stable[0];
   }
 
-  /// Stores the step: x_d(k+nk) (window[0]) and the w(k) actually applied. Returns false, storing
-  /// nothing, where w or the x it gives is not finite (a reference beyond the arithmetic's range).
+  /// Stores the step: x_d(k+nk) (window[0]) and the w(k) actually applied.
+  /// \param x_reference x_d(k+nk), the window's first entry
+  /// \param w the w(k) actually applied
+  /// \return false, storing nothing, where w or the x it gives is not finite (a reference beyond the
+  /// arithmetic's range); else true
   bool commit(Scalar x_reference, Scalar w) noexcept {
     Scalar x = x_reference;
     if (m_minimum_phase) {

@@ -26,8 +26,9 @@ class OutputPolynomialInverse {
   using Scalar = Scalar_;  ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
-  /// q = q_1..q_r1. Throws std::invalid_argument for an empty or non-finite q, or q_1 = 0 (no inverse
-  /// through the operating point).
+  /// The inverse of the polynomial with coefficients q. Throws std::invalid_argument for an empty or
+  /// non-finite q, or q_1 = 0 (no inverse through the operating point).
+  /// \param q q_1..q_r1
   template <typename Q>
   explicit OutputPolynomialInverse(const Eigen::MatrixBase<Q>& q) {
     bonl::detail::require(q.size() >= 1, "the output polynomial needs q_1..q_r1 (at least one entry)");
@@ -43,14 +44,19 @@ class OutputPolynomialInverse {
   }
 
   /// x with q(x) = y on the branch through 0, or the branch's end (OutOfRange).
+  /// \param y the output to reach
+  /// \return x and its status (Exact or OutOfRange)
   InverseStep<Scalar> operator()(Scalar y) const noexcept {
     if (m_direction * y >= Scalar(0)) return solve(y, m_hi);
     return solve(y, m_lo);
   }
 
   /// The branch: x in [lower(), upper()] (infinite where q is monotone to infinity).
+  /// \return the branch's lower end, <= 0 (possibly -infinity)
   Scalar lower() const noexcept { return m_lo; }
-  Scalar upper() const noexcept { return m_hi; }  ///< the branch's upper end (see lower())
+  /// The branch's upper end (see lower())
+  /// \return the branch's upper end, >= 0 (possibly infinity)
+  Scalar upper() const noexcept { return m_hi; }
 
  private:
   /// Solves on [0, end] (end < 0: [end, 0]).

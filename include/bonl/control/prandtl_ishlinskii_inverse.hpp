@@ -60,6 +60,9 @@ class PrandtlIshlinskiiInverse {
   /// for a range that is not finite or leaves out 0, or a block with no inverse: w not monotone in u
   /// near 0 for every state of the plays (weights of either sign that outweigh f'(0), or a polynomial
   /// that rises on one side of 0 and falls on the other), or w that does not change with u.
+  /// \param block the input block to invert
+  /// \param u_min the command range's lower end, finite, <= 0 (a deviation from the operating point)
+  /// \param u_max the command range's upper end, finite, >= 0
   template <int R, int Np>
   PrandtlIshlinskiiInverse(const PrandtlIshlinskiiInput<Scalar, R, Np>& block, Scalar u_min, Scalar u_max)
       : m_block(block.f(), block.thresholds(), block.g()), m_piece(block.f()) {
@@ -97,6 +100,8 @@ class PrandtlIshlinskiiInverse {
   /// The command for w with the plays' current memory: {u, status}. Exact when the block gives w to
   /// rounding. The memory is not changed (advance() does that); not const because it solves in the
   /// inverse's own scratch polynomial (no allocation per sample), so one inverse serves one thread.
+  /// \param w the block's output the linear block needs
+  /// \return the command u and its status (Exact or Saturated)
   InverseStep<Scalar> operator()(Scalar w) noexcept {
     const Scalar s = m_direction;
     Scalar lo = m_lo, hi = m_hi;
@@ -137,21 +142,30 @@ class PrandtlIshlinskiiInverse {
   }
 
   /// The w the command u gives with the plays' current memory (the model's arithmetic).
+  /// \param u the command
+  /// \return w
   Scalar output(Scalar u) const noexcept { return m_block.peek(u); }
   /// Steps the plays with the command given.
+  /// \param u the command given
   void advance(Scalar u) noexcept { m_block.step(u); }
   /// Back to rest: every play at 0.
   void reset() noexcept { m_block.reset(); }
   /// Takes over `previous`'s play memory (an inverse of another estimate with as many plays).
+  /// \param previous the inverse whose memory to take
   void continue_from(const PrandtlIshlinskiiInverse& previous) noexcept { m_block.continue_from(previous.m_block); }
 
   /// The commands the inverse uses, [lower(), upper()]: the command range, or nearer to 0 where the
   /// slope bound stops keeping its sign.
+  /// \return the lowest command used, <= 0
   Scalar lower() const noexcept { return m_lo; }
-  Scalar upper() const noexcept { return m_hi; }  ///< the commands' upper end (see lower())
+  /// The commands' upper end (see lower())
+  /// \return the highest command used, >= 0
+  Scalar upper() const noexcept { return m_hi; }
   /// +1 where w rises with u, -1 where it falls.
+  /// \return +1 or -1
   int direction() const noexcept { return m_direction > Scalar(0) ? 1 : -1; }
   /// The plays' memory P(k-1).
+  /// \return P_1(k-1)..P_np(k-1)
   const VectorX& state() const noexcept { return m_block.state(); }
 
  private:

@@ -17,6 +17,11 @@ namespace bonl {
 /// The recursive estimator alone: `options.passes` passes over the records, each continuing from the
 /// previous pass's theta and P; every record starts from rest, as a pass does (Estimator::start_pass).
 /// Throws NumericalError if an update breaks down.
+/// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
+/// are not used
+/// \param records the records, each an input u and measured output y of equal length
+/// \param options the method, passes and the estimator's options
+/// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model>
 Model estimate_recursively(const Model& structure, const Records<typename Model::Scalar>& records,
                            const IdentifyOptions& options) {
@@ -42,6 +47,12 @@ Model estimate_recursively(const Model& structure, const Records<typename Model:
 }
 
 /// The same on one record (u, y).
+/// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
+/// are not used
+/// \param u the input, one record
+/// \param y the measured output, as long as u
+/// \param options the method, passes and the estimator's options
+/// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model, typename U, typename Y>
 Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
                            const IdentifyOptions& options) {

@@ -41,22 +41,31 @@ struct ForgettingSchedule {
   double change_ratio = 2.0;       ///< "changing": one mean square more than change_ratio times the other
   double poor_fit = 0.25;          ///< "explains little": recent mean square error > poor_fit x output variance
 
-  static ForgettingSchedule paper() { return {}; }  ///< the paper's steps: 0.98 for 200 samples, then 1
+  /// The paper's steps: 0.98 for 200 samples, then 1
+  /// \return the schedule
+  static ForgettingSchedule paper() { return {}; }
   /// A constant forgetting factor lambda, in (0, 1] (checked by validate()).
+  /// \param lambda the factor for every sample
+  /// \return a Steps schedule with initial = final = lambda
   static ForgettingSchedule constant(double lambda) {
     ForgettingSchedule schedule;
     schedule.initial = schedule.final = lambda;
     schedule.initial_samples = 0;
     return schedule;
   }
-  static ForgettingSchedule adaptive_memory() {  ///< the adaptive memory with its default settings
+  /// The adaptive memory with its default settings. \return the schedule
+  static ForgettingSchedule adaptive_memory() {
     ForgettingSchedule schedule;
     schedule.kind = Kind::AdaptiveMemory;
     return schedule;
   }
 
-  bool adaptive() const noexcept { return kind == Kind::AdaptiveMemory; }  ///< whether this is the adaptive-memory kind
+  /// Whether this is the adaptive-memory kind
+  /// \return true for Kind::AdaptiveMemory
+  bool adaptive() const noexcept { return kind == Kind::AdaptiveMemory; }
   /// Kind::Steps only: lambda at a sample.
+  /// \param sample the sample's number since the pass started
+  /// \return lambda, initial or final
   double at(Eigen::Index sample) const noexcept { return sample < initial_samples ? initial : final; }
 
   /// Throws std::invalid_argument for a setting out of range (a lambda outside (0, 1], a negative

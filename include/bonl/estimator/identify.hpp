@@ -162,6 +162,11 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
 /// Where it refines, all of it runs on the data in identify's own units (IdentifyOptions::normalise),
 /// and the model comes back in the data's units. Where it does not, the result is what
 /// Estimator::update gives over the records, in the data's units.
+/// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
+/// are not used
+/// \param records the records, each an input u and measured output y of equal length
+/// \param options the method, passes, refinement, normalisation and operating point
+/// \return the identified model, in the data's units, with its operating point and input range
 template <class Model>
 Model identify(const Model& structure, const Records<typename Model::Scalar>& records,
                const IdentifyOptions& options = {}) {
@@ -189,6 +194,12 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
 }
 
 /// The same on one record (u, y).
+/// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
+/// are not used
+/// \param u the input, one record
+/// \param y the measured output, as long as u
+/// \param options the method, passes, refinement, normalisation and operating point
+/// \return the identified model, in the data's units, with its operating point and input range
 template <class Model, typename U, typename Y>
 Model identify(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
                const IdentifyOptions& options = {}) {

@@ -13,6 +13,8 @@ enum class OperatingPointSource { Structure, Mean, Initial };
 
 /// The name of an operating-point source, as Python and the command line spell it: "structure", "mean",
 /// "initial".
+/// \param source the source
+/// \return the name, a string literal
 inline const char* to_string(OperatingPointSource source) {
   switch (source) {
     case OperatingPointSource::Mean: return "mean";

@@ -27,6 +27,8 @@ enum class Method {
 
 /// The name of a method, as Python, model files and the command line spell it ("output_error",
 /// "equation_error", "paper").
+/// \param method the method
+/// \return the name, a string literal
 inline const char* to_string(Method method) noexcept {
   switch (method) {
     case Method::OutputError: return "output_error";
@@ -38,6 +40,8 @@ inline const char* to_string(Method method) noexcept {
 
 /// The method named `name` ("output_error", "equation_error" or "paper"); std::invalid_argument
 /// naming the choices otherwise.
+/// \param name the method's name
+/// \return the method
 inline Method method_from_string(const std::string& name) {
   for (Method method : {Method::OutputError, Method::EquationError, Method::Paper}) {
     if (name == to_string(method)) return method;

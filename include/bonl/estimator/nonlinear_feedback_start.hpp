@@ -29,6 +29,10 @@ namespace bonl {
 /// the model's identify_starts): the records' best linear approximation as its linear block (its
 /// orders, delay and integrators), every other coefficient 0 (the feedback's block D = q^-1). The
 /// records are deviations from the operating point. None where the fit broke down numerically.
+/// \param structure the orders (and any structure of the feedback: knots, thresholds)
+/// \param records the identification records, deviations from the operating point
+/// \param linear_iterations the Levenberg-Marquardt iterations of the best linear approximation
+/// \return the start, or none
 template <class Model>
 std::vector<Model> open_loop_starts(const Model& structure, const Records<typename Model::Scalar>& records,
                                     int linear_iterations = 100) {
@@ -50,6 +54,10 @@ std::vector<Model> open_loop_starts(const Model& structure, const Records<typena
 /// identify()'s start for a NonlinearFeedback model (the model's identify_starts): the loop open
 /// (open_loop_starts); and with ni = 1 and nv = 1 the velocity model identified on the records' first
 /// differences. A start whose fit broke down numerically is left out.
+/// \param structure the orders, knots and thresholds
+/// \param records the identification records, deviations from the operating point
+/// \param linear_iterations the Levenberg-Marquardt iterations of the best linear approximation
+/// \return the starts, possibly none
 template <class Model>
 std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Records<typename Model::Scalar>& records,
                                              int linear_iterations = 100) {

@@ -181,6 +181,11 @@ inline constexpr Eigen::Index kCoarseSamples = 16384;
 /// start on the records' first part, then only the one that simulates all the records best on all
 /// of them. Most iterations happen far from a minimum, where a part of the data points the same way
 /// as all of it, at a fraction of the cost.
+/// \param starts the models to start from, at least one
+/// \param records the records, each an input u and measured output y of equal length
+/// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
+/// \param report when not null, filled with the costs and iterations
+/// \return the refined model that simulates the records best
 template <class Model>
 Model refine_output_error(const std::vector<Model>& starts, const Records<typename Model::Scalar>& records,
                           int max_iterations = 100, RefinementReport* report = nullptr) {
@@ -240,6 +245,11 @@ Model refine_output_error(const std::vector<Model>& starts, const Records<typena
 }
 
 /// The same from one start.
+/// \param start the model to start from
+/// \param records the records, each an input u and measured output y of equal length
+/// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
+/// \param report when not null, filled with the costs and iterations
+/// \return the refined model that simulates the records best
 template <class Model>
 Model refine_output_error(const Model& start, const Records<typename Model::Scalar>& records,
                           int max_iterations = 100, RefinementReport* report = nullptr) {
@@ -247,6 +257,12 @@ Model refine_output_error(const Model& start, const Records<typename Model::Scal
 }
 
 /// The same on one record (u, y).
+/// \param start the model to start from
+/// \param u the input, one record
+/// \param y the measured output, as long as u
+/// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
+/// \param report when not null, filled with the costs and iterations
+/// \return the refined model that simulates the records best
 template <class Model, typename U, typename Y>
 Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
                           int max_iterations = 100, RefinementReport* report = nullptr) {

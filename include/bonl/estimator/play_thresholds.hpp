@@ -22,6 +22,9 @@
 namespace bonl {
 
 /// The thresholds the data rule gives np plays over the records' inputs.
+/// \param structure the model; only its np is read
+/// \param records the records, each an input u and measured output y of equal length
+/// \return r_1..r_np, in the units of u
 template <class Model>
 typename Model::Thresholds play_thresholds_from_data(const Model& structure,
                                                     const Records<typename Model::Scalar>& records) {
@@ -37,6 +40,9 @@ typename Model::Thresholds play_thresholds_from_data(const Model& structure,
 
 /// `structure` with its plays' thresholds placed by the data rule over the records' inputs, its
 /// parameters untouched.
+/// \param structure the model
+/// \param records the records, each an input u and measured output y of equal length
+/// \return a copy of structure with the new thresholds
 template <class Model>
 Model with_thresholds_from_data(const Model& structure, const Records<typename Model::Scalar>& records) {
   Model placed = structure;
@@ -48,6 +54,9 @@ Model with_thresholds_from_data(const Model& structure, const Records<typename M
 /// model's identify_starts): the structure with the data rule's thresholds, estimated recursively
 /// (Method::OutputError). None where the structure already has those thresholds (its own recursive
 /// estimates are that start) or the recursion broke down.
+/// \param structure the model's orders and thresholds
+/// \param records the identification records, deviations from the operating point
+/// \return zero or one start
 template <class Model>
 std::vector<Model> prandtl_ishlinskii_starts(const Model& structure, const Records<typename Model::Scalar>& records) {
   std::vector<Model> starts;

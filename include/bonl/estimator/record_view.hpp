@@ -18,6 +18,8 @@ template <typename Scalar = double>
 struct RecordView {
   using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< the vectors a record is viewed in
   /// Views input and output (the caller keeps them alive; temporaries are refused at compile time).
+  /// \param input the input u
+  /// \param output the measured output y, as long as input
   RecordView(const Vector& input, const Vector& output)
       : u(input.data(), input.size()), y(output.data(), output.size()) {}
   RecordView(Vector&&, const Vector&) = delete;
@@ -25,6 +27,8 @@ struct RecordView {
   RecordView(Vector&&, Vector&&) = delete;
 
   /// The first `samples` samples of this record (at most all of them).
+  /// \param samples how many samples, >= 0
+  /// \return a view of the same vectors
   RecordView head(Eigen::Index samples) const {
     const Eigen::Index n = samples < u.size() ? samples : u.size();
     return RecordView(u.data(), y.data(), n);

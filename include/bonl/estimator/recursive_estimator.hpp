@@ -67,12 +67,16 @@ struct EstimatorOptions {
   WindowRefinementOptions window;
 
   /// The forgetting schedule, p0 and trace ceiling in force: the ones set, or the method's defaults.
+  /// \return the forgetting schedule
   ForgettingSchedule resolved_forgetting() const {
     if (forgetting) return *forgetting;
     return method == Method::OutputError ? ForgettingSchedule::adaptive_memory() : ForgettingSchedule::paper();
   }
-  double resolved_p0() const { return p0 ? *p0 : (method == Method::OutputError ? 10.0 : 1e6); }  ///< p0 in force: the one set, or the method's default (10 output-error, 1e6 the others)
+  /// P0 in force: the one set, or the method's default (10 output-error, 1e6 the others)
+  /// \return p0, > 0
+  double resolved_p0() const { return p0 ? *p0 : (method == Method::OutputError ? 10.0 : 1e6); }
   /// The trace ceiling in force: the one set, or the method's default (10 output-error, 1 the others).
+  /// \return the trace ceiling, >= 1 (infinity: none)
   double resolved_trace_ceiling() const {
     return trace_ceiling ? *trace_ceiling : (method == Method::OutputError ? 10.0 : 1.0);
   }
@@ -157,6 +161,8 @@ class Estimator {
 
   /// `structure` gives the orders; the estimate starts from zero (c = c0 for the equation-error and
   /// paper methods, c = 0 for the output-error method).
+  /// \param structure the model whose orders (and knots, thresholds) are estimated; its parameters are not used
+  /// \param options the method, forgetting, P(0) and safeguards; checked here (std::invalid_argument)
   explicit Estimator(const Model& structure, const EstimatorOptions& options = {})
       : m_model(validated(structure, options)), m_terms(structure, key_term_method(options.method)),
         m_outputs(structure, options.backlash_hold), m_rls(structure.num_params(), Scalar(options.resolved_p0())),
@@ -183,6 +189,7 @@ class Estimator {
 
   /// Restarts from a given estimate (a warm start, e.g. a previously identified model's theta):
   /// P = p0 I, internals at rest.
+  /// \param theta0 the estimate to start from, num_params() finite values in the model's parameter order
   template <typename T>
   void reset(const Eigen::MatrixBase<T>& theta0) {
     m_rls.reset(theta0, Scalar(m_p0));
@@ -199,6 +206,7 @@ class Estimator {
 
   /// Records theta, the internal variable and the status of each of the next updates, keeping the
   /// newest `capacity` (a ring buffer, allocated here once: update() still never allocates).
+  /// \param capacity how many of the newest updates to keep, >= 1
   void start_recording(Eigen::Index capacity) {
     detail::require(capacity >= 1, "recording capacity must be >= 1");
     m_record_theta.resize(m_rls.size(), capacity);
@@ -217,8 +225,11 @@ class Estimator {
     m_record_next = 0;
     m_recorded = 0;
   }
-  bool recording() const noexcept { return m_record_theta.cols() > 0; }  ///< whether start_recording() is recording the updates
+  /// Whether start_recording() is recording the updates
+  /// \return true between start_recording() and stop_recording()
+  bool recording() const noexcept { return m_record_theta.cols() > 0; }
   /// What was recorded so far, oldest first.
+  /// \return a copy of the recorded updates, at most the capacity's newest
   EstimatorTrajectory<Scalar> trajectory() const {
     EstimatorTrajectory<Scalar> out;
     const Eigen::Index capacity = m_record_theta.cols();
@@ -247,6 +258,10 @@ class Estimator {
 
   /// One sample. Never throws and, for fixed sizes, never allocates. A non-finite u or y is
   /// rejected and leaves the state untouched.
+  /// \param u the input u(k), the command that drove the sample
+  /// \param y the measured output y(k)
+  /// \return what the update did with the sample (Updated, NoInformation, RejectedNonFinite,
+  /// NumericalFailure)
   UpdateStatus update(Scalar u, Scalar y) noexcept {
     if (!std::isfinite(u) || !std::isfinite(y)) return UpdateStatus::RejectedNonFinite;
     // The model's blocks see the deviations from its operating point (0, 0 unless set).
@@ -288,6 +303,9 @@ class Estimator {
   /// on_sample(k, status), where last_prediction() and theta() are that sample's. The same, bit for
   /// bit, as the loop; no allocation of its own. u and y: vectors of equal length, else
   /// std::invalid_argument before the first sample (nothing changed).
+  /// \param u the inputs u(0), u(1), ...
+  /// \param y the measured outputs, as many
+  /// \param on_sample called as on_sample(k, status) after each sample's update
   template <typename U, typename Y, typename OnSample>
   void update(const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y, OnSample&& on_sample) {
     if (u.cols() != 1 || y.cols() != 1) detail::fail("u and y must be vectors (one column each)");
@@ -298,10 +316,15 @@ class Estimator {
     for (Eigen::Index k = 0; k < u.size(); ++k) on_sample(k, update(Scalar(u[k]), Scalar(y[k])));
   }
 
-  const Params& theta() const noexcept { return m_rls.theta(); }  ///< the current estimate theta, in the model's parameter order
-  Covariance covariance() const { return m_rls.covariance(); }  ///< the current covariance P (exactly symmetric)
+  /// The current estimate theta, in the model's parameter order
+  /// \return num_params() values, valid until the next update or reset
+  const Params& theta() const noexcept { return m_rls.theta(); }
+  /// The current covariance P (exactly symmetric)
+  /// \return a copy of P, num_params() x num_params()
+  Covariance covariance() const { return m_rls.covariance(); }
   /// The current estimate as a model, projected onto the model's valid set (the paper method's
   /// P-H-W estimate can have c < 0, which simulates as c = 0).
+  /// \return a copy of the structure with the projected estimate
   Model model() const {
     Params theta = m_rls.theta();
     m_model.constrain(theta);
@@ -313,16 +336,23 @@ class Estimator {
   /// used: y - last_prediction() is the innovation (for monitoring and fault detection). For the
   /// output-error method it is the model's free-run (simulated) output; for the others the key-term
   /// one-step prediction from the measured past.
+  /// \return the prediction of y(k), in y's units; the operating point included
   Scalar last_prediction() const noexcept { return m_prediction + m_y0; }
   /// Samples since the last pass started.
+  /// \return the number of samples, >= 0
   Eigen::Index samples() const noexcept { return m_sample; }
   /// True once an update was refused for numerical reasons (cleared by recover() and reset()).
+  /// \return true after a NumericalFailure until recover() or reset()
   bool diverged() const noexcept { return m_health.diverged; }
   /// What the safeguards did since the last reset().
+  /// \return the counters, valid while the estimator lives
   const EstimatorHealth& health() const noexcept { return m_health; }
-  const EstimatorOptions& options() const noexcept { return m_options; }  ///< the options the estimator was constructed with
+  /// The options the estimator was constructed with
+  /// \return the options, with their unset optionals still unset (resolved_*() gives the values in force)
+  const EstimatorOptions& options() const noexcept { return m_options; }
   /// The forgetting factor's current memory length 1 / (1 - lambda) under an adaptive-memory
   /// schedule (NaN for a step schedule).
+  /// \return 1 / (1 - lambda) in samples, or NaN
   double memory() const noexcept {
     return m_forgetting.adaptive() ? m_memory.memory() : std::numeric_limits<double>::quiet_NaN();
   }

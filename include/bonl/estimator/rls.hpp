@@ -159,7 +159,9 @@ class Rls {
   /// compile time; above it, the generic kernel.
   static constexpr int kMaxCompiledSize = 32;
 
-  /// n parameters, theta = 0, P = p0 I.
+  /// theta = 0, P = p0 I.
+  /// \param n the number of parameters
+  /// \param p0 the scale of P(0), > 0 and finite
   explicit Rls(Eigen::Index n = (N_ == Eigen::Dynamic ? 1 : N_), Scalar p0 = Scalar(1e6)) {
     detail::require_order(n, 1, "number of parameters");
     detail::require_matches_template(n, N_, "number of parameters");
@@ -173,6 +175,8 @@ class Rls {
   }
 
   /// theta = theta0, P = p0 I (p0 > 0 and finite).
+  /// \param theta0 the estimate to start from, size() values
+  /// \param p0 the scale of P
   template <typename T>
   void reset(const Eigen::MatrixBase<T>& theta0, Scalar p0) {
     detail::require_size(theta0, m_theta.size(), "theta0");
@@ -184,6 +188,7 @@ class Rls {
 
   /// P = p0 I (p0 > 0 and finite), theta kept: a covariance reset.
   /// Allocation-free when P already has its size (the message is built only when it throws).
+  /// \param p0 the scale of P
   void reset_covariance(Scalar p0) {
     check_p0(p0);
     m_M.setZero();  // keeps its size: no allocation
@@ -194,6 +199,8 @@ class Rls {
   /// theta and P given, as they are (P symmetric positive definite of this size, theta finite: the
   /// caller's to ensure): the estimate swapped for another one, with the covariance that goes with
   /// it (the window refinement's). Allocation-free; the padding of the storage stays zero.
+  /// \param theta the new estimate, size() values
+  /// \param P its covariance, size() x size()
   template <typename T, typename C>
   void assign(const Eigen::MatrixBase<T>& theta, const Eigen::MatrixBase<C>& P) noexcept {
     m_theta = theta;
@@ -201,9 +208,14 @@ class Rls {
     m_state.scale = Scalar(1);
   }
 
-  /// One update with regressor phi, target y and forgetting factor lambda in (0, 1]; forgetting is
-  /// reduced where it would lift trace(P) above max_trace (see the top of this file).
-  /// Returns false, with theta and P untouched, when the update is numerically unsafe.
+  /// One update; forgetting is reduced where it would lift trace(P) above max_trace (see the top of
+  /// this file).
+  /// \param phi the regressor, size() values
+  /// \param target the measured target y of phi' theta
+  /// \param lambda the forgetting factor, in (0, 1]
+  /// \param max_trace the ceiling on trace(P); infinity: none
+  /// \return true when theta and P were updated; false, with both untouched, when the update is
+  /// numerically unsafe
   template <typename Phi>
   bool update(const Eigen::MatrixBase<Phi>& phi, Scalar target, Scalar lambda,
               Scalar max_trace = std::numeric_limits<Scalar>::infinity()) noexcept {
@@ -212,6 +224,12 @@ class Rls {
 
   /// The same update given the prediction error e = target - phi' theta itself: for a regressor that
   /// is a gradient (the output-error method), where there is no target.
+  /// \param phi the regressor, size() values
+  /// \param error the prediction error e
+  /// \param lambda the forgetting factor, in (0, 1]
+  /// \param max_trace the ceiling on trace(P); infinity: none
+  /// \return true when theta and P were updated; false, with both untouched, when the update is
+  /// numerically unsafe
   template <typename Phi>
   bool update_with_error(const Eigen::MatrixBase<Phi>& phi, Scalar error, Scalar lambda,
                          Scalar max_trace = std::numeric_limits<Scalar>::infinity()) noexcept {
@@ -222,20 +240,24 @@ class Rls {
   /// keeps P's smallest eigenvalue above the round-off of the rank-1 downdates, which otherwise
   /// drives a P whose condition number passes 1 / epsilon indefinite. q >= 0 and finite; 0 (the
   /// default) is the algorithm as written.
+  /// \param q the variance added to each diagonal entry of P per update
   void set_process_noise(Scalar q) {
     detail::require(std::isfinite(q) && q >= Scalar(0), "process noise must be finite and >= 0");
     m_state.process_noise = q;
   }
 
   /// True when the last accepted update had its forgetting reduced by the trace ceiling.
+  /// \return true or false, for the last accepted update
   bool forgetting_limited() const noexcept { return m_state.forgetting_limited; }
 
-  const Vector& theta() const noexcept { return m_theta; }  ///< the estimate theta
+  const Vector& theta() const noexcept { return m_theta; }  ///< the estimate theta \return size() values
   /// For projections after an update (e.g. a constraint on one parameter).
+  /// \return a reference to theta, which the caller may change
   Vector& mutable_theta() noexcept { return m_theta; }
   /// The covariance (exactly symmetric).
+  /// \return a copy of P, size() x size()
   Matrix covariance() const { return m_state.scale * m_M.template topLeftCorner<N_, N_>(size(), size()); }
-  Eigen::Index size() const noexcept { return m_theta.size(); }  ///< the number of parameters
+  Eigen::Index size() const noexcept { return m_theta.size(); }  ///< the number of parameters \return n
 
  private:
   static void check_p0(Scalar p0) {

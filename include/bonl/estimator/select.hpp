@@ -39,6 +39,8 @@ namespace bonl {
 enum class SelectionCriterion { Validation, AIC, BIC };
 
 /// The name of a criterion, as Python spells it: "validation", "aic", "bic".
+/// \param criterion the criterion
+/// \return the name, a string literal
 inline const char* to_string(SelectionCriterion criterion) {
   switch (criterion) {
     case SelectionCriterion::AIC: return "aic";
@@ -65,6 +67,7 @@ struct SelectOptions {
 template <class Model>
 struct SelectionCandidate {
   /// A row for candidate, not yet identified (infinite score).
+  /// \param candidate the structure
   explicit SelectionCandidate(const Model& candidate) : structure(candidate) {}
 
   Model structure;                 ///< the candidate as given
@@ -86,6 +89,9 @@ struct Selection {
 
 /// The length of a record of `samples` samples' held-out part: fraction * samples rounded half away
 /// from zero (std::lround), at least 1.
+/// \param samples the record's length
+/// \param fraction the held-out fraction, in (0, 1)
+/// \return the held-out part's length, >= 1
 inline Eigen::Index held_out_samples(Eigen::Index samples, double fraction) {
   return std::max<Eigen::Index>(1, static_cast<Eigen::Index>(std::lround(fraction * static_cast<double>(samples))));
 }
@@ -98,6 +104,8 @@ class SelectionData {
  public:
   /// Checks the records and the options (std::invalid_argument naming the bad one) and splits every
   /// record into its fit part and its held-out part (under AIC and BIC the fit part is all of it).
+  /// \param records the records, each an input u and measured output y of equal length
+  /// \param options the selection's options
   SelectionData(const Records<Scalar>& records, const SelectOptions& options) : m_records(records), m_options(options) {
     const bool validation = options.criterion == SelectionCriterion::Validation;
     detail::require(options.validation_fraction > 0.0 && options.validation_fraction < 1.0,
@@ -123,12 +131,21 @@ class SelectionData {
     }
   }
 
-  const Records<Scalar>& records() const noexcept { return m_records; }          ///< all the records
-  const Records<Scalar>& fit_records() const noexcept { return m_fit_records; }  ///< their fit parts
+  /// All the records
+  /// \return views of the records given
+  const Records<Scalar>& records() const noexcept { return m_records; }
+  /// Their fit parts
+  /// \return views of the records' first parts
+  const Records<Scalar>& fit_records() const noexcept { return m_fit_records; }
   /// Where each record's held-out part starts (its length under AIC and BIC).
+  /// \return one sample index per record
   const std::vector<Eigen::Index>& split() const noexcept { return m_split; }
-  Eigen::Index fit_samples() const noexcept { return m_fit_samples; }  ///< the fit parts' samples together
-  const SelectOptions& options() const noexcept { return m_options; }  ///< the options, checked
+  /// The fit parts' samples together
+  /// \return the number of samples
+  Eigen::Index fit_samples() const noexcept { return m_fit_samples; }
+  /// The options, checked
+  /// \return the options given
+  const SelectOptions& options() const noexcept { return m_options; }
 
  private:
   Records<Scalar> m_records;
@@ -177,6 +194,9 @@ double tail_simulation_mse(const Model& model, const Records<typename Model::Sca
 /// Identifies one candidate structure on the data's fit parts and scores it by the data's criterion:
 /// its row of the selection's table. A candidate with more parameters than the fit parts have samples,
 /// or whose identification throws, gets an infinite score, no model and the reason in `error`.
+/// \param structure the candidate
+/// \param data the checked records and options
+/// \return the candidate's row, scored
 template <class Model>
 SelectionCandidate<Model> score_candidate(const Model& structure, const SelectionData<typename Model::Scalar>& data) {
   SelectionCandidate<Model> row(structure);
@@ -214,6 +234,9 @@ SelectionCandidate<Model> score_candidate(const Model& structure, const Selectio
 /// Scores every candidate structure (score_candidate(), on data.options().threads threads), ranks them
 /// best first and refits the best on all the records. Throws std::invalid_argument for no candidates,
 /// NumericalError if every candidate failed.
+/// \param candidates the structures to compare, at least one
+/// \param data the checked records and options
+/// \return the ranked table and the best structure identified on all the records
 template <class Model>
 Selection<Model> select(const std::vector<Model>& candidates, const SelectionData<typename Model::Scalar>& data) {
   detail::require(!candidates.empty(), "select: candidates is empty");
@@ -245,6 +268,10 @@ Selection<Model> select(const std::vector<Model>& candidates, const SelectionDat
 
 /// select() on the records with the options, checked here (std::invalid_argument for bad options or
 /// bad records).
+/// \param candidates the structures to compare, at least one
+/// \param records the records, each an input u and measured output y of equal length
+/// \param options the criterion, held-out fraction, window, threads and identification options
+/// \return the ranked table and the best structure identified on all the records
 template <class Model>
 Selection<Model> select(const std::vector<Model>& candidates, const Records<typename Model::Scalar>& records,
                         const SelectOptions& options = {}) {

@@ -13,6 +13,8 @@
 namespace bonl {
 
 /// `structure` as it is: its model leaves nothing to the data.
+/// \param structure the model
+/// \return a copy of structure
 template <class Model>
 Model structure_from_data(const Model& structure, const Records<typename Model::Scalar>& /*records*/) {
   return structure;
@@ -21,6 +23,9 @@ Model structure_from_data(const Model& structure, const Records<typename Model::
 /// The Prandtl-Ishlinskii Hammerstein model: its plays' thresholds placed by the data rule over the
 /// records' inputs (with_thresholds_from_data, identify's extra start), its parameters untouched.
 /// The records' inputs in the structure's units (the half-range does not depend on the operating point).
+/// \param structure the model
+/// \param records the records, each an input u and measured output y of equal length
+/// \return a copy of structure with the new thresholds
 template <typename Scalar, int Na, int Nb, int R, int Np>
 PrandtlIshlinskiiHammerstein<Scalar, Na, Nb, R, Np> structure_from_data(
     const PrandtlIshlinskiiHammerstein<Scalar, Na, Nb, R, Np>& structure, const Records<Scalar>& records) {

@@ -168,6 +168,10 @@ std::optional<Vector> quantile_knots(const Vector& x, Eigen::Index nh) {
 /// The records are deviations from the operating point (identify() hands them so). Empty where the
 /// BLA's least squares broke down, its b_0 = 0 or not finite, or every fit is degenerate (no linear
 /// term).
+/// \param structure the orders and knot count
+/// \param records the identification records, deviations from the operating point
+/// \param linear_iterations the Levenberg-Marquardt iterations of the best linear approximation
+/// \return the splits, best first; possibly empty
 template <class Model>
 std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model& structure,
                                                                      const Records<typename Model::Scalar>& records,
@@ -282,6 +286,9 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
 /// identify()'s starts for a WienerHammerstein model beside its recursive estimates (the model's
 /// identify_starts): the best kWienerHammersteinStarts splits, best first. Its recursive estimates
 /// alone depend on where they happen to go.
+/// \param structure the orders and knot count
+/// \param records the identification records, deviations from the operating point
+/// \return at most kWienerHammersteinStarts models, best first
 template <class Model>
 std::vector<Model> wiener_hammerstein_starts(const Model& structure, const Records<typename Model::Scalar>& records) {
   const auto splits = wiener_hammerstein_splits(structure, records);

@@ -88,9 +88,14 @@ class WindowRefinement {
   using Matrix = Eigen::Matrix<Scalar, Model::kNumParams, Model::kNumParams>;  ///< n x n
   using Run = typename Model::OutputErrorTerms;  ///< a free run of the model with its sensitivities
 
-  /// `hold` is the estimator's backlash hold (OutputErrorTerms), `radius` its stability radius, `p0`
-  /// its P(0) scale: a swapped-in covariance is (w J'J + I / p0)^-1, with w the part of the window's
-  /// samples the recursion's forgetting keeps (its memory over the window's length, at most 1).
+  /// A refinement with an empty window; a swapped-in covariance is (w J'J + I / p0)^-1, with w the
+  /// part of the window's samples the recursion's forgetting keeps (its memory over the window's
+  /// length, at most 1).
+  /// \param structure the model whose orders are refined
+  /// \param options the window's length and the work per sample
+  /// \param hold the estimator's backlash hold (OutputErrorTerms)
+  /// \param radius the estimator's stability radius
+  /// \param p0 the estimator's P(0) scale
   WindowRefinement(const Model& structure, const WindowRefinementOptions& options, Eigen::Index hold, double radius,
                    double p0)
       : m_model(structure), m_options(options), m_radius(Scalar(radius)), m_p0(Scalar(p0)),
@@ -120,6 +125,8 @@ class WindowRefinement {
 
   /// Starts over after the sample in hand: the window begins with the next sample, from the run
   /// `run` (the recursion's, which has just taken that sample) and the estimate theta.
+  /// \param theta the recursion's estimate
+  /// \param run the recursion's free run, which has just taken the sample in hand
   void restart(const Params& theta, const Run& run) noexcept {
     m_start_run = run;
     m_start_theta = theta;
@@ -134,6 +141,8 @@ class WindowRefinement {
   }
 
   /// Everything back to the start (the estimator's reset): the counts too.
+  /// \param theta the recursion's estimate
+  /// \param run the recursion's free run, at rest
   void reset(const Params& theta, const Run& run) noexcept {
     m_count = 0;
     m_counts = WindowRefinementCounts{};
@@ -142,6 +151,9 @@ class WindowRefinement {
 
   /// One sample: u and y as the model's blocks see them (deviations from the operating point), and
   /// the recursion's a-priori prediction error of y.
+  /// \param u the input's deviation u(k) - u0
+  /// \param y the output's deviation y(k) - y0
+  /// \param recursion_error the recursion's a-priori error of y(k)
   void push(Scalar u, Scalar y, Scalar recursion_error) noexcept {
     const auto slot = static_cast<std::size_t>(m_count % m_capacity);
     m_u[slot] = u;
@@ -150,10 +162,12 @@ class WindowRefinement {
     ++m_count;
   }
 
-  /// At most work_per_sample model steps of the refinement. `recursion` and `run` are the recursion's
-  /// estimate and run after this sample, `memory` its forgetting's memory in samples, 1 / (1 -
-  /// lambda) (infinity without forgetting). Returns true when a refined estimate is to be swapped
-  /// in: theta(), covariance() and run() hold it.
+  /// At most work_per_sample model steps of the refinement.
+  /// \param recursion the recursion's estimate after this sample
+  /// \param run the recursion's run after this sample
+  /// \param memory the recursion's forgetting's memory in samples, 1 / (1 - lambda) (infinity without
+  /// forgetting)
+  /// \return true when a refined estimate is to be swapped in: theta(), covariance() and run() hold it
   bool advance(const Params& recursion, const Run& run, double memory) noexcept {
     m_memory = memory;
     if (m_count - m_start > m_capacity) {  // the window's first samples are being overwritten
@@ -185,10 +199,16 @@ class WindowRefinement {
     return false;
   }
 
-  const Params& theta() const noexcept { return m_theta; }  ///< the estimate to swap in (after advance() returned true)
-  const Matrix& covariance() const noexcept { return m_covariance; }  ///< its covariance
-  const Run& run() const noexcept { return m_catch_up; }  ///< its free run, up to the sample in hand
-  const WindowRefinementCounts& counts() const noexcept { return m_counts; }  ///< what it did since the last reset
+  /// The estimate to swap in (after advance() returned true)
+  /// \return num_params values
+  const Params& theta() const noexcept { return m_theta; }
+  const Matrix& covariance() const noexcept { return m_covariance; }  ///< its covariance \return n x n, symmetric
+  /// Its free run, up to the sample in hand
+  /// \return the run, to continue from
+  const Run& run() const noexcept { return m_catch_up; }
+  /// What it did since the last reset
+  /// \return the counts
+  const WindowRefinementCounts& counts() const noexcept { return m_counts; }
 
  private:
   enum class Phase { Collect, Pass, CatchUp, Solve };

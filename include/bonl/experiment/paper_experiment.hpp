@@ -36,11 +36,14 @@ inline constexpr std::array<Method, 2> kPaperMethods = {Method::OutputError, Met
 /// integrator); std::invalid_argument for an order the experiment does not give. The paper has no
 /// play operators; for the Prandtl-Ishlinskii Hammerstein model the experiment takes np = 3, as many
 /// plays as the input polynomial has powers (r = 3), fixed before that model ran on the plant.
+/// \param name an order's name as the models' descriptions give it ("na", "r1", ...)
+/// \return the order's value
 Eigen::Index paper_order(const std::string& name);
 
 /// A model of type Model at the paper's orders, each looked up by its name in the model's description.
 /// What the model leaves to the data (the plays' thresholds) is its default here:
 /// identify_paper_models places it from the identification record (structure_from_data).
+/// \return the model, its parameters zero
 template <class Model>
 Model paper_model() {
   std::array<Eigen::Index, Model::kDescription.orders.size()> orders{};
@@ -57,14 +60,20 @@ struct PublishedScore {
 };
 
 /// The paper's published score of the model called `name`; empty for a model the paper does not report.
+/// \param name the model's name (kName)
+/// \return the score, or empty
 std::optional<PublishedScore> published_score(const std::string& name);
 
 /// How the paper writes a model's name in its tables, derived from the name itself: the initials of
 /// a name of several words joined by '-' ("PseudoHammersteinWiener": "P-H-W"), a one-word name as it
 /// is ("Hammerstein", "ARX").
+/// \param name the model's name (kName)
+/// \return the label
 std::string paper_label(const std::string& name);
 
 /// A model's parameters as the rows of the paper's Table 1: ("b0", b_0), ("a1", a_1), ..., ("c", c).
+/// \param model an identified model
+/// \return (label, value) pairs in the table's order
 template <class Model>
 std::vector<std::pair<std::string, double>> labelled_parameters(const Model& model) {
   std::vector<std::pair<std::string, double>> rows;
@@ -109,21 +118,25 @@ struct MethodResult {
   ModelResults models;  ///< the results, one per model of PaperModels
 
   /// The result of Model (a model of PaperModels).
+  /// \return the result, valid while this MethodResult lives
   template <class Model>
   const ModelResult<Model>& get() const {
     return std::get<ModelResult<Model>>(models);
   }
   /// The result of Model (a model of PaperModels), to modify.
+  /// \return the result, valid while this MethodResult lives
   template <class Model>
   ModelResult<Model>& get() {
     return std::get<ModelResult<Model>>(models);
   }
   /// f(model_result) for every model, in PaperModels' order.
+  /// \param f called with each const ModelResult
   template <class F>
   void for_each(F&& f) const {
     std::apply([&](const auto&... result) { (f(result), ...); }, models);
   }
   /// f(model_result) for every model, in PaperModels' order, each result modifiable.
+  /// \param f called with each ModelResult
   template <class F>
   void for_each(F&& f) {
     std::apply([&](auto&... result) { (f(result), ...); }, models);
@@ -154,12 +167,17 @@ struct PaperExperimentResult {
   Timings seconds;  ///< the stages' wall times
 
   /// The results of `method`; std::invalid_argument for a method the experiment did not run.
+  /// \param method one of kPaperMethods
+  /// \return the method's results
   const MethodResult& method(Method method) const;
 };
 
 /// Eight further validation trajectories for a robustness check, fixed in advance: smooth random
 /// signals like the default validation one (seeds 100-103), and multi-sines of 0.4 V per tone on
 /// other tones (0.15, 0.3, 0.45, 0.7, 0.9 Hz) with four sets of phases.
+/// \param parameters the plant; its neutral voltage is the signals' offset
+/// \param options the records' options; the smooth random signals last options.duration
+/// \return the eight commands
 std::vector<plant::Command> robustness_commands(const plant::Parameters& parameters,
                                                 const MeasurementOptions& options = {});
 
@@ -169,13 +187,22 @@ std::vector<plant::Command> robustness_commands(const plant::Parameters& paramet
 /// the identification record (structure_from_data: the plays' thresholds spread over the input's
 /// half-range), so both methods and the online estimate use the same structure. Leaves the
 /// robustness scores empty.
+/// \param records the identification and validation records
+/// \param method the identification method
+/// \param refine_iterations identify()'s refinement iterations
+/// \return every model's identified and online results and scores
 MethodResult identify_paper_models(const Records& records, Method method, int refine_iterations = 100);
 
 /// Adds to every model of `result` its validation MSE on `record` (robustness_mse).
+/// \param result the results to add to
+/// \param record a robustness record
 void add_robustness_scores(MethodResult& result, const Record& record);
 
 /// The paper's experiment: acquire, identify_paper_models for every method of kPaperMethods, and the
 /// robustness check (measured with the records' options, seeds 5000, 5001, ...).
+/// \param parameters the plant
+/// \param options the records' measurement, the robustness check, the refinement
+/// \return every method's results, with the stages' wall times
 PaperExperimentResult run_paper_experiment(const plant::Parameters& parameters = {},
                                            const PaperExperimentOptions& options = {});
 

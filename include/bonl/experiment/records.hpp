@@ -39,16 +39,31 @@ struct Record {
 };
 
 /// First-order low-pass z[k] = z[k-1] + alpha (x[k] - z[k-1]), alpha = 1 - exp(-2 pi fc ts), z[0] = x[0].
+/// \param x the signal
+/// \param cutoff_hz fc [Hz]
+/// \param ts the sampling period [s]
+/// \return z, as long as x
 Eigen::VectorXd low_pass(const Eigen::VectorXd& x, double cutoff_hz, double ts);
 /// low_pass's alpha = 1 - exp(-2 pi fc ts), for a filter run sample by sample (the tracking experiment's).
+/// \param cutoff_hz fc [Hz]
+/// \param ts the sampling period [s]
+/// \return alpha, in (0, 1]
 double low_pass_gain(double cutoff_hz, double ts);
 
 /// Central differences, one-sided at both ends.
+/// \param x the signal, at least 2 samples
+/// \param ts the sampling period [s]
+/// \return dx/dt, as long as x, in x's units per second
 Eigen::VectorXd differentiate(const Eigen::VectorXd& x, double ts);
 
 /// Runs the plant under `command` once (it is deterministic), then draws `repeats` independent
 /// sensor-noise sequences (seeds seed, seed + 1, ...), averages the measured angles, low-passes and
 /// differentiates. Equivalent to repeating the run with fresh noise each time.
+/// \param parameters the plant
+/// \param command V(t) [V]
+/// \param options the duration, sample time, repeats, cutoff and tolerances
+/// \param seed the first repeat's noise seed
+/// \return the record on the output grid
 Record measure(const plant::Parameters& parameters, const plant::Command& command,
                const MeasurementOptions& options, std::uint64_t seed);
 
@@ -60,6 +75,9 @@ struct Records {
 
 /// Both records: the identification command with seed options.seed, the validation command with
 /// options.seed + 1000. Validates the parameters before anything runs.
+/// \param parameters the plant
+/// \param options the commands, duration, sample time, repeats, cutoff, seed and tolerances
+/// \return the identification and the validation record
 Records acquire(const plant::Parameters& parameters, const MeasurementOptions& options = {});
 
 }  // namespace bonl::experiment

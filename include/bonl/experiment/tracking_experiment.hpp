@@ -53,6 +53,7 @@ struct TrackingOptions {
 
   /// The output-error estimator (bonl's default method) with a constant forgetting of 0.999 (a
   /// memory of 10 s), P(0) = 0.01 I around the identified model, the inverse derived every second.
+  /// \return the options
   static control::AdaptiveInverseOptions adaptive_defaults();
   /// Throws std::invalid_argument naming the first bad option.
   void validate() const;
@@ -90,18 +91,31 @@ struct TrackingResult {
   std::vector<TrackingRun> runs;
 
   /// The run of `controller` with or without the plant change; std::invalid_argument if there is none.
+  /// \param controller the run's controller name (TrackingRun::controller)
+  /// \param plant_changes true for the run under the plant change
+  /// \return the run
   const TrackingRun& run(const std::string& controller, bool plant_changes = false) const;
 };
 
 /// The reference joint velocity r(t_k), k = 0..samples-1 (TrackingOptions).
+/// \param options the reference's bandwidth, RMS, period and ramp
+/// \param samples the number of samples
+/// \return r [rad/s], samples values
 Eigen::VectorXd tracking_reference(const TrackingOptions& options, Eigen::Index samples);
 
 /// The experiment with the models of `identified` (identify_paper_models' result) on the plant
 /// `parameters`. The PI is designed from the identified ARX model by Skogestad's SIMC rule (docs/how-to/control.md).
+/// \param parameters the plant
+/// \param identified the identified models
+/// \param options the reference, duration, plant change and feedforward settings
+/// \return the reference, every controller's run and its tracking errors
 TrackingResult run_tracking_experiment(const plant::Parameters& parameters, const MethodResult& identified,
                                        const TrackingOptions& options = {});
 
 /// The same, identifying the models first (acquire and identify_paper_models with options.method).
+/// \param parameters the plant
+/// \param options the reference, duration, plant change, method and feedforward settings
+/// \return the reference, every controller's run and its tracking errors
 TrackingResult run_tracking_experiment(const plant::Parameters& parameters = {}, const TrackingOptions& options = {});
 
 }  // namespace bonl::experiment

@@ -390,6 +390,9 @@ auto guard(F&& f) -> decltype(f()) {
 /// The model as a bonl model file (format version 2). indent < 0: one line; otherwise pretty-printed
 /// with that many spaces per level. Works for every model of bonl::Models, any Scalar, fixed or
 /// dynamic orders.
+/// \param model the model to write
+/// \param indent spaces per level; < 0: one line
+/// \return the model file's text (JSON)
 template <class Model>
 std::string to_json(const Model& model, int indent = -1) {
   using detail::Json;
@@ -434,6 +437,8 @@ std::string to_json(const Model& model, int indent = -1) {
 /// "bonl: model JSON: " and names the key at fault, for invalid JSON, another format, a newer
 /// version, another model kind, missing or unknown keys, orders out of range or different from the
 /// type's compile-time orders, arrays of the wrong length, non-finite numbers, b_0 or q_1 not 1, c < 0.
+/// \param text the model file's text (JSON)
+/// \return the model
 template <class Model>
 Model model_from_json(const std::string& text) {
   return detail::guard([&]() { return detail::model_from_document<Model>(detail::parse(text)); });
@@ -441,6 +446,8 @@ Model model_from_json(const std::string& text) {
 
 /// Reads a bonl model file of any kind, at run-time orders; the variant holds the kind the file
 /// names. Throws as model_from_json does.
+/// \param text the model file's text (JSON)
+/// \return the model, of the kind the file names
 inline AnyModel load_model(const std::string& text) {
   return detail::guard([&]() -> AnyModel {
     const detail::Json document = detail::parse(text);

@@ -111,6 +111,7 @@ using WithOrders = decltype(detail::ModelTemplate<Model>::template with_orders<T
 
 /// A model of type Model at the orders Table gives, its run-time orders too (nk = 8 from PaperOrders),
 /// each order Table does not name at its minimum: the structure of WithOrders<M, Table>, or of M.
+/// \return the model, all parameters at its constructor's values
 template <class Model, class Table>
 Model make_model_at() {
   constexpr auto& orders = Model::kDescription.orders;

@@ -36,6 +36,11 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   /// A model with the orders na >= 1, nb >= 1, nk >= 0, r >= 0 (degree of each segment of the input
   /// polynomial) and ni in 0..2, all parameters zero. Throws std::invalid_argument for an order out of
   /// range or one that differs from the compile-time order.
+  /// \param na poles of the linear block, >= 1
+  /// \param nb B has nb + 1 coefficients, b_0 = 1, >= 1
+  /// \param nk pure delay in samples, >= 0
+  /// \param r degree of each segment of the input polynomial, >= 0
+  /// \param ni integrators (poles fixed at 1), 0..2
   Hammerstein(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index ni = 0)
       : Front(na, nb, nk, r, 0, ni) {}
 
@@ -44,6 +49,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     return {this->na(), this->nb(), this->nk(), this->r(), this->ni()};
   }
   /// The parameter block kDescription.parameters[i]: b, a, f, p.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     if (i >= 4) detail::no_such_parameter(kName, i);
     return this->front_parameter(i);
@@ -54,14 +60,14 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     this->set_front_parameter(i, value);
   }
 
-  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
-  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     return this->simulate_front(u, y, this->linear_block(), [](Scalar x) { return x; });
   }
 
   /// Where the recursive estimator starts (all zero; c0 is only used by models with a backlash).
+  /// \return theta to start the recursion from
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form (eq. 14): y(k) = [basis(u(k-nk)), w lags, -x lags] . theta. The past x are the
@@ -70,6 +76,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   class KeyTerms {
    public:
     /// \copydoc ARX::KeyTerms::KeyTerms
+    /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const Hammerstein& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()), m_method(method),
           m_phi(Params::Zero(model.num_params())) {}

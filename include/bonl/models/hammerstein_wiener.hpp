@@ -46,16 +46,25 @@ class HammersteinWiener
   /// A model with the orders na >= 1, nb >= 1, nk >= 0, r >= 0, r1 in 2..32 (degree of the output
   /// polynomial) and ni in 0..2; the parameters zero but q_1 = 1. Throws std::invalid_argument for an
   /// order out of range or one that differs from the compile-time order.
+  /// \param na poles of the linear block, >= 1
+  /// \param nb B has nb + 1 coefficients, b_0 = 1, >= 1
+  /// \param nk pure delay in samples, >= 0
+  /// \param r degree of each segment of the input polynomial, >= 0
+  /// \param r1 degree of the output polynomial, 2..32
+  /// \param ni integrators (poles fixed at 1), 0..2
   HammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index r1,
                     Eigen::Index ni = 0)
       : Front(na, nb, nk, r, checked_r1(r1) - 1, ni), m_r1(r1) {}
 
-  Eigen::Index r1() const noexcept { return m_r1; }  ///< the order r1: degree of the output polynomial
+  /// The order r1: degree of the output polynomial
+  /// \return r1, 2..32
+  Eigen::Index r1() const noexcept { return m_r1; }
   /// \copydoc ARX::orders
   std::array<Eigen::Index, 6> orders() const noexcept {
     return {this->na(), this->nb(), this->nk(), this->r(), m_r1, this->ni()};
   }
   /// The parameter block kDescription.parameters[i]: b, a, f, p, q.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     if (i < Front::kFrontBlocks) return this->front_parameter(i);
     if (i == Front::kFrontBlocks) return this->q();
@@ -68,8 +77,7 @@ class HammersteinWiener
     detail::no_such_parameter(kName, i);
   }
 
-  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
-  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     const VectorX qv = this->q();
@@ -77,6 +85,7 @@ class HammersteinWiener
   }
 
   /// Where the recursive estimator starts (all zero; c0 is only used by models with a backlash).
+  /// \return theta to start the recursion from
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
 
   /// Key-term form: y(k) = x(k) + sum_{m>=2} q_m x(k)^m with x(k) the front's key-term expression,
@@ -87,6 +96,7 @@ class HammersteinWiener
   class KeyTerms {
    public:
     /// \copydoc ARX::KeyTerms::KeyTerms
+    /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const HammersteinWiener& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()),
           m_output(model.r1(), model.num_params()),

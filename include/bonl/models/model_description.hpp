@@ -94,6 +94,7 @@ struct TypeTag {
 /// \code
 /// for_each_model(Models{}, [](auto tag) { using Model = typename decltype(tag)::type; ... });
 /// \endcode
+/// \param f called once per model with its TypeTag; what it returns is discarded
 template <class... Models, class F>
 void for_each_model(ModelList<Models...>, F&& f) {
   (f(TypeTag<Models>{}), ...);
@@ -143,6 +144,8 @@ struct FilterModels<ModelList<First, Rest...>, P> {
 };
 
 /// A model of type Model at the given orders (its constructor, called with them in order).
+/// \param orders the orders in kDescription.orders' order
+/// \return the model, all parameters at its constructor's values
 template <class Model>
 Model make_model(const std::array<Eigen::Index, Model::kDescription.orders.size()>& orders) {
   return std::make_from_tuple<Model>(orders);

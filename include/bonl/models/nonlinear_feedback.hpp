@@ -114,8 +114,19 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   using Plays = PlayOperators<Scalar, Np_>;  ///< the play operators' type
   using Thresholds = typename Plays::Vector;  ///< the plays' thresholds (a vector, fixed size when np is)
 
-  /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) and the thresholds to i / (np + 1) (in the
-  /// units of s): set them where the feedback's slope changes and its loops turn.
+  /// A model with the given orders, all parameters zero but d_1 = 1. The knots default to
+  /// -floor(nh/2)..-1, 1..ceil(nh/2) and the thresholds to i / (np + 1) (in the units of s): set them
+  /// where the feedback's slope changes and its loops turn. Throws std::invalid_argument for an order
+  /// out of range or one that differs from the compile-time order.
+  /// \param na poles of the linear block, >= 1
+  /// \param nb B has nb + 1 coefficients, >= 0
+  /// \param nk pure delay in samples, >= 0
+  /// \param r degree of the feedback polynomial (f_2..f_r), 1..32
+  /// \param nh hinges of the feedback, 0..32
+  /// \param nd taps of the feedback's block D (d_1 = 1), 1..32
+  /// \param nv 0, the output is fed back; 1, its first difference
+  /// \param np play operators in the feedback, 0..32
+  /// \param ni integrators (poles fixed at 1), 0..2
   NonlinearFeedback(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index nh,
                     Eigen::Index nd, Eigen::Index nv, Eigen::Index np = 0, Eigen::Index ni = 0)
       : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_nh(nh), m_nd(nd), m_nv(nv), m_np(np), m_ni(ni) {
@@ -144,15 +155,25 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     m_thresholds = Plays::spread_thresholds(np);
   }
 
-  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
-  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
-  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
-  Eigen::Index r() const noexcept { return m_r; }  ///< the order r: degree of the feedback polynomial (f_2..f_r)
-  Eigen::Index nh() const noexcept { return m_nh; }  ///< the order nh: hinges of the feedback
-  Eigen::Index nd() const noexcept { return m_nd; }  ///< the order nd: taps of the feedback's block D (d_1 = 1)
-  Eigen::Index nv() const noexcept { return m_nv; }  ///< the order nv: 0, the output is fed back; 1, its first difference
-  Eigen::Index np() const noexcept { return m_np; }  ///< the order np: play operators in the feedback
-  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  /// \copydoc ARX::na
+  Eigen::Index na() const noexcept { return m_na; }
+  /// \copydoc ARX::nb
+  Eigen::Index nb() const noexcept { return m_nb; }
+  /// \copydoc ARX::nk
+  Eigen::Index nk() const noexcept { return m_nk; }
+  /// The order r: degree of the feedback polynomial (f_2..f_r)
+  /// \return r, 1..32
+  Eigen::Index r() const noexcept { return m_r; }
+  Eigen::Index nh() const noexcept { return m_nh; }  ///< the order nh: hinges of the feedback \return nh, 0..32
+  /// the order nd: taps of the feedback's block D (d_1 = 1)
+  /// \return nd, 1..32
+  Eigen::Index nd() const noexcept { return m_nd; }
+  /// The order nv: 0, the output is fed back; 1, its first difference
+  /// \return nv, 0 or 1
+  Eigen::Index nv() const noexcept { return m_nv; }
+  Eigen::Index np() const noexcept { return m_np; }  ///< the order np: play operators in the feedback \return np, 0..32
+  /// \copydoc ARX::ni
+  Eigen::Index ni() const noexcept { return m_ni; }
   /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   /// \copydoc ARX::orders
@@ -164,6 +185,9 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// approximation as the linear block. nonlinear_feedback_starts belongs to the estimator, a layer
   /// above the models (estimator/nonlinear_feedback_start.hpp, in <bonl/estimator.hpp>): found by
   /// argument-dependent lookup where identify() calls this.
+  /// \param structure the orders, knots and thresholds to start from
+  /// \param records the identification records (deviations from the operating point, as identify() hands them)
+  /// \return the starts, each a model with structure's orders, knots and thresholds
   template <class RecordList>
   static std::vector<NonlinearFeedback> identify_starts(const NonlinearFeedback& structure, const RecordList& records) {
     return nonlinear_feedback_starts(structure, records);
@@ -177,62 +201,70 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX b() const { return m_theta.head(m_nb + 1); }  ///< the numerator coefficients b_0..b_nb
-  VectorX a() const { return m_theta.segment(first_a(), m_na); }  ///< the denominator coefficients a_1..a_na
-  /// f_2..f_r.
+  /// \copydoc ARX::b
+  VectorX b() const { return m_theta.head(m_nb + 1); }
+  /// \copydoc ARX::a
+  VectorX a() const { return m_theta.segment(first_a(), m_na); }
+  /// The feedback polynomial's coefficients. \return f_2..f_r, r - 1 values
   VectorX f() const { return m_theta.segment(first_f(), m_r - 1); }
-  /// knots_1..knots_nh, strictly increasing, none at 0.
+  /// The hinges' knots. \return knots_1..knots_nh, strictly increasing, none at 0, in the units of s
   const Knots& knots() const noexcept { return m_knots; }
-  VectorX g() const { return m_theta.segment(first_g(), m_nh); }  ///< the hinges' weights g_1..g_nh
-  /// r_1..r_np, strictly increasing, > 0.
+  VectorX g() const { return m_theta.segment(first_g(), m_nh); }  ///< the hinges' weights g_1..g_nh \return nh values
+  /// The plays' thresholds. \return r_1..r_np, strictly increasing, > 0, in the units of s
   const Thresholds& thresholds() const noexcept { return m_thresholds; }
-  /// w_1..w_np.
+  /// The plays' weights. \return w_1..w_np
   VectorX w() const { return m_theta.segment(first_w(), m_np); }
-  /// d_1..d_nd with d_1 = 1.
+  /// The feedback's block D. \return d_1..d_nd with d_1 = 1
   VectorX d() const {
     VectorX out(m_nd);
     out[0] = Scalar(1);
     out.tail(m_nd - 1) = m_theta.segment(first_d(), m_nd - 1);
     return out;
   }
-  /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
+  /// \copydoc ARX::set_b
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
   }
-  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
+  /// \copydoc ARX::set_a
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.segment(first_a(), m_na), a, "a");
   }
   /// Sets f_2..f_r (r - 1 finite values, else std::invalid_argument).
+  /// \param f f_2..f_r
   template <typename T>
   void set_f(const Eigen::MatrixBase<T>& f) {
     detail::assign_checked(m_theta.segment(first_f(), m_r - 1), f, "f");
   }
   /// Where the slope changes: strictly increasing, none at 0 (f has slope 0 at 0).
+  /// \param knots knots_1..knots_nh, in the units of s
   template <typename T>
   void set_knots(const Eigen::MatrixBase<T>& knots) {
     detail::HingeTerms<Scalar, Nh_>::require_valid(knots, m_nh, "the feedback has slope 0 at 0");
     m_knots = knots;
   }
   /// Sets the hinges' weights g_1..g_nh (nh finite values, else std::invalid_argument).
+  /// \param g g_1..g_nh
   template <typename T>
   void set_g(const Eigen::MatrixBase<T>& g) {
     detail::assign_checked(m_theta.segment(first_g(), m_nh), g, "g");
   }
   /// Where the plays' loops turn: strictly increasing, > 0 (in the units of s).
+  /// \param thresholds r_1..r_np, in the units of s
   template <typename T>
   void set_thresholds(const Eigen::MatrixBase<T>& thresholds) {
     Plays::require_valid(thresholds, m_np);
     m_thresholds = thresholds;
   }
   /// Sets the plays' weights w_1..w_np (np finite values, else std::invalid_argument).
+  /// \param w w_1..w_np
   template <typename T>
   void set_w(const Eigen::MatrixBase<T>& w) {
     detail::assign_checked(m_theta.segment(first_w(), m_np), w, "w");
   }
   /// Sets d_1..d_nd: nd finite values with d_1 = 1 (the normalisation), else std::invalid_argument.
+  /// \param d d_1..d_nd
   template <typename T>
   void set_d(const Eigen::MatrixBase<T>& d) {
     detail::require_size(d, m_nd, "d");
@@ -242,6 +274,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   }
 
   /// The parameter block kDescription.parameters[i]: b, a, f, knots, g, thresholds, w, d.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b();
@@ -270,8 +303,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     }
   }
 
-  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
-  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     const Feedback feedback(*this);
@@ -300,6 +332,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   }
 
   /// Where the recursive estimator starts (all zero: no feedback, d = 1, 0, ..., 0).
+  /// \return theta to start the recursion from
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
@@ -537,6 +570,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
       m_dy.col(0) = m_psi;
     }
     /// After the estimate moved by delta: the stored outputs to first order (as SimulatedLags does).
+    /// \param delta the change of theta since the step just accepted
     void correct(const Params& delta) noexcept {
       for (Eigen::Index j = 0; j < m_y.size(); ++j) m_y[j] += m_dy.col(j).dot(delta);
       for (Eigen::Index j = 0; j < m_z.size(); ++j) m_z[j] += m_dz.col(j).dot(delta);

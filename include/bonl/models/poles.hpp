@@ -18,6 +18,8 @@
 namespace bonl {
 
 /// The roots of z^na + a_1 z^(na-1) + ... + a_na (the poles of 1 / A(z^-1)).
+/// \param a a_1..a_na
+/// \return the na poles, complex
 template <typename A>
 Eigen::Matrix<std::complex<typename A::Scalar>, Eigen::Dynamic, 1> denominator_poles(const Eigen::MatrixBase<A>& a) {
   using Scalar = typename A::Scalar;
@@ -65,6 +67,8 @@ void set_denominator(Model& model, std::size_t i, const A& a) {
 
 /// The largest pole magnitude of `model`'s linear blocks: < 1 stable, >= 1 not; near 1 barely damped.
 /// Infinity where the coefficients are not finite.
+/// \param model any model of the list
+/// \return the largest |pole| over the linear blocks' denominators (integrators' poles at 1 not included)
 template <class Model>
 double pole_radius(const Model& model) {
   double radius = 0.0;

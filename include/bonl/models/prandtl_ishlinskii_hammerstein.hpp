@@ -95,6 +95,12 @@ class PrandtlIshlinskiiHammerstein
   /// order out of range or one that differs from the compile-time order.
   /// The thresholds default to r_i = i / (np + 1) (in the units of u, from the operating point): set
   /// them where the hysteresis turns, or let identify() place them from the data.
+  /// \param na poles of the linear block, >= 1
+  /// \param nb B has nb + 1 coefficients, >= 0
+  /// \param nk pure delay in samples, >= 0
+  /// \param r degree of the input polynomial, >= 1
+  /// \param np play operators, 1..32
+  /// \param ni integrators (poles fixed at 1), 0..2
   PrandtlIshlinskiiHammerstein(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index np,
                                Eigen::Index ni = 0)
       : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_np(np), m_ni(ni) {
@@ -113,12 +119,20 @@ class PrandtlIshlinskiiHammerstein
     m_thresholds = Plays::spread_thresholds(np);
   }
 
-  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
-  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
-  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
-  Eigen::Index r() const noexcept { return m_r; }  ///< the order r: degree of the input polynomial (f_0..f_r)
-  Eigen::Index np() const noexcept { return m_np; }  ///< the order np: play operators of the input hysteresis
-  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  /// \copydoc ARX::na
+  Eigen::Index na() const noexcept { return m_na; }
+  /// \copydoc ARX::nb
+  Eigen::Index nb() const noexcept { return m_nb; }
+  /// \copydoc ARX::nk
+  Eigen::Index nk() const noexcept { return m_nk; }
+  /// The order r: degree of the input polynomial (f_0..f_r)
+  /// \return r, >= 1
+  Eigen::Index r() const noexcept { return m_r; }
+  /// The order np: play operators of the input hysteresis
+  /// \return np, 1..32
+  Eigen::Index np() const noexcept { return m_np; }
+  /// \copydoc ARX::ni
+  Eigen::Index ni() const noexcept { return m_ni; }
   /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   /// \copydoc ARX::orders
@@ -132,45 +146,55 @@ class PrandtlIshlinskiiHammerstein
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX f() const { return m_theta.head(m_r + 1); }  ///< the input polynomial's coefficients f_0..f_r
+  /// The input polynomial's coefficients f_0..f_r
+  /// \return r + 1 values
+  VectorX f() const { return m_theta.head(m_r + 1); }
   /// The input hysteresis w = f(u) + g . plays[u], its plays at rest: what the free run steps and
   /// the inverse for control (control/prandtl_ishlinskii_inverse.hpp) inverts.
+  /// \return the block, a copy with this model's f, thresholds and g
   InputBlock input_block() const { return InputBlock(f(), m_thresholds, g()); }
-  /// The plays' thresholds r_1..r_np: strictly increasing, > 0 (structure, not estimated).
+  /// The plays' thresholds (structure, not estimated). \return r_1..r_np, strictly increasing, > 0,
+  /// in the units of u
   const Thresholds& thresholds() const noexcept { return m_thresholds; }
-  VectorX g() const { return m_theta.segment(m_r + 1, m_np); }  ///< the plays' weights g_1..g_np
-  /// b_0..b_nb; b_0 is 1 (the key-term normalisation).
+  VectorX g() const { return m_theta.segment(m_r + 1, m_np); }  ///< the plays' weights g_1..g_np \return np values
+  /// The numerator coefficients. \return b_0..b_nb; b_0 is 1 (the key-term normalisation)
   VectorX b() const { return detail::normalised_b<VectorX>(m_theta.segment(basis_size(), m_nb)); }
-  VectorX a() const { return m_theta.segment(basis_size() + m_nb, m_na); }  ///< the denominator coefficients a_1..a_na
+  /// \copydoc ARX::a
+  VectorX a() const { return m_theta.segment(basis_size() + m_nb, m_na); }
 
   /// Sets f_0..f_r (r + 1 finite values, else std::invalid_argument).
+  /// \param f f_0..f_r
   template <typename T>
   void set_f(const Eigen::MatrixBase<T>& f) {
     detail::assign_checked(m_theta.head(m_r + 1), f, "f");
   }
   /// The plays' thresholds: np of them, finite, > 0, strictly increasing (PlayOperators::require_valid).
+  /// \param thresholds r_1..r_np, in the units of u
   template <typename T>
   void set_thresholds(const Eigen::MatrixBase<T>& thresholds) {
     Plays::require_valid(thresholds, m_np);
     m_thresholds = thresholds;
   }
   /// Sets g_1..g_np (np finite values, else std::invalid_argument).
+  /// \param g g_1..g_np
   template <typename T>
   void set_g(const Eigen::MatrixBase<T>& g) {
     detail::assign_checked(m_theta.segment(m_r + 1, m_np), g, "g");
   }
   /// b_0..b_nb with b_0 = 1.
+  /// \param b b_0..b_nb, nb + 1 finite values with b_0 = 1
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_normalised_b(b, m_theta.segment(basis_size(), m_nb));
   }
-  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
+  /// \copydoc ARX::set_a
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.segment(basis_size() + m_nb, m_na), a, "a");
   }
 
   /// The parameter block kDescription.parameters[i]: b, a, f, thresholds, g.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b();
@@ -197,14 +221,16 @@ class PrandtlIshlinskiiHammerstein
   /// the data rule (PlayOperators::spread_thresholds over the records' inputs), estimated from there.
   /// prandtl_ishlinskii_starts belongs to the estimator, a layer above the models
   /// (estimator/play_thresholds.hpp, in <bonl/estimator.hpp>): found by argument-dependent lookup.
+  /// \param structure the orders (and the structure's other settings) to start from
+  /// \param records the identification records (deviations from the operating point, as identify() hands them)
+  /// \return the starts, each with structure's orders
   template <class RecordList>
   static std::vector<PrandtlIshlinskiiHammerstein> identify_starts(const PrandtlIshlinskiiHammerstein& structure,
                                                                    const RecordList& records) {
     return prandtl_ishlinskii_starts(structure, records);
   }
 
-  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
-  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     InputBlock block = input_block();
@@ -213,6 +239,7 @@ class PrandtlIshlinskiiHammerstein
   }
 
   /// Where the recursive estimator starts (all zero).
+  /// \return theta to start the recursion from
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
@@ -272,6 +299,7 @@ class PrandtlIshlinskiiHammerstein
   class KeyTerms {
    public:
     /// \copydoc ARX::KeyTerms::KeyTerms
+    /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const PrandtlIshlinskiiHammerstein& model, KeyTermMethod method)
         : m_basis(model), m_w(model.nb()), m_z(model.na()), m_integrators(model.ni()), m_method(method),
           m_nb(model.nb()), m_na(model.na()), m_phi(Params::Zero(model.num_params())) {}

@@ -41,6 +41,11 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   /// A model with the orders na >= 1, nb >= 1, nk >= 0, r >= 0 and ni in 0..2, all parameters zero
   /// (c = 0 included). Throws std::invalid_argument for an order out of range or one that differs from
   /// the compile-time order.
+  /// \param na poles of the linear block, >= 1
+  /// \param nb B has nb + 1 coefficients, b_0 = 1, >= 1
+  /// \param nk pure delay in samples, >= 0
+  /// \param r degree of each segment of the input polynomial, >= 0
+  /// \param ni integrators (poles fixed at 1), 0..2
   PseudoHammersteinWiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index ni = 0)
       : Front(na, nb, nk, r, 1, ni) {}
 
@@ -49,6 +54,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     return {this->na(), this->nb(), this->nk(), this->r(), this->ni()};
   }
   /// The parameter block kDescription.parameters[i]: b, a, f, p, c (one entry).
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     if (i < Front::kFrontBlocks) return this->front_parameter(i);
     if (i == Front::kFrontBlocks) return VectorX::Constant(1, c());
@@ -65,18 +71,22 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   }
 
   /// Backlash half-width c (the model is valid for c >= 0).
+  /// \return the last entry of theta, c; a negative value is possible in an unprojected estimate
   Scalar c() const noexcept { return this->m_theta[this->num_params() - 1]; }
   /// Sets the backlash half-width; throws std::invalid_argument unless c is finite and >= 0.
+  /// \param c the half-width, in the output's units
   void set_c(Scalar c) {
     detail::require(std::isfinite(c) && c >= Scalar(0), "c (backlash half-width) must be finite and >= 0");
     this->m_theta[this->num_params() - 1] = c;
   }
   /// The backlash block with the half-width c (a negative c, possible in an estimate before it is
   /// projected, counts as 0).
+  /// \return a Backlash with half-width max(c, 0), at rest
   Backlash<Scalar> backlash() const { return Backlash<Scalar>(std::max(c(), Scalar(0))); }
 
   /// All parameters in the order of eq. (19); c, the last, must be >= 0 as for set_c (an estimate
   /// with c < 0 is projected first: Estimator::model() does that).
+  /// \param theta the new parameter vector, num_params() entries
   template <typename T>
   void set_theta(const Eigen::MatrixBase<T>& theta) {
     detail::require_size(theta, this->num_params(), "theta");
@@ -86,8 +96,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     Front::set_theta(theta);
   }
 
-  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
-  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     Backlash<Scalar> play = backlash();
@@ -95,12 +104,15 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   }
 
   /// Projects an estimate onto the model's valid set: c >= 0.
+  /// \param theta the estimate, its c raised to 0 when negative
   void constrain(Params& theta) const noexcept {
     Scalar& c = theta[this->num_params() - 1];
     if (c < Scalar(0)) c = Scalar(0);
   }
 
   /// Zero, but c = c0 (the paper starts from c(0) = 0.01).
+  /// \param c0 the backlash half-width to start from
+  /// \return theta to start the recursion from
   Params initial_estimate(Scalar c0) const {
     Params theta = Params::Zero(this->num_params());
     theta[this->num_params() - 1] = c0;
@@ -116,6 +128,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   class KeyTerms {
    public:
     /// \copydoc ARX::KeyTerms::KeyTerms
+    /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const PseudoHammersteinWiener& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()), m_method(method),
           m_last(model.num_params() - 1), m_phi(Params::Zero(model.num_params())) {}
@@ -181,6 +194,7 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   class OutputErrorTerms {
    public:
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
+    /// \param hold the number of first samples after a start from rest for which c is held
     explicit OutputErrorTerms(const PseudoHammersteinWiener& model, Eigen::Index hold = 0)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_last(model.num_params() - 1),
           m_psi(Params::Zero(model.num_params())), m_dy(m_psi), m_hold(hold) {}

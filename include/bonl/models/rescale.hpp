@@ -14,6 +14,10 @@ namespace bonl {
 
 /// The model of y = output_scale * model(u / input_scale), its operating point and input range included. Both scales
 /// must be finite and > 0.
+/// \param model the model M, in the scaled units
+/// \param input_scale su: the returned model feeds u / su to M
+/// \param output_scale sy: the returned model's output is sy times M's
+/// \return a copy of model with its parameters in the unscaled units
 template <class Model>
 Model rescaled(const Model& model, double input_scale, double output_scale) {
   detail::require(std::isfinite(input_scale) && input_scale > 0.0,

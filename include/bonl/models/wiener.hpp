@@ -67,6 +67,11 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   /// A model with the orders na >= 1, nb >= 0, nk >= 0, r1 in 2..32 (degree of the output polynomial)
   /// and ni in 0..2; the parameters zero but q_1 = 1. Throws std::invalid_argument for an order out of
   /// range or one that differs from the compile-time order.
+  /// \param na poles of the linear block, >= 1
+  /// \param nb B has nb + 1 coefficients, >= 0
+  /// \param nk pure delay in samples, >= 0
+  /// \param r1 degree of the output polynomial, 2..32
+  /// \param ni integrators (poles fixed at 1), 0..2
   Wiener(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r1, Eigen::Index ni = 0)
       : m_na(na), m_nb(nb), m_nk(nk), m_r1(r1), m_ni(ni) {
     detail::require_order(na, 1, "na");
@@ -81,11 +86,17 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     m_theta = Params::Zero(nb + 1 + na + r1 - 1);
   }
 
-  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
-  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
-  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
-  Eigen::Index r1() const noexcept { return m_r1; }  ///< the order r1: degree of the output polynomial
-  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  /// \copydoc ARX::na
+  Eigen::Index na() const noexcept { return m_na; }
+  /// \copydoc ARX::nb
+  Eigen::Index nb() const noexcept { return m_nb; }
+  /// \copydoc ARX::nk
+  Eigen::Index nk() const noexcept { return m_nk; }
+  /// The order r1: degree of the output polynomial
+  /// \return r1, 2..32
+  Eigen::Index r1() const noexcept { return m_r1; }
+  /// \copydoc ARX::ni
+  Eigen::Index ni() const noexcept { return m_ni; }
   /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   /// \copydoc ARX::orders
@@ -99,20 +110,24 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX b() const { return m_theta.head(m_nb + 1); }  ///< the numerator coefficients b_0..b_nb (b_0 free)
-  VectorX a() const { return m_theta.segment(m_nb + 1, m_na); }  ///< the denominator coefficients a_1..a_na
-  /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
+  /// The numerator coefficients b_0..b_nb (b_0 free)
+  /// \return nb + 1 values
+  VectorX b() const { return m_theta.head(m_nb + 1); }
+  /// \copydoc ARX::a
+  VectorX a() const { return m_theta.segment(m_nb + 1, m_na); }
+  /// \copydoc ARX::set_b
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
   }
-  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
+  /// \copydoc ARX::set_a
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.segment(m_nb + 1, m_na), a, "a");
   }
 
   /// The parameter block kDescription.parameters[i]: b, a, q.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     if (i == 0) return b();
     if (i == 1) return a();
@@ -127,8 +142,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     detail::no_such_parameter(kName, i);
   }
 
-  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
-  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     const VectorX qv = this->q();
@@ -137,6 +151,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   }
 
   /// Where the recursive estimator starts (all zero).
+  /// \return theta to start the recursion from
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
@@ -150,6 +165,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   class KeyTerms {
    public:
     /// \copydoc ARX::KeyTerms::KeyTerms
+    /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const Wiener& model, KeyTermMethod method)
         : m_linear(model.na(), model.nb(), model.nk(), model.ni()), m_output(model.r1(), model.num_params()), m_method(method),
           m_linear_size(model.nb() + 1 + model.na()), m_phi(Params::Zero(model.num_params())) {}

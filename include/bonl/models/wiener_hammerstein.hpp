@@ -98,8 +98,18 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
 
   using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;  ///< the hinges' knots (a vector, fixed size when nh is)
 
-  /// The knots default to -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of x1, which are y's): set
-  /// them where the slope changes, or let identify() place them from the data.
+  /// A model with the given orders, all parameters zero but f_1 = 1 and b2_0 = 1. The knots default to
+  /// -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of x1, which are y's): set them where the slope
+  /// changes, or let identify() place them from the data. Throws std::invalid_argument for an order
+  /// out of range or one that differs from the compile-time order.
+  /// \param na1 poles of the first linear block, >= 1
+  /// \param nb1 B1 has nb1 + 1 coefficients, >= 0
+  /// \param nk pure delay in samples, >= 0
+  /// \param r degree of the static polynomial (f_1 = 1 .. f_r), 1..32
+  /// \param nh hinges of the static nonlinearity, 0..32
+  /// \param na2 poles of the second linear block, >= 1
+  /// \param nb2 B2 has nb2 + 1 coefficients, b2_0 = 1, >= 0
+  /// \param ni integrators of the second block (poles fixed at 1), 0..2
   WienerHammerstein(Eigen::Index na1, Eigen::Index nb1, Eigen::Index nk, Eigen::Index r, Eigen::Index nh,
                     Eigen::Index na2, Eigen::Index nb2, Eigen::Index ni = 0)
       : m_na1(na1), m_nb1(nb1), m_nk(nk), m_r(r), m_nh(nh), m_na2(na2), m_nb2(nb2), m_ni(ni) {
@@ -123,15 +133,25 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     m_knots = detail::HingeTerms<Scalar, Nh_>::default_knots(nh);
   }
 
-  Eigen::Index na1() const noexcept { return m_na1; }  ///< the order na1: poles of the first linear block
-  Eigen::Index nb1() const noexcept { return m_nb1; }  ///< the order nb1: B1 has nb1 + 1 coefficients b1_0..b1_nb1
+  /// The order na1: poles of the first linear block
+  /// \return na1, >= 1
+  Eigen::Index na1() const noexcept { return m_na1; }
+  /// The order nb1: B1 has nb1 + 1 coefficients b1_0..b1_nb1
+  /// \return nb1, >= 0
+  Eigen::Index nb1() const noexcept { return m_nb1; }
   /// \copydoc ARX::nk
   Eigen::Index nk() const noexcept { return m_nk; }
-  Eigen::Index r() const noexcept { return m_r; }  ///< the order r: degree of the static polynomial (f_1 = 1 .. f_r)
-  Eigen::Index nh() const noexcept { return m_nh; }  ///< the order nh: hinges of the static nonlinearity
-  Eigen::Index na2() const noexcept { return m_na2; }  ///< the order na2: poles of the second linear block
-  Eigen::Index nb2() const noexcept { return m_nb2; }  ///< the order nb2: B2 has nb2 + 1 coefficients, b2_0 = 1
-  /// The integrators of the second block, the one at the output.
+  /// The order r: degree of the static polynomial (f_1 = 1 .. f_r)
+  /// \return r, 1..32
+  Eigen::Index r() const noexcept { return m_r; }
+  /// The order nh: hinges of the static nonlinearity. \return nh, 0..32
+  Eigen::Index nh() const noexcept { return m_nh; }
+  /// The order na2: poles of the second linear block. \return na2, >= 1
+  Eigen::Index na2() const noexcept { return m_na2; }
+  /// The order nb2: B2 has nb2 + 1 coefficients, b2_0 = 1
+  /// \return nb2, >= 0
+  Eigen::Index nb2() const noexcept { return m_nb2; }
+  /// The integrators of the second block, the one at the output. \return ni, 0..2
   Eigen::Index ni() const noexcept { return m_ni; }
   /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
@@ -148,55 +168,69 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX b1() const { return m_theta.head(m_nb1 + 1); }  ///< the first block's numerator b1_0..b1_nb1 (the gain lives here)
-  VectorX a1() const { return m_theta.segment(first_a(), m_na1); }  ///< the first block's denominator a1_1..a1_na1
-  /// f_1..f_r with f_1 = 1.
+  /// The first block's numerator b1_0..b1_nb1 (the gain lives here)
+  /// \return nb1 + 1 values
+  VectorX b1() const { return m_theta.head(m_nb1 + 1); }
+  /// The first block's denominator a1_1..a1_na1
+  /// \return na1 values
+  VectorX a1() const { return m_theta.segment(first_a(), m_na1); }
+  /// The static polynomial's coefficients. \return f_1..f_r with f_1 = 1
   VectorX f() const { return with_leading_one(m_theta.segment(first_f(), m_r - 1)); }
-  /// knots_1..knots_nh, strictly increasing, none at 0.
+  /// The hinges' knots. \return knots_1..knots_nh, strictly increasing, none at 0, in the units of x1
   const Knots& knots() const noexcept { return m_knots; }
-  VectorX g() const { return m_theta.segment(first_g(), m_nh); }  ///< the hinges' weights g_1..g_nh
-  /// b2_0..b2_nb2 with b2_0 = 1.
+  VectorX g() const { return m_theta.segment(first_g(), m_nh); }  ///< the hinges' weights g_1..g_nh \return nh values
+  /// The second block's numerator. \return b2_0..b2_nb2 with b2_0 = 1
   VectorX b2() const { return with_leading_one(m_theta.segment(first_b2(), m_nb2)); }
-  VectorX a2() const { return m_theta.segment(first_a2(), m_na2); }  ///< the second block's denominator a2_1..a2_na2
+  /// The second block's denominator a2_1..a2_na2
+  /// \return na2 values
+  VectorX a2() const { return m_theta.segment(first_a2(), m_na2); }
   /// Sets b1_0..b1_nb1 (nb1 + 1 finite values, else std::invalid_argument).
+  /// \param b1 b1_0..b1_nb1
   template <typename T>
   void set_b1(const Eigen::MatrixBase<T>& b1) {
     detail::assign_checked(m_theta.head(m_nb1 + 1), b1, "b1");
   }
   /// Sets a1_1..a1_na1 (na1 finite values, else std::invalid_argument).
+  /// \param a1 a1_1..a1_na1
   template <typename T>
   void set_a1(const Eigen::MatrixBase<T>& a1) {
     detail::assign_checked(m_theta.segment(first_a(), m_na1), a1, "a1");
   }
   /// Sets f_1..f_r: r finite values with f_1 = 1 (the normalisation), else std::invalid_argument.
+  /// \param f f_1..f_r
   template <typename T>
   void set_f(const Eigen::MatrixBase<T>& f) {
     set_normalised(f, m_r, first_f(), "f", "f[0] (f_1)", 2);
   }
   /// Where the slope changes: strictly increasing, none at 0 (the slope at 0 is f_1 = 1).
+  /// \param knots knots_1..knots_nh, in the units of x1
   template <typename T>
   void set_knots(const Eigen::MatrixBase<T>& knots) {
     detail::HingeTerms<Scalar, Nh_>::require_valid(knots, m_nh, "the slope at 0 is f_1 = 1");
     m_knots = knots;
   }
   /// Sets the hinges' weights g_1..g_nh (nh finite values, else std::invalid_argument).
+  /// \param g g_1..g_nh
   template <typename T>
   void set_g(const Eigen::MatrixBase<T>& g) {
     detail::assign_checked(m_theta.segment(first_g(), m_nh), g, "g");
   }
   /// Sets b2_0..b2_nb2: nb2 + 1 finite values with b2_0 = 1 (the normalisation), else
   /// std::invalid_argument.
+  /// \param b2 b2_0..b2_nb2
   template <typename T>
   void set_b2(const Eigen::MatrixBase<T>& b2) {
     set_normalised(b2, m_nb2 + 1, first_b2(), "b2", "b2[0] (b2_0)", 5);
   }
   /// Sets a2_1..a2_na2 (na2 finite values, else std::invalid_argument).
+  /// \param a2 a2_1..a2_na2
   template <typename T>
   void set_a2(const Eigen::MatrixBase<T>& a2) {
     detail::assign_checked(m_theta.segment(first_a2(), m_na2), a2, "a2");
   }
 
   /// The parameter block kDescription.parameters[i]: b1, a1, f, knots, g, b2, a2.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b1();
@@ -227,12 +261,16 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// approximation. wiener_hammerstein_starts belongs to the estimator, a layer above the models
   /// (estimator/wiener_hammerstein_start.hpp, in <bonl/estimator.hpp>): found by argument-dependent
   /// lookup where identify() calls this.
+  /// \param structure the orders (and the structure's other settings) to start from
+  /// \param records the identification records (deviations from the operating point, as identify() hands them)
+  /// \return the starts, each with structure's orders and knots
   template <class RecordList>
   static std::vector<WienerHammerstein> identify_starts(const WienerHammerstein& structure, const RecordList& records) {
     return wiener_hammerstein_starts(structure, records);
   }
 
   /// The first linear block B1/A1, with the delay, at rest.
+  /// \return a copy, with this model's b1, a1 and nk
   First first_block() const {
     First block(m_na1, m_nb1, m_nk);
     block.set_a(a1());
@@ -240,6 +278,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     return block;
   }
   /// The second linear block B2/A2, with the integrators, at rest.
+  /// \return a copy, with this model's b2, a2 and ni
   Second second_block() const {
     Second block(m_na2, m_nb2, 0, m_ni);
     block.set_a(a2());
@@ -247,17 +286,20 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     return block;
   }
   /// The denominator of linear block i (0: a1, 1: a2), for the stabilisation that works on each block.
+  /// \param i 0 for the first block, else the second
+  /// \return a1_1..a1_na1 or a2_1..a2_na2
   VectorX denominator(std::size_t i) const { return i == 0 ? a1() : a2(); }
   /// Sets the denominator of linear block i (0: a1, else a2); throws std::invalid_argument for a wrong
   /// length or a non-finite entry.
+  /// \param i 0 for the first block, else the second
+  /// \param a the block's na1 or na2 denominator coefficients
   template <typename T>
   void set_denominator(std::size_t i, const Eigen::MatrixBase<T>& a) {
     if (i == 0) return set_a1(a);
     set_a2(a);
   }
 
-  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
-  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     First first = first_block();
@@ -274,6 +316,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   }
 
   /// Where the recursive estimator starts (all zero).
+  /// \return theta to start the recursion from
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
@@ -336,6 +379,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   class KeyTerms {
    public:
     /// \copydoc ARX::KeyTerms::KeyTerms
+    /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
         : m_first(model.na1(), model.nb1(), model.nk()),
           m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_integrators(model.ni()), m_method(method),

@@ -54,25 +54,34 @@ struct Parameters {
   double sensor_noise = 2e-4;          ///< sigma_theta, inclinometer noise (standard deviation) [rad]
 
   /// The 20 t excavator's stick cylinder (the defaults above).
+  /// \return the parameters
   static Parameters excavator_20t() { return Parameters{}; }
   /// The 5-6 t machine of plant.md.
+  /// \return the parameters
   static Parameters excavator_5t();
 
   /// Throws std::invalid_argument naming the first non-physical parameter.
   void validate() const;
 
-  double head_area() const;     ///< A1 [m^2]
-  double annulus_area() const;  ///< A2 [m^2]
-  double flow_gain() const;     ///< Kq = Cd w xv_max sqrt(2 / rho)
-  double valve_gain() const;    ///< kv = 1 / (V0 - d): a full command opens the spool fully
+  double head_area() const;     ///< A1 [m^2] \return A1 [m^2]
+  double annulus_area() const;  ///< A2 [m^2] \return A2 [m^2]
+  double flow_gain() const;     ///< Kq = Cd w xv_max sqrt(2 / rho) \return Kq [m^3/(s sqrt(Pa))]
+  double valve_gain() const;    ///< kv = 1 / (V0 - d): a full command opens the spool fully \return kv [1/V]
   /// Linkage angle phi at piston position h (the law of cosines) [rad].
+  /// \param h the piston position [m]
+  /// \return phi [rad]
   double linkage_angle(double h) const;
   /// phi0: the angle zero, phi at mid-stroke.
+  /// \return phi0 [rad]
   double angle_offset() const { return linkage_angle(0.5 * stroke); }
   /// Joint angle theta = phi(h) - phi0 [rad].
+  /// \param h the piston position [m]
+  /// \return theta [rad]
   double joint_angle(double h) const { return linkage_angle(h) - angle_offset(); }
   /// Moment arm r(h) = a b sin(phi) / l [m], so that dtheta/dt = v / r; the geometry is taken at h
   /// clamped to [0, stroke], as in the force model (outside only inside an end stop).
+  /// \param h the piston position [m]
+  /// \return r [m]
   double moment_arm(double h) const;
 };
 

@@ -73,10 +73,15 @@ struct Trajectory {
 class CvodeError : public NumericalError {
  public:
   /// The error message, CVODE's return flag and the time [s] it had reached.
+  /// \param message what failed
+  /// \param flag CVODE's return flag
+  /// \param time the simulated time reached [s]
   CvodeError(const std::string& message, int flag, double time)
       : NumericalError(message), m_flag(flag), m_time(time) {}
-  int flag() const noexcept { return m_flag; }  ///< CVODE's return flag
-  double time() const noexcept { return m_time; }  ///< the simulated time [s] reached when CVODE failed
+  int flag() const noexcept { return m_flag; }  ///< CVODE's return flag \return the flag, < 0
+  /// The simulated time [s] reached when CVODE failed
+  /// \return the time [s]
+  double time() const noexcept { return m_time; }
 
  private:
   int m_flag;
@@ -93,19 +98,34 @@ struct State {
 };
 /// Initial state of plant.md's experiment at piston position h0 = position [m]: at rest, spool
 /// closed, p2 = ps / 4, p1 from the force balance A1 p1 = A2 p2 + Fs(h0).
+/// \param parameters the plant
+/// \param position h0 [m]
+/// \return the state at t = 0
 State initial_state(const Parameters& parameters, double position);
 
 /// Right-hand side of the plant's ODE for a held pilot output xc and load F_L: d(state)/dt.
 /// Exposed so that tests can check it against an independent integrator.
+/// \param parameters the plant
+/// \param state the state
+/// \param pilot the pilot stage's output xc [-]
+/// \param load the external load F_L [N]
+/// \return the state's time derivative, each entry in its unit per second
 State derivative(const Parameters& parameters, const State& state, double pilot, double load);
 
 /// Spring (gravity) force at the rod, Fs(h) = m_dcg g cos(theta + theta_g) / r(h) [N].
+/// \param parameters the plant
+/// \param position h [m]
+/// \return Fs [N]
 double gravity_force(const Parameters& parameters, double position);
 
 /// Integrates the plant under `command`. Validates parameters and options (std::invalid_argument);
 /// a CVODE failure throws CvodeError with CVODE's flag and the time reached. Sample k is the state
 /// at t_k with the command V(t_k) and the pilot output after it; a SteppingPlant stepped with the
 /// command held over each sample gives the same samples.
+/// \param parameters the plant
+/// \param command V(t) [V]
+/// \param options the duration, grids, tolerances, load, noise and initial position
+/// \return every variable on the output grid
 Trajectory simulate(const Parameters& parameters, const Command& command, const SimulationOptions& options = {});
 
 }  // namespace bonl::plant

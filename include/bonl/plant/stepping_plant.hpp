@@ -55,25 +55,33 @@ class SteppingPlant {
  public:
   /// Validates the parameters and the options (std::invalid_argument naming them) and starts at
   /// t = 0 from rest at options.initial_position (negative: mid-stroke).
+  /// \param parameters the plant
+  /// \param options the grids, tolerances, load, noise and initial position (its duration is not used)
   explicit SteppingPlant(const Parameters& parameters, const SimulationOptions& options = {});
   SteppingPlant(const SteppingPlant&) = delete;
   SteppingPlant& operator=(const SteppingPlant&) = delete;
   SteppingPlant(SteppingPlant&&) noexcept;  ///< movable (the CVODE state moves with it), not copyable
-  SteppingPlant& operator=(SteppingPlant&&) noexcept;  ///< movable, not copyable
+  SteppingPlant& operator=(SteppingPlant&&) noexcept;  ///< movable, not copyable \return *this
   ~SteppingPlant();
 
   /// Holds `command` [V] over one sample and returns the measurement at the sample's end. A
   /// non-finite command throws std::invalid_argument and leaves the plant as it was (so does a load
   /// that is not finite on the sample's first 4096 command-grid points). A CVODE failure throws
   /// CvodeError and leaves the plant failed: step() then throws std::logic_error until reset().
+  /// \param command V over [t_k, t_{k+1}) [V]
+  /// \return the measurement at t_{k+1}
   Measurement step(double command);
 
   /// Back to rest at t = 0 with options().initial_position and options().noise_seed: the same
   /// measurements again for the same commands.
+  /// \return the measurement at t = 0
   Measurement reset();
   /// Back to rest at t = 0 at `initial_position` [m] (negative: mid-stroke) with `noise_seed`; both
   /// become the options' for later resets. A bad position throws std::invalid_argument and changes
   /// nothing.
+  /// \param initial_position h0 [m]
+  /// \param noise_seed the sensor noise's seed
+  /// \return the measurement at t = 0
   Measurement reset(double initial_position, std::uint64_t noise_seed);
 
   /// The plant changes from the current sample on, as a machine's does in service (the oil warms and
@@ -83,13 +91,22 @@ class SteppingPlant {
   /// (stroke, pivot_to_rod_pin, pivot_to_base_pin, retracted_length) must stay as it is: another
   /// linkage is another machine. Non-physical parameters or a changed geometry throw
   /// std::invalid_argument naming them and change nothing. Later reset()s keep the new parameters.
+  /// \param parameters the plant from now on
   void set_parameters(const Parameters& parameters);
 
-  const Measurement& measurement() const;  ///< the latest: at time()
-  double time() const;                     ///< t_k [s]
-  long steps() const;                      ///< CVODE's internal steps since the start or reset()
-  const Parameters& parameters() const noexcept { return m_parameters; }  ///< the plant's parameters
-  const SimulationOptions& options() const noexcept { return m_options; }  ///< the simulation options it was started with
+  /// The latest: at time()
+  /// \return the measurement, valid until the next step() or reset()
+  const Measurement& measurement() const;
+  double time() const;                     ///< t_k [s] \return t_k [s]
+  /// CVODE's internal steps since the start or reset()
+  /// \return the number of steps
+  long steps() const;
+  /// The plant's parameters
+  /// \return the parameters in force
+  const Parameters& parameters() const noexcept { return m_parameters; }
+  /// The simulation options it was started with
+  /// \return the options, with a reset()'s position and seed
+  const SimulationOptions& options() const noexcept { return m_options; }
 
  private:
   const detail::Integrator& integrator() const;

@@ -55,7 +55,17 @@ class ARX:
         ...
     def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
-        int: how many samples of u lie outside input_range (0: no extrapolation).
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
         """
     def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -80,6 +90,16 @@ class ARX:
     def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> ARX:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
         """
     def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -109,8 +129,17 @@ class ARX:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
-        spaces per level of nesting, -1 (the default) for one line.
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
         """
     @property
     def a(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -234,7 +263,17 @@ class Hammerstein:
         ...
     def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
-        int: how many samples of u lie outside input_range (0: no extrapolation).
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
         """
     def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -259,6 +298,16 @@ class Hammerstein:
     def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> Hammerstein:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
         """
     def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -288,8 +337,17 @@ class Hammerstein:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
-        spaces per level of nesting, -1 (the default) for one line.
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
         """
     @property
     def a(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -438,7 +496,17 @@ class HammersteinWiener:
         ...
     def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
-        int: how many samples of u lie outside input_range (0: no extrapolation).
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
         """
     def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -463,6 +531,16 @@ class HammersteinWiener:
     def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> HammersteinWiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
         """
     def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -492,8 +570,17 @@ class HammersteinWiener:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
-        spaces per level of nesting, -1 (the default) for one line.
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
         """
     @property
     def a(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -653,7 +740,17 @@ class PseudoHammersteinWiener:
         ...
     def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
-        int: how many samples of u lie outside input_range (0: no extrapolation).
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
         """
     def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -678,6 +775,16 @@ class PseudoHammersteinWiener:
     def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> PseudoHammersteinWiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
         """
     def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -707,8 +814,17 @@ class PseudoHammersteinWiener:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
-        spaces per level of nesting, -1 (the default) for one line.
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
         """
     @property
     def a(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -859,7 +975,17 @@ class Wiener:
         ...
     def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
-        int: how many samples of u lie outside input_range (0: no extrapolation).
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
         """
     def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -884,6 +1010,16 @@ class Wiener:
     def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> Wiener:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
         """
     def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -913,8 +1049,17 @@ class Wiener:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
-        spaces per level of nesting, -1 (the default) for one line.
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
         """
     @property
     def a(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -1063,7 +1208,17 @@ class WienerHammerstein:
         ...
     def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
-        int: how many samples of u lie outside input_range (0: no extrapolation).
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
         """
     def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1088,6 +1243,16 @@ class WienerHammerstein:
     def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> WienerHammerstein:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
         """
     def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1117,8 +1282,17 @@ class WienerHammerstein:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
-        spaces per level of nesting, -1 (the default) for one line.
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
         """
     @property
     def a1(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -1318,7 +1492,17 @@ class NonlinearFeedback:
         ...
     def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
-        int: how many samples of u lie outside input_range (0: no extrapolation).
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
         """
     def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1343,6 +1527,16 @@ class NonlinearFeedback:
     def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> NonlinearFeedback:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
         """
     def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1372,8 +1566,17 @@ class NonlinearFeedback:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
-        spaces per level of nesting, -1 (the default) for one line.
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
         """
     @property
     def a(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -1574,7 +1777,17 @@ class PrandtlIshlinskiiHammerstein:
         ...
     def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
         """
-        int: how many samples of u lie outside input_range (0: no extrapolation).
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
         """
     def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1599,6 +1812,16 @@ class PrandtlIshlinskiiHammerstein:
     def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> PrandtlIshlinskiiHammerstein:
         """
         The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
         """
     def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1628,8 +1851,17 @@ class PrandtlIshlinskiiHammerstein:
         """
     def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
         """
-        str: the model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io); indent
-        spaces per level of nesting, -1 (the default) for one line.
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
         """
     @property
     def a(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -1992,9 +2224,13 @@ class Estimator:
         """
     def reset(self, theta0: numpy.typing.ArrayLike | None = None) -> None:
         """
-        Back to the initial estimate, P = p0 I, internal variables at rest; or, given theta0, restart from
-        the estimate theta0 (a warm start: the model's parameter vector, e.g. an identified model's theta).
-        ValueError for theta0 of another length.
+        Back to the initial estimate, P = p0 I, internal variables at rest; or restart from theta0.
+        
+        Parameters
+        ----------
+        theta0 : array_like, shape (num_params,), optional
+            The estimate to restart from (a warm start: the model's parameter vector, e.g. an identified
+            model's theta). ValueError for theta0 of another length.
         """
     def start_pass(self) -> None:
         """
@@ -2002,7 +2238,12 @@ class Estimator:
         """
     def start_recording(self, capacity: typing.SupportsInt | typing.SupportsIndex) -> None:
         """
-        Record theta, the internal variable and the status of the next updates, keeping the newest `capacity`.
+        Record theta, the internal variable and the status of the next updates.
+        
+        Parameters
+        ----------
+        capacity : int
+            How many of the newest updates to keep, >= 1 (a ring buffer, allocated here once).
         """
     def stop_recording(self) -> None:
         """

@@ -176,8 +176,17 @@ class InverseModel:
         The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
         
         u(k) is computed from r(k + nk), ..., r(k + preview), the reference held at its last value beyond its end;
-        model.simulate(run.command) then follows r from k = nk on where every status is exact. ValueError for a
-        non-finite reference or one of preview samples or fewer. Returns InverseRun (command, status).
+        model.simulate(run.command) then follows r from k = nk on where every status is exact.
+        
+        Parameters
+        ----------
+        reference : array_like, shape (N,)
+            r(0..N-1), in the model's output units; finite, longer than preview (else ValueError).
+        
+        Returns
+        -------
+        InverseRun
+            ``command``, the N commands, and ``status``, each command's InverseStatus.
         """
     def reset(self) -> None:
         """
@@ -332,16 +341,43 @@ class AdaptiveInverse:
         ...
     def rederive(self) -> bool:
         """
-        Derive the inverse from the estimate now, if the guard trusts it; returns whether it is in use.
+        Derive the inverse from the estimate now, if the guard trusts it.
+        
+        Returns
+        -------
+        bool
+            Whether the new inverse is in use; if not, the last good one stays and health says why.
         """
     def step(self, reference: float | numpy.typing.ArrayLike) -> InverseStep:
         """
-        The command for the reference ahead, from the inverse in use (as InverseModel.step).
+        The command u(k) for the reference ahead.
+        
+        Parameters
+        ----------
+        reference : float or 1-D array
+            r(k + nk) (a float, where window_size is 1), or the window r(k + nk), ..., r(k + preview) (at
+            least window_size entries).
+        
+        Returns
+        -------
+        InverseStep: ``value`` (the command) and ``status`` (InverseStatus flags). A non-finite reference or a
+        window too short raises ValueError and leaves the inverse untouched.
         """
     def update(self, u: float, y: float) -> bonl._bonl.UpdateStatus:
         """
-        One sample of the plant: u the command applied and y the output measured. Returns the estimator's
-        UpdateStatus (rejected_non_finite for a NaN or infinite value: nothing changes).
+        One sample of the plant, to the estimator; every rederive_every samples, rederive().
+        
+        Parameters
+        ----------
+        u : float
+            The command applied (the whole command, feedback included).
+        y : float
+            The output measured.
+        
+        Returns
+        -------
+        UpdateStatus
+            The estimator's (rejected_non_finite for a NaN or infinite value: nothing changes).
         """
     @property
     def estimate(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.PrandtlIshlinskiiHammerstein:

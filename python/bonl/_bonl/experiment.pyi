@@ -313,8 +313,19 @@ class TrackingResult:
     """
     def run(self, controller: str, plant_changes: bool = False) -> TrackingRun:
         """
-        The run of ``controller`` (its label, e.g. "PI + P-H-W"), with the plant change at 40 s when
-        ``plant_changes`` is true, else without.
+        The run of a controller, with or without the plant change.
+        
+        Parameters
+        ----------
+        controller : str
+            Its label, e.g. "PI + P-H-W".
+        plant_changes : bool, default False
+            True: the run with the plant change at 40 s.
+        
+        Returns
+        -------
+        TrackingRun
+            The run.
         
         Raises
         ------

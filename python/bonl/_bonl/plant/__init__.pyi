@@ -142,19 +142,39 @@ class Parameters:
         ...
     def angle_offset(self) -> float:
         """
-        phi0, the linkage angle at mid-stroke [rad].
+        phi0, the linkage angle at mid-stroke.
+        
+        Returns
+        -------
+        float
+            phi0 [rad].
         """
     def annulus_area(self) -> float:
         """
-        A2 = pi (D^2 - d^2) / 4, annulus area [m^2].
+        The annulus area A2 = pi (D^2 - d^2) / 4.
+        
+        Returns
+        -------
+        float
+            A2 [m^2].
         """
     def copy(self) -> Parameters:
         """
         An independent copy.
+        
+        Returns
+        -------
+        Parameters
+            The copy, equal to this one.
         """
     def flow_gain(self) -> float:
         """
-        Kq = Cd w xv_max sqrt(2 / rho) [m^3/(s sqrt(Pa))].
+        The flow gain Kq = Cd w xv_max sqrt(2 / rho).
+        
+        Returns
+        -------
+        float
+            Kq [m^3/(s sqrt(Pa))].
         """
     def gravity_force(self, position: typing.SupportsFloat | typing.SupportsIndex) -> float:
         """
@@ -172,7 +192,12 @@ class Parameters:
         """
     def head_area(self) -> float:
         """
-        A1 = pi D^2 / 4, piston area [m^2].
+        The piston area A1 = pi D^2 / 4.
+        
+        Returns
+        -------
+        float
+            A1 [m^2].
         """
     def joint_angle(self, position: typing.SupportsFloat | typing.SupportsIndex) -> float:
         """
@@ -235,7 +260,12 @@ class Parameters:
         """
     def valve_gain(self) -> float:
         """
-        kv = 1 / (V0 - d) [1/V]: a full command opens the spool fully.
+        The valve gain kv = 1 / (V0 - d): a full command opens the spool fully.
+        
+        Returns
+        -------
+        float
+            kv [1/V].
         """
     @property
     def area_gradient(self) -> float:

@@ -94,9 +94,13 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
   /// \copydoc ARX::Linear
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
 
-  /// A model with the orders na >= 1, nb >= 0, nk >= 0, nd >= 1 and ni in 0..2, all parameters zero
-  /// (d = 1, 0, ..., 0). Throws std::invalid_argument for an order out of range or one that differs
-  /// from the model's template orders.
+  /// A model with the given orders, all parameters zero but d_1 = 1. Throws std::invalid_argument for
+  /// an order out of range or one that differs from the compile-time order.
+  /// \param na poles of the linear block, >= 1
+  /// \param nb B has nb + 1 coefficients, >= 0
+  /// \param nk pure delay in samples, >= 0
+  /// \param nd taps of the force's block D (d_1 = 1), 1..32
+  /// \param ni integrators (poles fixed at 1), 0..2
   BoucWenFeedback(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index nd, Eigen::Index ni = 0)
       : m_na(na), m_nb(nb), m_nk(nk), m_nd(nd), m_ni(ni) {
     detail::require_order(na, 1, "na");
@@ -111,11 +115,17 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     m_theta = Params::Zero(nb + 1 + na + 3 + nd - 1);
   }
 
-  Eigen::Index na() const noexcept { return m_na; }  ///< the order na: poles of the linear block
-  Eigen::Index nb() const noexcept { return m_nb; }  ///< the order nb: B has nb + 1 coefficients b_0..b_nb
-  Eigen::Index nk() const noexcept { return m_nk; }  ///< the order nk: pure delay in samples
-  Eigen::Index nd() const noexcept { return m_nd; }  ///< the order nd: taps of the force's block D (d_1 = 1)
-  Eigen::Index ni() const noexcept { return m_ni; }  ///< the order ni: integrators (poles fixed at 1), 0, 1 or 2
+  /// \copydoc ARX::na
+  Eigen::Index na() const noexcept { return m_na; }
+  /// \copydoc ARX::nb
+  Eigen::Index nb() const noexcept { return m_nb; }
+  /// \copydoc ARX::nk
+  Eigen::Index nk() const noexcept { return m_nk; }
+  /// The order nd: taps of the force's block D (d_1 = 1)
+  /// \return nd, 1..32
+  Eigen::Index nd() const noexcept { return m_nd; }
+  /// \copydoc ARX::ni
+  Eigen::Index ni() const noexcept { return m_ni; }
   /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   /// \copydoc ARX::orders
@@ -127,6 +137,9 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
   /// key-term recursions fit the law with the measured output's force; a free run from their estimate
   /// can leave the law's range (a step |dy| beyond 1 / (|gamma| + |delta|) overshoots), the open loop
   /// simulates like a stable linear model.
+  /// \param structure the orders to start from
+  /// \param records the identification records (deviations from the operating point, as identify() hands them)
+  /// \return the start, or none
   template <class RecordList>
   static std::vector<BoucWenFeedback> identify_starts(const BoucWenFeedback& structure, const RecordList& records) {
     return open_loop_starts(structure, records);
@@ -140,35 +153,41 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     detail::assign_checked(m_theta, theta, "theta");
   }
 
-  VectorX b() const { return m_theta.head(m_nb + 1); }  ///< the numerator coefficients b_0..b_nb
-  VectorX a() const { return m_theta.segment(first_a(), m_na); }  ///< the denominator coefficients a_1..a_na
-  Scalar alpha() const noexcept { return m_theta[first_law()]; }  ///< the force's stiffness where w = 0
-  Scalar gamma() const noexcept { return m_theta[first_law() + 1]; }  ///< the law's |dy| w coefficient
-  Scalar delta() const noexcept { return m_theta[first_law() + 2]; }  ///< the law's dy |w| coefficient
-  /// d_1..d_nd with d_1 = 1.
+  /// \copydoc ARX::b
+  VectorX b() const { return m_theta.head(m_nb + 1); }
+  /// \copydoc ARX::a
+  VectorX a() const { return m_theta.segment(first_a(), m_na); }
+  /// The force's stiffness where it is zero. \return alpha
+  Scalar alpha() const noexcept { return m_theta[first_law()]; }
+  /// The law's coefficient of |dy| w (beta gamma of the Bouc-Wen law). \return gamma
+  Scalar gamma() const noexcept { return m_theta[first_law() + 1]; }
+  /// The law's coefficient of dy |w| (beta delta of the Bouc-Wen law). \return delta
+  Scalar delta() const noexcept { return m_theta[first_law() + 2]; }
+  /// The force's block D. \return d_1..d_nd with d_1 = 1
   VectorX d() const {
     VectorX out(m_nd);
     out[0] = Scalar(1);
     out.tail(m_nd - 1) = m_theta.segment(first_d(), m_nd - 1);
     return out;
   }
-  /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
+  /// \copydoc ARX::set_b
   template <typename T>
   void set_b(const Eigen::MatrixBase<T>& b) {
     detail::assign_checked(m_theta.head(m_nb + 1), b, "b");
   }
-  /// Sets a_1..a_na (na finite values, else std::invalid_argument).
+  /// \copydoc ARX::set_a
   template <typename T>
   void set_a(const Eigen::MatrixBase<T>& a) {
     detail::assign_checked(m_theta.segment(first_a(), m_na), a, "a");
   }
-  /// Sets alpha (finite, else std::invalid_argument).
+  /// Sets alpha (finite, else std::invalid_argument). \param alpha the force's stiffness where it is zero
   void set_alpha(Scalar alpha) { set_law(0, alpha, "alpha"); }
-  /// Sets gamma (finite, else std::invalid_argument).
+  /// Sets gamma (finite, else std::invalid_argument). \param gamma the law's coefficient of |dy| w
   void set_gamma(Scalar gamma) { set_law(1, gamma, "gamma"); }
-  /// Sets delta (finite, else std::invalid_argument).
+  /// Sets delta (finite, else std::invalid_argument). \param delta the law's coefficient of dy |w|
   void set_delta(Scalar delta) { set_law(2, delta, "delta"); }
   /// Sets d_1..d_nd: nd finite values with d_1 = 1 (the normalisation), else std::invalid_argument.
+  /// \param d d_1..d_nd
   template <typename T>
   void set_d(const Eigen::MatrixBase<T>& d) {
     detail::require_size(d, m_nd, "d");
@@ -178,6 +197,7 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
   }
 
   /// The parameter block kDescription.parameters[i]: b, a, alpha, gamma, delta, d.
+  /// \copydetails ARX::parameter
   VectorX parameter(std::size_t i) const {
     switch (i) {
       case 0: return b();
@@ -206,8 +226,7 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     }
   }
 
-  /// The free run from rest of the deviations from the operating point (u - u0 to y - y0); false
-  /// if it leaves the finite numbers. try_simulate() and simulate() add the operating point.
+  /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     const Law law(*this);
@@ -235,6 +254,7 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
   }
 
   /// Where the recursive estimator starts (all zero: no force, d = 1, 0, ..., 0).
+  /// \return theta to start the recursion from
   Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
@@ -424,6 +444,7 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     }
     /// After the estimate moved by delta: the stored outputs and forces to first order (as
     /// SimulatedLags does).
+    /// \param delta the change of theta since the step just accepted
     void correct(const Params& delta) noexcept {
       for (Eigen::Index j = 0; j < m_y.size(); ++j) m_y[j] += m_dy.col(j).dot(delta);
       for (Eigen::Index j = 0; j < m_z.size(); ++j) m_z[j] += m_dz.col(j).dot(delta);

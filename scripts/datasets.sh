@@ -21,8 +21,8 @@ for script in "${scripts[@]}"; do
   [[ $script == wiener_hammerstein ]] && model=(--model WienerHammerstein docs/results/datasets/wiener_hammerstein_model.json)
   # The Silverbox's nonlinear-feedback model, likewise.
   [[ $script == silverbox ]] && model=(--model NonlinearFeedback docs/results/datasets/silverbox_model.json)
-  # The Bouc-Wen's nonlinear-feedback model, likewise.
-  [[ $script == bouc_wen ]] && model=(--model NonlinearFeedback docs/results/datasets/bouc_wen_model.json)
+  # The Bouc-Wen's Bouc-Wen feedback model, likewise.
+  [[ $script == bouc_wen ]] && model=(--model BoucWenFeedback docs/results/datasets/bouc_wen_model.json)
   # The EMPS's nonlinear-feedback model with its integrator, likewise.
   [[ $script == emps ]] && model=(--model NonlinearFeedback docs/results/datasets/emps_model.json)
   "$python" "examples/datasets/$script.py" --json "docs/results/datasets/$script.json" "${model[@]}"

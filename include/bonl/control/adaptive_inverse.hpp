@@ -76,12 +76,13 @@ class AdaptiveInverse {
 
   /// Starts from `initial` (an identified model): the inverse is derived from it, and the estimator
   /// is warm-started from its parameters (P = p0 I). Throws std::invalid_argument for bad options or
-  /// a model without an inverse.
-  explicit AdaptiveInverse(const Model& initial, const AdaptiveInverseOptions& options = {})
+  /// a model without an inverse. `settings`: the model's own estimator settings (Estimator).
+  explicit AdaptiveInverse(const Model& initial, const AdaptiveInverseOptions& options = {},
+                           const ModelSettings<Model>& settings = {})
       : m_options(validated(options)),
         m_model(initial),
         m_inverse(initial, options.inverse),
-        m_estimator(initial, options.estimator) {
+        m_estimator(initial, options.estimator, settings) {
     m_estimator.reset(initial.theta());
   }
 

@@ -109,9 +109,6 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     return detail::free_run(this->linear_block(), u, y, detail::Identity{}, detail::Identity{});
   }
-
-  /// Where the recursive estimator starts (all zero).
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
 
@@ -148,9 +145,8 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   /// sensitivities are all of psi (detail::LinearOutputError). Nothing to hold at the start.
   class OutputErrorTerms {
    public:
-    /// Starts the free run of model at rest; hold is the number of first samples some models hold their
-    /// internal state for (unused here).
-    explicit OutputErrorTerms(const ARX& model, Eigen::Index /*hold*/ = 0)
+    /// Starts the free run of model at rest.
+    explicit OutputErrorTerms(const ARX& model)
         : m_linear(model.na(), model.nb(), model.nk(), model.num_params(), model.ni()),
           m_psi(Params::Zero(model.num_params())) {}
     /// Back to rest, sensitivities included.

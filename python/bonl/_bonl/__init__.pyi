@@ -1933,8 +1933,8 @@ class Estimator:
     Parameters
     ----------
     model : one of bonl.MODELS
-        Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
-        c = 0 for output_error).
+        Gives the structure; the estimate starts from zero (P-H-W: c = c0 for equation_error and
+        paper, c = 0 for output_error).
     method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
         The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
         method on the free-run simulation error. 'equation_error': internal variables from the measured
@@ -1945,8 +1945,6 @@ class Estimator:
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     trace_ceiling : float, optional
         trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
         would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
@@ -1956,35 +1954,39 @@ class Estimator:
         0: never (check ``diverged`` and call ``recover()``).
     stability_radius : float, default 0.999
         output_error: the linear block's poles are kept inside this radius (updates shortened).
-    backlash_hold : int, default 200
-        output_error, P-H-W: c is held at 0 for this many samples after each start from rest.
     window : WindowRefinementOptions, optional
         output_error: the window refinement, Levenberg-Marquardt on the newest samples spread over the
         updates (``bonl.WindowRefinementOptions()``); None: off.
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     """
     @typing.overload
-    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     def recover(self) -> None:
         """
@@ -2150,7 +2152,7 @@ class _SelectionData:
     """
     The records and options of a selection, checked once (bonl::SelectionData); made by _selection_data.
     """
-    def __getstate__(self) -> tuple[list, str, float, int, int, str, typing.Any, float | None, float, int, bool, typing.Any]:
+    def __getstate__(self) -> tuple[list, str, float, int, int, str, typing.Any, float | None, int, bool, typing.Any]:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
@@ -2234,12 +2236,12 @@ def _select(candidates: collections.abc.Sequence[PrandtlIshlinskiiHammerstein], 
     """
     C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
     """
-def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> _SelectionData:
+def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> _SelectionData:
     """
     bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. The keyword arguments after window are identify's.
     """
 @typing.overload
-def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> ARX:
+def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> ARX:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2265,8 +2267,6 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2281,6 +2281,12 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2302,7 +2308,7 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Hammerstein:
+def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Hammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2328,8 +2334,6 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2344,6 +2348,12 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2365,7 +2375,7 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> HammersteinWiener:
+def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> HammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2391,8 +2401,6 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2407,6 +2415,12 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2428,7 +2442,7 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PseudoHammersteinWiener:
+def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PseudoHammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2454,8 +2468,6 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2470,6 +2482,12 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2491,7 +2509,7 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Wiener:
+def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Wiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2517,8 +2535,6 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2533,6 +2549,12 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2554,7 +2576,7 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> WienerHammerstein:
+def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> WienerHammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2580,8 +2602,6 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2596,6 +2616,12 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2617,7 +2643,7 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> NonlinearFeedback:
+def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> NonlinearFeedback:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2643,8 +2669,6 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2659,6 +2683,12 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2680,7 +2710,7 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PrandtlIshlinskiiHammerstein:
+def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PrandtlIshlinskiiHammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2706,8 +2736,6 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2722,6 +2750,12 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------

@@ -24,10 +24,10 @@ namespace bonl {
 /// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model>
 Model estimate_recursively(const Model& structure, const Records<typename Model::Scalar>& records,
-                           const IdentifyOptions& options) {
+                           const IdentifyOptions& options, const ModelSettings<Model>& settings = {}) {
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   detail::require_records(records, structure.num_params());
-  Estimator<Model> estimator(structure, options);
+  Estimator<Model> estimator(structure, options, settings);
   for (int pass = 0; pass < options.passes; ++pass) {
     for (std::size_t r = 0; r < records.size(); ++r) {
       if (pass > 0 || r > 0) estimator.start_pass();
@@ -55,11 +55,11 @@ Model estimate_recursively(const Model& structure, const Records<typename Model:
 /// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model, typename U, typename Y>
 Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
-                           const IdentifyOptions& options) {
+                           const IdentifyOptions& options, const ModelSettings<Model>& settings = {}) {
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   detail::require_record(u, y, structure.num_params());
   const typename Model::VectorX input = u, output = y;
-  return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options);
+  return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options, settings);
 }
 
 }  // namespace bonl

@@ -21,6 +21,7 @@ namespace bonl {
 /// are not used
 /// \param records the records, each an input u and measured output y of equal length
 /// \param options the method, passes and the estimator's options
+/// \param settings the model's own estimator settings (Estimator)
 /// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model>
 Model estimate_recursively(const Model& structure, const Records<typename Model::Scalar>& records,
@@ -52,6 +53,7 @@ Model estimate_recursively(const Model& structure, const Records<typename Model:
 /// \param u the input, one record
 /// \param y the measured output, as long as u
 /// \param options the method, passes and the estimator's options
+/// \param settings the model's own estimator settings (Estimator)
 /// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model, typename U, typename Y>
 Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,

@@ -202,6 +202,7 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
 /// \param u the input, one record
 /// \param y the measured output, as long as u
 /// \param options the method, passes, refinement, normalisation and operating point
+/// \param settings the model's own estimator settings, in the data's units
 /// \return the identified model, in the data's units, with its operating point and input range
 template <class Model, typename U, typename Y>
 Model identify(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,

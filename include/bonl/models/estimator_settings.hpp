@@ -15,6 +15,7 @@ namespace bonl {
 struct NoEstimatorSettings {
   void validate() const noexcept {}  ///< nothing to check
   /// The same (nothing depends on the data's units).
+  /// \return no settings
   NoEstimatorSettings rescaled(double /*u_scale*/, double /*y_scale*/) const noexcept { return {}; }
 };
 

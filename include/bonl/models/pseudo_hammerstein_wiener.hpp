@@ -29,6 +29,8 @@ struct BacklashEstimatorSettings {
     detail::require(backlash_hold >= 0, "backlash_hold must be >= 0");
   }
   /// The settings for the data multiplied by u_scale and y_scale: c0 is in the output's units.
+  /// \param y_scale the output's factor (nothing here is in the input's units)
+  /// \return the settings for the scaled data
   BacklashEstimatorSettings rescaled(double /*u_scale*/, double y_scale) const {
     return {c0 * y_scale, backlash_hold};
   }
@@ -223,6 +225,8 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
         : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_last(model.num_params() - 1),
           m_psi(Params::Zero(model.num_params())), m_dy(m_psi), m_hold(hold) {}
     /// The estimator's: hold = settings.backlash_hold.
+    /// \param model the model whose orders the run has; only its orders are read
+    /// \param settings the estimator settings, of which backlash_hold is read
     OutputErrorTerms(const PseudoHammersteinWiener& model, const EstimatorSettings& settings)
         : OutputErrorTerms(model, settings.backlash_hold) {}
     /// \copydoc ARX::OutputErrorTerms::reset

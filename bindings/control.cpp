@@ -194,7 +194,7 @@ void def_adaptive_init(py::class_<AnyAdaptive>& cls) {
                       double max_covariance_trace, double stability_radius) {
             bonl::control::AdaptiveInverseOptions options;
             options.inverse = inverse_options(command_min, command_max, backlash_band, backlash_band_per_c);
-            options.estimator = estimator_options({method, forgetting, p0, 0.01, std::nullopt});
+            options.estimator = estimator_options({method, forgetting, p0, std::nullopt});
             options.rederive_every = rederive_every;
             options.max_covariance_trace = max_covariance_trace;
             options.stability_radius = stability_radius;

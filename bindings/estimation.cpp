@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "estimator_options.hpp"
+#include "model_settings.hpp"
 #include "option_docs.hpp"
 
 namespace bonl_python {
@@ -82,11 +83,9 @@ bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
   options.method = bonl::method_from_string(arguments.method);  // std::invalid_argument: a ValueError
   options.forgetting = parse_forgetting(arguments.forgetting);
   options.p0 = arguments.p0;
-  options.c0 = arguments.c0;
   options.trace_ceiling = arguments.trace_ceiling;
   options.recover_after = arguments.recover_after;
   options.stability_radius = arguments.stability_radius;
-  options.backlash_hold = arguments.backlash_hold;
   options.window = arguments.window;
   options.validate();
   return options;
@@ -132,7 +131,8 @@ bonl.NumericalError
 const char* identify_doc() {
   static const std::string doc =
       std::string(kIdentifyHead) +
-      option_docs({"passes", "method", "forgetting", "p0", "c0", "refine_iterations", "normalise", "operating_point"}) +
+      option_docs({"passes", "method", "forgetting", "p0", "refine_iterations", "normalise", "operating_point", "c0",
+                   "backlash_hold"}) +
       kIdentifyTail;
   return doc.c_str();
 }
@@ -155,11 +155,12 @@ void def_identify(py::module_& m) {
   def_with_identify_arguments(
       m, "identify",
       [](const Model& model, const py::typing::Optional<ArrayLike>& u, const py::typing::Optional<ArrayLike>& y,
-         const py::typing::Optional<RecordList>& records, int passes, const std::string& method,
-         const Forgetting& forgetting, std::optional<double> p0, double c0, int refine_iterations, bool normalise,
-         const OperatingPointSource& operating_point) {
+         const py::typing::Optional<RecordList>& records, std::optional<double> c0,
+         std::optional<Eigen::Index> backlash_hold, int passes, const std::string& method, const Forgetting& forgetting,
+         std::optional<double> p0, int refine_iterations, bool normalise, const OperatingPointSource& operating_point) {
         const bonl::IdentifyOptions options =
-            identify_options({passes, method, forgetting, p0, c0, refine_iterations, normalise, operating_point});
+            identify_options({passes, method, forgetting, p0, refine_iterations, normalise, operating_point});
+        const auto settings = model_settings<Model>({c0, backlash_hold});
         std::vector<Eigen::VectorXd> inputs, outputs;
         read_records(u, y, records,
                      "identify(model, u, y) for one record, identify(model, records=[(u1, y1), (u2, y2), ...]) for "
@@ -170,7 +171,7 @@ void def_identify(py::module_& m) {
         for (std::size_t i = 0; i < inputs.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
         Model identified = [&] {
           py::gil_scoped_release release;
-          return bonl::identify(model, views, options);
+          return bonl::identify(model, views, options, settings);
         }();
         const double radius = bonl::pole_radius(identified);
         if (radius >= 0.999) {
@@ -182,7 +183,8 @@ void def_identify(py::module_& m) {
         return identified;
       },
       py::arg("model"), py::arg("u") = py::none(), py::arg("y") = py::none(), py::kw_only(),
-      py::arg("records") = py::none(), identify_doc());
+      py::arg("records") = py::none(), py::arg("c0") = py::none(), py::arg("backlash_hold") = py::none(),
+      identify_doc());
 }
 
 /// What Estimator.update_record returns: one status code per sample and, where asked, the
@@ -207,8 +209,8 @@ class AnyEstimator {
   using Variant = bonl::ApplyModels<bonl::MapModels<bonl::Models, bonl::Estimator>::type, std::variant>::type;
 
   template <class Model>
-  AnyEstimator(const Model& model, const bonl::EstimatorOptions& options)
-      : m_estimator(std::in_place_type<bonl::Estimator<Model>>, model, options) {}
+  AnyEstimator(const Model& model, const bonl::EstimatorOptions& options, const bonl::ModelSettings<Model>& settings)
+      : m_estimator(std::in_place_type<bonl::Estimator<Model>>, model, options, settings) {}
 
   bonl::UpdateStatus update(double u, double y) noexcept {
     return std::visit([&](auto& estimator) { return estimator.update(u, y); }, m_estimator);
@@ -313,17 +315,18 @@ class AnyEstimator {
 template <class Model>
 void def_estimator_init(py::class_<AnyEstimator>& cls) {
   cls.def(py::init([](const Model& model, const std::string& method, const Forgetting& forgetting,
-                      std::optional<double> p0, double c0, std::optional<double> trace_ceiling,
-                      Eigen::Index recover_after, double stability_radius, Eigen::Index backlash_hold,
-                      std::optional<bonl::WindowRefinementOptions> window) {
-            return AnyEstimator(model, estimator_options({method, forgetting, p0, c0, trace_ceiling, recover_after,
-                                                          stability_radius, backlash_hold,
-                                                          window.value_or(bonl::WindowRefinementOptions{})}));
+                      std::optional<double> p0, std::optional<double> trace_ceiling, Eigen::Index recover_after,
+                      double stability_radius, std::optional<bonl::WindowRefinementOptions> window,
+                      std::optional<double> c0, std::optional<Eigen::Index> backlash_hold) {
+            const bonl::EstimatorOptions options =
+                estimator_options({method, forgetting, p0, trace_ceiling, recover_after, stability_radius,
+                                   window.value_or(bonl::WindowRefinementOptions{})});
+            return AnyEstimator(model, options, model_settings<Model>({c0, backlash_hold}));
           }),
           py::arg("model"), py::kw_only(), py::arg("method") = "output_error", py::arg("forgetting") = py::none(),
-          py::arg("p0") = py::none(), py::arg("c0") = 0.01, py::arg("trace_ceiling") = py::none(),
-          py::arg("recover_after") = 0, py::arg("stability_radius") = 0.999, py::arg("backlash_hold") = 200,
-          py::arg("window") = py::none());
+          py::arg("p0") = py::none(), py::arg("trace_ceiling") = py::none(), py::arg("recover_after") = 0,
+          py::arg("stability_radius") = 0.999, py::arg("window") = py::none(), py::arg("c0") = py::none(),
+          py::arg("backlash_hold") = py::none());
 }
 
 }  // namespace
@@ -331,7 +334,7 @@ void def_estimator_init(py::class_<AnyEstimator>& cls) {
 bonl::IdentifyOptions identify_options(const IdentifyArguments& arguments) {
   bonl::IdentifyOptions options;
   static_cast<bonl::EstimatorOptions&>(options) =
-      estimator_options({arguments.method, arguments.forgetting, arguments.p0, arguments.c0, std::nullopt});
+      estimator_options({arguments.method, arguments.forgetting, arguments.p0, std::nullopt});
   options.passes = arguments.passes;
   options.refine_iterations = arguments.refine_iterations;
   options.normalise = arguments.normalise;
@@ -443,10 +446,10 @@ void bind_estimation(py::module_& m) {
 
   static const std::string estimator_doc =
       "Online recursive estimator for one model.\n\nParameters\n----------\nmodel : one of bonl.MODELS\n"
-      "    Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,\n"
-      "    c = 0 for output_error).\n" +
-      option_docs({"method", "forgetting", "p0", "c0", "trace_ceiling", "recover_after", "stability_radius",
-                   "backlash_hold", "window"});
+      "    Gives the structure; the estimate starts from zero (P-H-W: c = c0 for equation_error and\n"
+      "    paper, c = 0 for output_error).\n" +
+      option_docs({"method", "forgetting", "p0", "trace_ceiling", "recover_after", "stability_radius", "window", "c0",
+                   "backlash_hold"});
   py::class_<AnyEstimator> estimator(m, "Estimator", estimator_doc.c_str());
   bonl::for_each_model(bonl::Models{}, [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
   py::class_<UpdateResults>(m, "UpdateResults", "What Estimator.update_record returns for a record.")

@@ -24,11 +24,9 @@ struct OptionArguments {
   std::string method;
   py::object forgetting;
   std::optional<double> p0;
-  double c0;
   std::optional<double> trace_ceiling;
   Eigen::Index recover_after = 0;
   double stability_radius = 0.999;
-  Eigen::Index backlash_hold = 200;
   bonl::WindowRefinementOptions window = {};
 };
 
@@ -41,7 +39,6 @@ struct IdentifyArguments {
   std::string method;
   py::object forgetting;
   std::optional<double> p0;
-  double c0;
   int refine_iterations;
   bool normalise;
   py::object operating_point;
@@ -55,8 +52,8 @@ bonl::IdentifyOptions identify_options(const IdentifyArguments& arguments);
 template <class Scope, typename Func, typename... Extra>
 void def_with_identify_arguments(Scope& scope, const char* name, Func&& f, const Extra&... extra) {
   scope.def(name, std::forward<Func>(f), extra..., py::arg("passes") = 1, py::arg("method") = "output_error",
-            py::arg("forgetting") = py::none(), py::arg("p0") = py::none(), py::arg("c0") = 0.01,
-            py::arg("refine_iterations") = 100, py::arg("normalise") = true, py::arg("operating_point") = py::none());
+            py::arg("forgetting") = py::none(), py::arg("p0") = py::none(), py::arg("refine_iterations") = 100,
+            py::arg("normalise") = true, py::arg("operating_point") = py::none());
 }
 
 /// The records of identify and select: (u, y) for one record, or records=[(u1, y1), ...] for several

@@ -4,7 +4,7 @@
 // that an option reads the same wherever it is taken; tests/python/test_option_docs.py checks that each
 // entry's default is the one the signature has. The texts follow C++'s EstimatorOptions and
 // IdentifyOptions (bonl/estimator/recursive_estimator.hpp, identify_options.hpp), with the defaults
-// their resolved_* functions give.
+// their resolved_* functions give, and the models' EstimatorSettings.
 
 #include <initializer_list>
 #include <stdexcept>
@@ -31,8 +31,6 @@ inline constexpr OptionDoc kOptionDocs[] = {
      "adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1\n"
      "for the others."},
     {"p0", "float, optional", "P(0) = p0 I. Default: 10 for output_error, 1e6 for the others."},
-    {"c0", "float, default 0.01",
-     "Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0)."},
     {"trace_ceiling", "float, optional",
      "trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it\n"
      "would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off\n"
@@ -42,8 +40,6 @@ inline constexpr OptionDoc kOptionDocs[] = {
      "0: never (check ``diverged`` and call ``recover()``)."},
     {"stability_radius", "float, default 0.999",
      "output_error: the linear block's poles are kept inside this radius (updates shortened)."},
-    {"backlash_hold", "int, default 200",
-     "output_error, P-H-W: c is held at 0 for this many samples after each start from rest."},
     {"window", "WindowRefinementOptions, optional",
      "output_error: the window refinement, Levenberg-Marquardt on the newest samples spread over the\n"
      "updates (``bonl.WindowRefinementOptions()``); None: off."},
@@ -61,6 +57,13 @@ inline constexpr OptionDoc kOptionDocs[] = {
      "The identified model's operating point (u0, y0): None keeps the structure's\n"
      "(Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the\n"
      "first sample of the first record (the record starts at rest there)."},
+    // The model's own settings (its EstimatorSettings, bindings/model_settings.hpp): PseudoHammersteinWiener's.
+    {"c0", "float, optional",
+     "PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of\n"
+     "equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01."},
+    {"backlash_hold", "int, optional",
+     "PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many\n"
+     "samples after each start from rest. Default: 200."},
 };
 
 /// The numpy-style Parameters entries of the named options of kOptionDocs, in the order given: "name :

@@ -102,8 +102,25 @@ inline double setting(FuzzedDataProvider& in, double typical) {
   }
 }
 
-inline bonl::EstimatorOptions decode_options(FuzzedDataProvider& in) {
+/// The decoded settings: the estimator's options, and the c0 of the models with a backlash (their
+/// EstimatorSettings), decoded for every model so that an input means the same settings for each.
+struct FuzzedOptions {
   bonl::EstimatorOptions options;
+  double c0 = 0.01;
+};
+
+/// The model's settings with the decoded c0 (models without settings have none).
+template <class Model>
+bonl::ModelSettings<Model> model_settings(double c0) {
+  bonl::ModelSettings<Model> settings;
+  if constexpr (uses_c0<Model>()) settings.c0 = c0;
+  static_cast<void>(c0);
+  return settings;
+}
+
+inline FuzzedOptions decode_options(FuzzedDataProvider& in) {
+  FuzzedOptions decoded;
+  bonl::EstimatorOptions& options = decoded.options;
   constexpr bonl::Method kMethods[] = {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper};
   options.method = kMethods[in.ConsumeIntegralInRange<int>(0, 2)];
   switch (in.ConsumeIntegralInRange<int>(0, 4)) {
@@ -128,7 +145,7 @@ inline bonl::EstimatorOptions decode_options(FuzzedDataProvider& in) {
     }
   }
   if (in.ConsumeBool()) options.p0 = setting(in, 1e6);
-  if (in.ConsumeBool()) options.c0 = setting(in, 0.01);
+  if (in.ConsumeBool()) decoded.c0 = setting(in, 0.01);
   if (in.ConsumeBool()) options.internal_refresh = in.ConsumeIntegralInRange<Eigen::Index>(-1, 300);
   switch (in.ConsumeIntegralInRange<int>(0, 4)) {
     case 0: break;  // the default ceiling
@@ -138,7 +155,7 @@ inline bonl::EstimatorOptions decode_options(FuzzedDataProvider& in) {
     default: options.trace_ceiling = std::nextafter(1.0, 0.0); break;  // just below the minimum
   }
   if (in.ConsumeBool()) options.recover_after = in.ConsumeIntegralInRange<Eigen::Index>(-1, 4);
-  return options;
+  return decoded;
 }
 
 /// BONL_FUZZ_VERBOSE set (when reproducing a finding): the decoded settings and every operation.
@@ -147,15 +164,16 @@ inline bool verbose() {
   return on;
 }
 
-inline void print(const bonl::EstimatorOptions& o) {
+inline void print(const FuzzedOptions& decoded) {
   if (!verbose()) return;
+  const bonl::EstimatorOptions& o = decoded.options;
   std::fprintf(stderr,
                "options: method %s, forgetting %s %.17g for %ld then %.17g (memory %.17g, %.17g, growth %.17g), p0 %.17g, "
                "c0 %.17g, internal_refresh %ld, trace_ceiling %.17g, recover_after %ld\n",
                bonl::to_string(o.method), o.resolved_forgetting().adaptive() ? "adaptive" : "steps",
                o.resolved_forgetting().initial, long(o.resolved_forgetting().initial_samples), o.resolved_forgetting().final,
                o.resolved_forgetting().initial_memory, o.resolved_forgetting().changing_memory,
-               o.resolved_forgetting().memory_growth, o.resolved_p0(), o.c0, long(o.internal_refresh),
+               o.resolved_forgetting().memory_growth, o.resolved_p0(), decoded.c0, long(o.internal_refresh),
                o.resolved_trace_ceiling(), long(o.recover_after));
 }
 
@@ -173,9 +191,12 @@ inline Outcomes outcomes;
 
 inline bool lambda_ok(double lambda) { return std::isfinite(lambda) && lambda > 0.0 && lambda <= 1.0; }
 
-/// What EstimatorOptions::validate and the estimator's constructor accept, per their documentation.
+/// What EstimatorOptions::validate, the model's EstimatorSettings::validate and the estimator's
+/// constructor accept, per their documentation.
 template <class Model>
-bool options_valid(const bonl::EstimatorOptions& o) {
+bool options_valid(const FuzzedOptions& decoded) {
+  const bonl::EstimatorOptions& o = decoded.options;
+  const double c0_value = decoded.c0;
   using Scalar = typename Model::Scalar;
   const bonl::ForgettingSchedule f = o.resolved_forgetting();
   const auto memory_ok = [](double value, double minimum) { return std::isfinite(value) && value >= minimum; };
@@ -186,12 +207,12 @@ bool options_valid(const bonl::EstimatorOptions& o) {
                         memory_ok(f.long_window, 1.0) && memory_ok(f.change_ratio, 1.0) && memory_ok(f.poor_fit, 0.0);
   const double p0_value = o.resolved_p0();
   const bool p0 = std::isfinite(p0_value) && p0_value > 0.0;
-  const bool c0 = std::isfinite(o.c0) && o.c0 >= 0.0;
+  const bool c0 = !uses_c0<Model>() || (std::isfinite(c0_value) && c0_value >= 0.0);
   // In Scalar: P(0) = p0 I must be finite and positive, and (P-H-W, where the method starts from it:
   // output_error starts at c = 0) c(0) = c0 finite.
   const bool p0_scalar = p0 && std::isfinite(to_scalar<Scalar>(p0_value)) && to_scalar<Scalar>(p0_value) > Scalar(0);
   const bool starts_from_c0 = uses_c0<Model>() && o.method != bonl::Method::OutputError;
-  const bool c0_scalar = !starts_from_c0 || (c0 && std::isfinite(to_scalar<Scalar>(o.c0)));
+  const bool c0_scalar = !starts_from_c0 || (c0 && std::isfinite(to_scalar<Scalar>(c0_value)));
   const bool safeguards = o.resolved_trace_ceiling() >= 1.0 && o.recover_after >= 0;  // the ceiling may be +inf
   return schedule && p0 && c0 && o.internal_refresh >= 1 && p0_scalar && c0_scalar && safeguards;
 }
@@ -205,8 +226,8 @@ class Harness {
   using Covariance = typename Est::Covariance;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
 
-  Harness(const Model& structure, const bonl::EstimatorOptions& options)
-      : m_structure(structure), m_est(structure, options), m_n(structure.num_params()) {
+  Harness(const Model& structure, const bonl::EstimatorOptions& options, const bonl::ModelSettings<Model>& settings)
+      : m_structure(structure), m_est(structure, options, settings), m_n(structure.num_params()) {
     // The documented ceiling: trace(P) <= trace_ceiling * trace(P(0)) = trace_ceiling * n * p0.
     m_max_trace = options.resolved_trace_ceiling() * static_cast<double>(to_scalar<Scalar>(options.resolved_p0())) *
                   static_cast<double>(m_n);
@@ -346,9 +367,15 @@ class Harness {
   }
 
   void check_fresh() {
-    // The output-error method starts c at 0 (the model's OutputErrorTerms), the others at c0.
-    const double c0 = m_est.options().method == bonl::Method::OutputError ? 0.0 : m_est.options().c0;
-    FUZZ_CHECK(same(m_structure.initial_estimate(to_scalar<Scalar>(c0)), m_est.theta()));
+    // The output-error method starts from zero, the others at the model's initial estimate: zero
+    // but c = c0 for a model with a backlash.
+    Params expected = Params::Zero(m_n);
+    if constexpr (uses_c0<Model>()) {
+      if (m_est.options().method != bonl::Method::OutputError) {
+        expected[m_n - 1] = to_scalar<Scalar>(m_est.settings().c0);
+      }
+    }
+    FUZZ_CHECK(same(expected, m_est.theta()));
     check_fresh_covariance();
     m_recorded = 0;
   }
@@ -415,11 +442,11 @@ void fuzz(FuzzedDataProvider& in) {
   }
   FUZZ_CHECK(orders_valid<Model>(orders));
 
-  const bonl::EstimatorOptions options = decode_options(in);
+  const FuzzedOptions options = decode_options(in);
   print(options);
   std::optional<Harness<Model>> harness;
   try {
-    harness.emplace(*structure, options);
+    harness.emplace(*structure, options.options, model_settings<Model>(options.c0));
   } catch (const std::invalid_argument& e) {
     if (options_valid<Model>(options)) std::fprintf(stderr, "valid options rejected: %s\n", e.what());
     FUZZ_CHECK(!options_valid<Model>(options));

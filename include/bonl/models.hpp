@@ -8,9 +8,10 @@
 // Model concept (what Estimator<Model> needs):
 //   Scalar, kNumParams (or Eigen::Dynamic), Params, VectorX, kHasInternalVariables, kName;
 //   num_params(), theta(), set_theta(), try_simulate_deviations(u, y) (the free run of u - u0 to
-//   y - y0; detail::ModelRuns adds the operating point), initial_estimate(c0), constrain(theta);
-//   KeyTerms(model, KeyTermMethod) and OutputErrorTerms(model, hold), each with reset() and one
-//   step() per sample (models/model_steps.hpp);
+//   y - y0; detail::ModelRuns adds the operating point), constrain(theta);
+//   KeyTerms(model, KeyTermMethod) and OutputErrorTerms(model), each with reset() and one
+//   step() per sample (models/model_steps.hpp); optionally settings of its own beside the
+//   estimator's options (EstimatorSettings, models/estimator_settings.hpp);
 // and describes itself (kDescription, orders(), parameter(i), set_parameter(i, v): model_description.hpp),
 // which is all the JSON format, the Python bindings, the fuzz harness and the tests need: adding a
 // model is its header and one entry in bonl::Models below.

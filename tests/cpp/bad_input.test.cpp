@@ -371,18 +371,32 @@ TEST_CASE("E4-E11 identify and Estimator reject settings out of range", "[bad_in
                      },
                      "p0 (initial covariance scale) must be finite and > 0"});
   }
+  // c0 and backlash_hold are the P-H-W model's own settings (BacklashEstimatorSettings).
+  const auto settings_with = [](double c0, Eigen::Index hold) {
+    bonl::PseudoHammersteinWienerd::EstimatorSettings settings;
+    settings.c0 = c0;
+    settings.backlash_hold = hold;
+    return settings;
+  };
   for (double c0 : {-0.01, kNaN, kInf}) {
     cases.push_back({"E10 c0 " + std::to_string(c0),
-                     [&, c0] { bonl::identify(model, u, y, with([c0](auto& o) { o.c0 = c0; })); },
+                     [&, c0] { bonl::identify(model, u, y, bonl::IdentifyOptions{}, settings_with(c0, 200)); },
+                     "c0 (initial backlash half-width) must be finite and >= 0"});
+    cases.push_back({"E10 c0 " + std::to_string(c0) + ", Estimator",
+                     [&, c0] {
+                       bonl::Estimator<bonl::PseudoHammersteinWienerd> estimator(model, {}, settings_with(c0, 200));
+                     },
                      "c0 (initial backlash half-width) must be finite and >= 0"});
   }
+  cases.push_back({"E10 backlash_hold -1",
+                   [&] { bonl::identify(model, u, y, bonl::IdentifyOptions{}, settings_with(0.01, -1)); },
+                   "backlash_hold must be >= 0"});
   check_cases<std::invalid_argument>(cases);
-  // The boundaries are accepted: lambda = 1, c0 = 0, initial_samples = 0.
+  // The boundaries are accepted: lambda = 1, c0 = 0, backlash_hold = 0, initial_samples = 0.
   CHECK(bonl::identify(model, u, y, with([](auto& o) {
           o.forgetting = bonl::ForgettingSchedule::constant(1.0);
-          o.c0 = 0.0;
           o.refine_iterations = 0;
-        })).theta().allFinite());
+        }), settings_with(0.0, 0)).theta().allFinite());
 }
 
 TEST_CASE("E17 estimate_recursively and refine_output_error check their record and settings", "[bad_input][estimator]") {

@@ -45,8 +45,14 @@ TEST_CASE("estimator settings out of range are rejected", "[errors]") {
   options.p0 = 0.0;
   CHECK_THROWS_WITH(bonl::Estimator<bonl::PaperPseudoHammersteinWiener>(model, options), Contains("p0"));
   options.p0 = 1e6;
-  options.c0 = -1.0;
-  CHECK_THROWS_WITH(bonl::Estimator<bonl::PaperPseudoHammersteinWiener>(model, options), Contains("c0"));
+  // The model's own settings (P-H-W: BacklashEstimatorSettings), checked with the options.
+  bonl::PaperPseudoHammersteinWiener::EstimatorSettings settings;
+  settings.c0 = -1.0;
+  CHECK_THROWS_WITH(bonl::Estimator<bonl::PaperPseudoHammersteinWiener>(model, options, settings), Contains("c0"));
+  settings.c0 = 0.01;
+  settings.backlash_hold = -1;
+  CHECK_THROWS_WITH(bonl::Estimator<bonl::PaperPseudoHammersteinWiener>(model, options, settings),
+                    Contains("backlash_hold must be >= 0"));
 }
 
 TEST_CASE("identify rejects bad records", "[errors]") {

@@ -74,19 +74,20 @@ TEST_CASE("a denormal forgetting factor without a ceiling never makes P non-fini
 
 // fuzz_estimator_update (found in CI, a fault of the harness's oracle, not of the estimator): a float
 // P-H-W with c0 = 4.5e218, beyond float's range, under the output-error method. That method starts
-// from c = 0 and never reads c0 (EstimatorOptions::c0), so the estimator accepts it; the methods that
-// start from c = c0 refuse it, since c(0) would be infinite in float. The oracle now says the same.
+// from c = 0 and never reads c0 (the model's EstimatorSettings::c0), so the estimator accepts it; the
+// methods that start from c = c0 refuse it, since c(0) would be infinite in float. The oracle now says the same.
 TEST_CASE("c0 beyond the scalar's range matters only to the methods that start from it", "[fuzz]") {
   using Model = bonl::PseudoHammersteinWiener<float, 3, 2, 3>;
   const Model structure(3, 2, 5, 3);
   bonl::EstimatorOptions options;
-  options.c0 = 4.5184223339331481e+218;
+  Model::EstimatorSettings settings;
+  settings.c0 = 4.5184223339331481e+218;
   options.method = bonl::Method::OutputError;
-  bonl::Estimator<Model> estimator(structure, options);
+  bonl::Estimator<Model> estimator(structure, options, settings);
   CHECK(estimator.theta()[structure.num_params() - 1] == 0.0f);
   CHECK(estimator.update(0.5f, 0.1f) == bonl::UpdateStatus::Updated);
   for (const bonl::Method method : {bonl::Method::EquationError, bonl::Method::Paper}) {
     options.method = method;
-    CHECK_THROWS_AS(bonl::Estimator<Model>(structure, options), std::invalid_argument);
+    CHECK_THROWS_AS(bonl::Estimator<Model>(structure, options, settings), std::invalid_argument);
   }
 }

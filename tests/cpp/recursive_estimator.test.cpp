@@ -29,9 +29,15 @@ bonl::EstimatorOptions options_for(bonl::Method method) {
   bonl::EstimatorOptions options;
   options.method = method;
   options.p0 = kP0;
-  options.c0 = kC0;
   options.forgetting = bonl::ForgettingSchedule::paper();  // 0.98 for 200 samples, then 1
   return options;
+}
+
+/// The P-H-W model's own settings: c(0) = kC0.
+bonl::BacklashEstimatorSettings backlash_settings() {
+  bonl::BacklashEstimatorSettings settings;
+  settings.c0 = kC0;
+  return settings;
 }
 
 double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
@@ -133,7 +139,7 @@ void require_matches(const Est& est, const Ref& reference, int k) {
 TEST_CASE("Paper method, P-H-W: first steps reproduce eqs. (21)-(31)", "[estimator][paper][phw]") {
   bonl::PseudoHammersteinWiener<double> model(1, 1, 0, 1);
   REQUIRE(model.num_params() == 7);
-  bonl::Estimator<decltype(model)> est(model, options_for(bonl::Method::Paper));
+  bonl::Estimator<decltype(model)> est(model, options_for(bonl::Method::Paper), backlash_settings());
   PaperPhwReference reference;
 
   // theta(0) = [0, ..., 0, c0], P(0) = p0 I.
@@ -238,7 +244,7 @@ TEST_CASE("Default method, P-H-W: gap samples are skipped, edges give s = -1 / +
   bonl::PseudoHammersteinWiener<double> model(1, 1, 0, 1);
   bonl::EstimatorOptions options = options_for(bonl::Method::EquationError);
   options.internal_refresh = 1;  // internal variables from the current estimate
-  bonl::Estimator<decltype(model)> est(model, options);
+  bonl::Estimator<decltype(model)> est(model, options, backlash_settings());
   ReferenceRls reference(bonl_test::vec({0, 0, 0, 0, 0, 0, kC0}), kP0);
   const auto clip = [](double x, double y, double c) { return std::min(std::max(x, y - c), y + c); };
 

@@ -33,11 +33,11 @@ TEMPLATE_LIST_TEST_CASE("identify is exact under data scaled by powers of two", 
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 11);
   const double su = 256.0, sy = 1.0 / 1024.0;
   const TestType original = bonl::identify(truth, u, y);
-  bonl::IdentifyOptions options;  // c0, the initial backlash width, is in the output's units
-  options.c0 = bonl::IdentifyOptions{}.c0 * sy;
+  // The model's own settings in the data's units (P-H-W: c0, the initial backlash width, is in the output's).
+  const auto settings = bonl::ModelSettings<TestType>{}.rescaled(su, sy);
   // The structure in the data's units: its knots (hinges) are in the output's units too.
-  const TestType scaled =
-      bonl::identify(bonl::rescaled(truth, su, sy), Eigen::VectorXd(su * u), Eigen::VectorXd(sy * y), options);
+  const TestType scaled = bonl::identify(bonl::rescaled(truth, su, sy), Eigen::VectorXd(su * u),
+                                         Eigen::VectorXd(sy * y), bonl::IdentifyOptions{}, settings);
   const TestType expected = bonl::rescaled(original, su, sy);
   CHECK(scaled.theta() == expected.theta());
 }

@@ -276,7 +276,29 @@ def test_estimator_only_settings(settings, message):
     raises(ValueError, message, bonl.Estimator, models()["PseudoHammersteinWiener"], **settings)
 
 
-@pytest.mark.parametrize("settings", [dict(passes=2**40), dict(p0="1e6"), dict(c0=None), dict(method=None)], ids=repr)
+MODEL_SETTINGS = [dict(c0=0.02), dict(backlash_hold=100)]
+
+
+@pytest.mark.parametrize("name", [n for n in MODEL_NAMES if n != "PseudoHammersteinWiener"])
+@pytest.mark.parametrize("settings", MODEL_SETTINGS, ids=repr)
+def test_a_models_own_setting_given_to_another_model_is_a_value_error(name, settings):
+    """c0 and backlash_hold are the PseudoHammersteinWiener model's settings: another model refuses them by name."""
+    model = models()[name]
+    u = signal(100, 6)
+    (option,) = settings
+    message = f"{option} is an option of the PseudoHammersteinWiener estimator only, not of {name}"
+    raises(ValueError, message, bonl.Estimator, model, **settings)
+    raises(ValueError, message, bonl.identify, model, u, model.simulate(u), **settings)
+
+
+def test_the_pseudo_hammerstein_wiener_estimator_starts_from_its_c0():
+    model = models()["PseudoHammersteinWiener"]
+    assert bonl.Estimator(model, method="paper").theta[-1] == 0.01
+    assert bonl.Estimator(model, method="paper", c0=0.05).theta[-1] == 0.05
+    assert bonl.Estimator(model, c0=0.05).theta[-1] == 0.0  # output_error starts at c = 0
+
+
+@pytest.mark.parametrize("settings", [dict(passes=2**40), dict(p0="1e6"), dict(c0="0.01"), dict(method=None)], ids=repr)
 def test_e16_settings_of_the_wrong_type_are_type_errors(settings):
     model = models()["Hammerstein"]
     u = signal(60, 6)

@@ -79,11 +79,13 @@ class AdaptiveInverse {
   /// a model without an inverse.
   /// \param initial the identified model to start from
   /// \param options the inverse's, the estimator's and the guard's options
-  explicit AdaptiveInverse(const Model& initial, const AdaptiveInverseOptions& options = {})
+  /// \param settings the model's own estimator settings (Estimator)
+  explicit AdaptiveInverse(const Model& initial, const AdaptiveInverseOptions& options = {},
+                           const ModelSettings<Model>& settings = {})
       : m_options(validated(options)),
         m_model(initial),
         m_inverse(initial, options.inverse),
-        m_estimator(initial, options.estimator) {
+        m_estimator(initial, options.estimator, settings) {
     m_estimator.reset(initial.theta());
   }
 

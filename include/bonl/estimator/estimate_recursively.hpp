@@ -21,13 +21,14 @@ namespace bonl {
 /// are not used
 /// \param records the records, each an input u and measured output y of equal length
 /// \param options the method, passes and the estimator's options
+/// \param settings the model's own estimator settings (Estimator)
 /// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model>
 Model estimate_recursively(const Model& structure, const Records<typename Model::Scalar>& records,
-                           const IdentifyOptions& options) {
+                           const IdentifyOptions& options, const ModelSettings<Model>& settings = {}) {
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   detail::require_records(records, structure.num_params());
-  Estimator<Model> estimator(structure, options);
+  Estimator<Model> estimator(structure, options, settings);
   for (int pass = 0; pass < options.passes; ++pass) {
     for (std::size_t r = 0; r < records.size(); ++r) {
       if (pass > 0 || r > 0) estimator.start_pass();
@@ -52,14 +53,15 @@ Model estimate_recursively(const Model& structure, const Records<typename Model:
 /// \param u the input, one record
 /// \param y the measured output, as long as u
 /// \param options the method, passes and the estimator's options
+/// \param settings the model's own estimator settings (Estimator)
 /// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model, typename U, typename Y>
 Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
-                           const IdentifyOptions& options) {
+                           const IdentifyOptions& options, const ModelSettings<Model>& settings = {}) {
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   detail::require_record(u, y, structure.num_params());
   const typename Model::VectorX input = u, output = y;
-  return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options);
+  return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options, settings);
 }
 
 }  // namespace bonl

@@ -89,15 +89,16 @@ struct HasIdentifyStarts<Model, std::void_t<decltype(Model::identify_starts(
 /// identify() without the input range.
 template <class Model>
 Model identify_records(const Model& structure, const Records<typename Model::Scalar>& records,
-                       const IdentifyOptions& options) {
+                       const IdentifyOptions& options, const ModelSettings<Model>& settings) {
   options.validate();
+  settings.validate();
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   detail::require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
   detail::require_records(records, structure.num_params());
 
   const bool least_squares_arx = options.method == Method::EquationError && !Model::kHasInternalVariables;
   if (options.method == Method::Paper || least_squares_arx || options.refine_iterations == 0) {
-    return estimate_recursively(structure, records, options);
+    return estimate_recursively(structure, records, options, settings);
   }
   // The blocks see the deviations from the operating point, in identify's units: identify those
   // (one copy of the records), then put the operating point and the data's units back.
@@ -107,10 +108,10 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
     const ScaledRecords<typename Model::Scalar> transformed(records, scale, u0, y0);
     IdentifyOptions inner = options;
     inner.normalise = false;
-    inner.c0 = options.c0 / scale.y;
     Model at_zero = rescaled(structure, 1.0 / scale.u, 1.0 / scale.y);
     at_zero.set_operating_point(0.0, 0.0);
-    Model model = rescaled(identify_records(at_zero, transformed.views, inner), scale.u, scale.y);
+    const auto inner_settings = settings.rescaled(1.0 / scale.u, 1.0 / scale.y);  // exact: powers of two
+    Model model = rescaled(identify_records(at_zero, transformed.views, inner, inner_settings), scale.u, scale.y);
     model.set_operating_point(u0, y0);
     return model;
   }
@@ -127,12 +128,12 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
   start_options.window.enabled = false;
   IdentifyOptions other_options = start_options;
   other_options.method = options.method == Method::OutputError ? Method::EquationError : Method::OutputError;
-  const IdentifyOptions* settings[] = {&start_options, &other_options};
+  const IdentifyOptions* start_settings[] = {&start_options, &other_options};
   std::vector<Model> starts;
   std::string failures;
-  for (const IdentifyOptions* start : settings) {
+  for (const IdentifyOptions* start : start_settings) {
     try {
-      starts.push_back(estimate_recursively(structure, records, *start));
+      starts.push_back(estimate_recursively(structure, records, *start, settings));
     } catch (const NumericalError& error) {
       failures += std::string(failures.empty() ? "" : "; ") + error.what();
     }
@@ -161,15 +162,17 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
 ///   keeps that estimate (that is what an ARX model is).
 /// Where it refines, all of it runs on the data in identify's own units (IdentifyOptions::normalise),
 /// and the model comes back in the data's units. Where it does not, the result is what
-/// Estimator::update gives over the records, in the data's units.
+/// Estimator::update gives over the records, in the data's units. `settings`: the model's own, as
+/// Estimator takes them (P-H-W: c0 and backlash_hold), in the data's units.
 /// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
 /// are not used
 /// \param records the records, each an input u and measured output y of equal length
 /// \param options the method, passes, refinement, normalisation and operating point
+/// \param settings the model's own estimator settings, in the data's units
 /// \return the identified model, in the data's units, with its operating point and input range
 template <class Model>
 Model identify(const Model& structure, const Records<typename Model::Scalar>& records,
-               const IdentifyOptions& options = {}) {
+               const IdentifyOptions& options = {}, const ModelSettings<Model>& settings = {}) {
   detail::require_records(records, structure.num_params());
   Model at = structure;
   if (options.operating_point == OperatingPointSource::Mean) {
@@ -183,7 +186,7 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
   } else if (options.operating_point == OperatingPointSource::Initial) {
     at.set_operating_point(static_cast<double>(records.front().u[0]), static_cast<double>(records.front().y[0]));
   }
-  Model model = detail::identify_records(at, records, options);
+  Model model = detail::identify_records(at, records, options, settings);
   double min = std::numeric_limits<double>::infinity(), max = -min;
   for (const auto& record : records) {
     min = std::min(min, static_cast<double>(record.u.minCoeff()));
@@ -199,16 +202,18 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
 /// \param u the input, one record
 /// \param y the measured output, as long as u
 /// \param options the method, passes, refinement, normalisation and operating point
+/// \param settings the model's own estimator settings, in the data's units
 /// \return the identified model, in the data's units, with its operating point and input range
 template <class Model, typename U, typename Y>
 Model identify(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
-               const IdentifyOptions& options = {}) {
+               const IdentifyOptions& options = {}, const ModelSettings<Model>& settings = {}) {
   options.validate();
+  settings.validate();
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   detail::require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
   detail::require_record(u, y, structure.num_params());
   const typename Model::VectorX input = u, output = y;
-  return identify(structure, Records<typename Model::Scalar>{{input, output}}, options);
+  return identify(structure, Records<typename Model::Scalar>{{input, output}}, options, settings);
 }
 
 }  // namespace bonl

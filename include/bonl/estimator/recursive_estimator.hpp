@@ -34,7 +34,6 @@ struct EstimatorOptions {
   /// simulated output, and larger first steps destabilise the simulation it is taken along), the
   /// paper's 1e6 for equation_error and paper (linear regressions: P(0) large says "no prior").
   std::optional<double> p0;
-  double c0 = 0.01; ///< initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0)
   /// Method::EquationError only: the internal variables are computed from a copy of theta refreshed
   /// every `internal_refresh` samples, not from the running estimate (see Estimator::update).
   Eigen::Index internal_refresh = 100;
@@ -59,9 +58,6 @@ struct EstimatorOptions {
   /// move one outside is shortened (halved up to 10 times, else not taken), counted in
   /// health().projections. In (0, 1]; 0.999 admits time constants up to about 1000 samples.
   double stability_radius = 0.999;
-  /// P-H-W: c is held at 0 for this many samples after each start from rest (the model's
-  /// OutputErrorTerms).
-  Eigen::Index backlash_hold = 200;
   /// Levenberg-Marquardt over windows of recent samples, in slices beside the recursion, whose
   /// estimate it replaces where it simulates newer data better (estimator/window_refinement.hpp).
   WindowRefinementOptions window;
@@ -87,7 +83,6 @@ struct EstimatorOptions {
     const double p0_value = resolved_p0();
     detail::require(std::isfinite(p0_value) && p0_value > 0.0, "p0 (initial covariance scale) must be finite and > 0, got " +
                                                                    detail::format_number(p0_value));
-    detail::require(std::isfinite(c0) && c0 >= 0.0, "c0 (initial backlash half-width) must be finite and >= 0");
     detail::require(internal_refresh >= 1, "internal_refresh must be >= 1");
     const double ceiling = resolved_trace_ceiling();
     detail::require(ceiling >= 1.0, "trace_ceiling must be >= 1 (a multiple of trace(P(0))) or infinity, got " +
@@ -95,7 +90,6 @@ struct EstimatorOptions {
     detail::require(recover_after >= 0, "recover_after must be >= 0 (0: never recover automatically)");
     detail::require(stability_radius > 0.0 && stability_radius <= 1.0,
                     "stability_radius must be in (0, 1], got " + detail::format_number(stability_radius));
-    detail::require(backlash_hold >= 0, "backlash_hold must be >= 0");
     window.validate();
   }
 };
@@ -158,22 +152,26 @@ class Estimator {
   using Scalar = typename Model::Scalar;  ///< the model's arithmetic type
   using Params = typename Model::Params;  ///< the model's parameter vector
   using Covariance = Eigen::Matrix<Scalar, Model::kNumParams, Model::kNumParams>;  ///< the covariance P (fixed size when the model's orders are)
+  using Settings = ModelSettings<Model>;  ///< what the model adds to the options (NoEstimatorSettings if nothing)
 
-  /// `structure` gives the orders; the estimate starts from zero (c = c0 for the equation-error and
-  /// paper methods, c = 0 for the output-error method).
+  /// `structure` gives the orders; `settings` are the model's own (P-H-W: c0 and backlash_hold). The
+  /// estimate starts from zero for the output-error method and from the model's initial_estimate
+  /// (P-H-W: c = c0) for the equation-error and paper methods.
   /// \param structure the model whose orders (and knots, thresholds) are estimated; its parameters are not used
   /// \param options the method, forgetting, P(0) and safeguards; checked here (std::invalid_argument)
-  explicit Estimator(const Model& structure, const EstimatorOptions& options = {})
-      : m_model(validated(structure, options)), m_terms(structure, key_term_method(options.method)),
-        m_outputs(structure, options.backlash_hold), m_rls(structure.num_params(), Scalar(options.resolved_p0())),
+  /// \param settings the model's own estimator settings; checked here (std::invalid_argument)
+  explicit Estimator(const Model& structure, const EstimatorOptions& options = {}, const Settings& settings = {})
+      : m_model(validated(structure, options, settings)), m_terms(structure, key_term_method(options.method)),
+        m_outputs(detail::output_error_terms(structure, settings)),
+        m_rls(structure.num_params(), Scalar(options.resolved_p0())),
         m_theta_internal(Params::Zero(structure.num_params())), m_step(m_theta_internal), m_options(options),
-        m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
+        m_settings(settings), m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
     m_u0 = static_cast<Scalar>(structure.u0());
     m_y0 = static_cast<Scalar>(structure.y0());
     if (options.method == Method::OutputError) {
       m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
       if (options.window.enabled) {
-        m_window.emplace(structure, options.window, options.backlash_hold, options.stability_radius, m_p0);
+        m_window.emplace(structure, options.window, settings, options.stability_radius, m_p0);
       }
     }
     reset();
@@ -181,8 +179,9 @@ class Estimator {
 
   /// Everything back to the start: initial theta, P = p0 I, internals at rest.
   void reset() {
-    const double c0 = m_options.method == Method::OutputError ? 0.0 : m_options.c0;
-    m_rls.reset(m_model.initial_estimate(Scalar(c0)), Scalar(m_p0));
+    m_rls.reset(m_options.method == Method::OutputError ? Params::Zero(m_rls.size())
+                                                        : detail::initial_estimate(m_model, m_settings),
+                Scalar(m_p0));
     start_pass();
     clear_history();
   }
@@ -350,6 +349,9 @@ class Estimator {
   /// The options the estimator was constructed with
   /// \return the options, with their unset optionals still unset (resolved_*() gives the values in force)
   const EstimatorOptions& options() const noexcept { return m_options; }
+  /// The model's own settings the estimator was constructed with
+  /// \return the settings (P-H-W: c0 and backlash_hold; other models: none)
+  const Settings& settings() const noexcept { return m_settings; }
   /// The forgetting factor's current memory length 1 / (1 - lambda) under an adaptive-memory
   /// schedule (NaN for a step schedule).
   /// \return 1 / (1 - lambda) in samples, or NaN
@@ -360,8 +362,9 @@ class Estimator {
  private:
   /// Checks the options and the parameter count before any storage is sized from them (the
   /// output-error terms keep na x n sensitivities).
-  static const Model& validated(const Model& structure, const EstimatorOptions& options) {
+  static const Model& validated(const Model& structure, const EstimatorOptions& options, const Settings& settings) {
     options.validate();
+    settings.validate();
     detail::require_order(structure.num_params(), 1, "number of parameters");
     return structure;
   }
@@ -544,6 +547,7 @@ class Estimator {
   Params m_theta_internal;  // equation_error: the copy of theta the internal variables use
   Params m_step;            // output_error: the change of theta in the current update
   EstimatorOptions m_options;
+  Settings m_settings;
   ForgettingSchedule m_forgetting;  // resolved from the options
   double m_p0;                      // resolved from the options
   detail::AdaptiveMemory m_memory;

@@ -42,6 +42,7 @@
 
 #include "../detail/damping.hpp"
 #include "../detail/validate.hpp"
+#include "../models/estimator_settings.hpp"
 
 namespace bonl {
 
@@ -93,15 +94,15 @@ class WindowRefinement {
   /// length, at most 1).
   /// \param structure the model whose orders are refined
   /// \param options the window's length and the work per sample
-  /// \param hold the estimator's backlash hold (OutputErrorTerms)
+  /// \param settings the estimator's model settings (for its OutputErrorTerms)
   /// \param radius the estimator's stability radius
   /// \param p0 the estimator's P(0) scale
-  WindowRefinement(const Model& structure, const WindowRefinementOptions& options, Eigen::Index hold, double radius,
-                   double p0)
+  WindowRefinement(const Model& structure, const WindowRefinementOptions& options,
+                   const ModelSettings<Model>& settings, double radius, double p0)
       : m_model(structure), m_options(options), m_radius(Scalar(radius)), m_p0(Scalar(p0)),
         m_capacity(2 * options.length), m_u(static_cast<std::size_t>(m_capacity)),
-        m_y(m_u.size()), m_e(m_u.size()), m_start_run(structure, hold), m_trial(m_start_run),
-        m_half_trial(m_start_run), m_half_run(m_start_run), m_catch_up(m_start_run) {
+        m_y(m_u.size()), m_e(m_u.size()), m_start_run(detail::output_error_terms(structure, settings)),
+        m_trial(m_start_run), m_half_trial(m_start_run), m_half_run(m_start_run), m_catch_up(m_start_run) {
     const Eigen::Index n = structure.num_params();
     m_minimum = std::min(options.length, std::max<Eigen::Index>(100, 10 * n));
     m_theta = Params::Zero(n);

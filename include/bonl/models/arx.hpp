@@ -130,10 +130,6 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     return detail::free_run(this->linear_block(), u, y, detail::Identity{}, detail::Identity{});
   }
-
-  /// Where the recursive estimator starts (all zero).
-  /// \return theta to start the recursion from
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
 
@@ -174,10 +170,9 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
   /// sensitivities are all of psi (detail::LinearOutputError). Nothing to hold at the start.
   class OutputErrorTerms {
    public:
-    /// Starts the free run of model at rest; some models take a second argument, hold, the number of
-    /// first samples they hold their internal state for.
+    /// Starts the free run of model at rest.
     /// \param model the model whose orders the run has; only its orders are read
-    explicit OutputErrorTerms(const ARX& model, Eigen::Index /*hold*/ = 0)
+    explicit OutputErrorTerms(const ARX& model)
         : m_linear(model.na(), model.nb(), model.nk(), model.num_params(), model.ni()),
           m_psi(Params::Zero(model.num_params())) {}
     /// Back to rest, sensitivities included.

@@ -253,9 +253,6 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     return true;
   }
 
-  /// Where the recursive estimator starts (all zero: no force, d = 1, 0, ..., 0).
-  /// \return theta to start the recursion from
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
 
@@ -365,7 +362,7 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
   class OutputErrorTerms {
    public:
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
-    explicit OutputErrorTerms(const BoucWenFeedback& model, Eigen::Index /*hold*/ = 0)
+    explicit OutputErrorTerms(const BoucWenFeedback& model)
         : m_law(model), m_u(model.nk() + model.nb() + 1), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()),
           m_nd(model.nd()), m_first_d(model.first_d()), m_ni(model.ni()), m_y(VectorX::Zero(std::max<Eigen::Index>(model.ni(), 1))),
           m_dy(SensitivityLags::Zero(model.num_params(), std::max<Eigen::Index>(model.ni(), 1))),

@@ -66,10 +66,6 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     return this->simulate_front(u, y, this->linear_block(), [](Scalar x) { return x; });
   }
 
-  /// Where the recursive estimator starts (all zero; c0 is only used by models with a backlash).
-  /// \return theta to start the recursion from
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
-
   /// Key-term form (eq. 14): y(k) = [basis(u(k-nk)), w lags, -x lags] . theta. The past x are the
   /// measured y for the equation-error method and the model's own run for the paper's. With
   /// integrators the target is y(k) less their part, known from the past x.
@@ -102,7 +98,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   class OutputErrorTerms {
    public:
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
-    explicit OutputErrorTerms(const Hammerstein& model, Eigen::Index /*hold*/ = 0)
+    explicit OutputErrorTerms(const Hammerstein& model)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()) {}
     /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept { m_front.reset(); }

@@ -84,10 +84,6 @@ class HammersteinWiener
     return this->simulate_front(u, y, this->linear_block(), [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
   }
 
-  /// Where the recursive estimator starts (all zero; c0 is only used by models with a backlash).
-  /// \return theta to start the recursion from
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(this->num_params()); }
-
   /// Key-term form: y(k) = x(k) + sum_{m>=2} q_m x(k)^m with x(k) the front's key-term expression,
   /// i.e. regressor [front, x^2(k), ..., x^r1(k)] with x(k) the a-priori estimate. The past x: the
   /// equation-error method maps the measured y back through q^-1 (the branch nearest the model's own
@@ -127,7 +123,7 @@ class HammersteinWiener
   class OutputErrorTerms {
    public:
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
-    explicit OutputErrorTerms(const HammersteinWiener& model, Eigen::Index /*hold*/ = 0)
+    explicit OutputErrorTerms(const HammersteinWiener& model)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_output(model.r1(), model.num_params()),
           m_front_size(model.num_params() - model.r1() + 1), m_psi(Params::Zero(model.num_params())) {}
     /// \copydoc ARX::OutputErrorTerms::reset

@@ -3,7 +3,7 @@
 // itself, each one call per sample that returns what it produced:
 //   KeyTerms(model, KeyTermMethod)  step(theta, u, y) -> Regression: its key-term regressor (eq. 14
 //                                   and its kin) with the internal variables estimated as the method says;
-//   OutputErrorTerms(model, hold)   step(theta, u) -> SimulationStep: one step of its free run with the
+//   OutputErrorTerms(model)         step(theta, u) -> SimulationStep: one step of its free run with the
 //                                   output's sensitivity to theta; accept() stores the step, and
 //                                   correct(delta) moves the stored run to first order along a change
 //                                   delta of the estimate (after an update, or to reuse a run's state
@@ -12,6 +12,8 @@
 // nothing of the estimator.
 
 #include <Eigen/Core>
+
+#include "estimator_settings.hpp"
 
 namespace bonl {
 

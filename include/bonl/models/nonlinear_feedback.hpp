@@ -330,10 +330,6 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     }
     return true;
   }
-
-  /// Where the recursive estimator starts (all zero: no feedback, d = 1, 0, ..., 0).
-  /// \return theta to start the recursion from
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
 
@@ -484,7 +480,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   class OutputErrorTerms {
    public:
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
-    explicit OutputErrorTerms(const NonlinearFeedback& model, Eigen::Index /*hold*/ = 0)
+    explicit OutputErrorTerms(const NonlinearFeedback& model)
         : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()),
           m_nd(model.nd()), m_nv(model.nv()), m_first_f(model.first_f()),
           m_feedback_size(model.r() - 1 + model.nh() + model.np()), m_first_d(model.first_d()),

@@ -237,10 +237,6 @@ class PrandtlIshlinskiiHammerstein
     const auto input = [&block](Scalar v) { return block.step(v); };
     return detail::free_run(this->linear_block(), u, y, input, detail::Identity{});
   }
-
-  /// Where the recursive estimator starts (all zero).
-  /// \return theta to start the recursion from
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
 
@@ -363,7 +359,7 @@ class PrandtlIshlinskiiHammerstein
   class OutputErrorTerms {
    public:
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
-    explicit OutputErrorTerms(const PrandtlIshlinskiiHammerstein& model, Eigen::Index /*hold*/ = 0)
+    explicit OutputErrorTerms(const PrandtlIshlinskiiHammerstein& model)
         : m_basis(model), m_lags(model.na(), model.num_params(), model.ni()), m_nb(model.nb()), m_na(model.na()),
           m_psi(Params::Zero(model.num_params())), m_work(Eigen::Matrix<Scalar, Na_, 1>::Zero(model.na())) {}
     /// \copydoc ARX::OutputErrorTerms::reset

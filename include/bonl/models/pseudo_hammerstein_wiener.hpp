@@ -8,10 +8,33 @@
 #include <string>
 
 #include "../blocks/backlash.hpp"
+#include "../detail/validate.hpp"
 #include "detail/hammerstein_front.hpp"
 #include "detail/model_runs.hpp"
 
 namespace bonl {
+
+/// What the P-H-W model adds to the estimator's options (its EstimatorSettings; Estimator, identify).
+struct BacklashEstimatorSettings {
+  /// The initial backlash half-width c(0) of the equation-error and paper methods (the paper's 0.01),
+  /// in the output's units; the output-error method starts at c = 0.
+  double c0 = 0.01;
+  /// The output-error method holds c at 0 for this many samples after each start from rest (the
+  /// model's OutputErrorTerms).
+  Eigen::Index backlash_hold = 200;
+
+  /// Throws std::invalid_argument for a setting out of range (docs/reference/bad_input.md lists them).
+  void validate() const {
+    detail::require(std::isfinite(c0) && c0 >= 0.0, "c0 (initial backlash half-width) must be finite and >= 0");
+    detail::require(backlash_hold >= 0, "backlash_hold must be >= 0");
+  }
+  /// The settings for the data multiplied by u_scale and y_scale: c0 is in the output's units.
+  /// \param y_scale the output's factor (nothing here is in the input's units)
+  /// \return the settings for the scaled data
+  BacklashEstimatorSettings rescaled(double /*u_scale*/, double y_scale) const {
+    return {c0 * y_scale, backlash_hold};
+  }
+};
 
 /// The Pseudo-Hammerstein-Wiener (P-H-W) model: the Hammerstein model followed by a symmetric,
 /// unit-slope backlash of half-width c (eqs. 10-12), starting engaged at y(-1) = 0. Parameters in
@@ -110,12 +133,15 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     if (c < Scalar(0)) c = Scalar(0);
   }
 
+  /// What the model adds to the estimator's options (models/estimator_settings.hpp).
+  using EstimatorSettings = BacklashEstimatorSettings;
+
   /// Zero, but c = c0 (the paper starts from c(0) = 0.01).
-  /// \param c0 the backlash half-width to start from
+  /// \param settings the estimator settings: c0, the backlash half-width to start from
   /// \return theta to start the recursion from
-  Params initial_estimate(Scalar c0) const {
+  Params initial_estimate(const EstimatorSettings& settings) const {
     Params theta = Params::Zero(this->num_params());
-    theta[this->num_params() - 1] = c0;
+    theta[this->num_params() - 1] = Scalar(settings.c0);
     return theta;
   }
 
@@ -198,6 +224,11 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     explicit OutputErrorTerms(const PseudoHammersteinWiener& model, Eigen::Index hold = 0)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_last(model.num_params() - 1),
           m_psi(Params::Zero(model.num_params())), m_dy(m_psi), m_hold(hold) {}
+    /// The estimator's: hold = settings.backlash_hold.
+    /// \param model the model whose orders the run has; only its orders are read
+    /// \param settings the estimator settings, of which backlash_hold is read
+    OutputErrorTerms(const PseudoHammersteinWiener& model, const EstimatorSettings& settings)
+        : OutputErrorTerms(model, settings.backlash_hold) {}
     /// \copydoc ARX::OutputErrorTerms::reset
     void reset() noexcept {
       m_front.reset();

@@ -149,10 +149,6 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     return detail::free_run(this->linear_block(), u, y, detail::Identity{},
                             [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
   }
-
-  /// Where the recursive estimator starts (all zero).
-  /// \return theta to start the recursion from
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
 
@@ -213,7 +209,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     using Sensitivity = Eigen::Matrix<Scalar, kLinearParams, 1>;  ///< d x(k) / d[b, a], the linear block's part of the sensitivity
 
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
-    explicit OutputErrorTerms(const Wiener& model, Eigen::Index /*hold*/ = 0)
+    explicit OutputErrorTerms(const Wiener& model)
         : m_linear(model.na(), model.nb(), model.nk(), model.nb() + 1 + model.na(), model.ni()),
           m_output(model.r1(), model.num_params()), m_dx(Sensitivity::Zero(model.nb() + 1 + model.na())),
           m_psi(Params::Zero(model.num_params())) {}

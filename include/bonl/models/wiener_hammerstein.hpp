@@ -314,10 +314,6 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     }
     return true;
   }
-
-  /// Where the recursive estimator starts (all zero).
-  /// \return theta to start the recursion from
-  Params initial_estimate(Scalar /*c0*/) const { return Params::Zero(num_params()); }
   /// Projects an estimate onto the model's valid set: every theta is valid.
   void constrain(Params& /*theta*/) const noexcept {}
 
@@ -457,7 +453,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     using FrontSensitivity = Eigen::Matrix<Scalar, kFrontParams, 1>;  ///< d w(k) / d[b1, a1, f, g], the front's part of the sensitivity
 
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
-    explicit OutputErrorTerms(const WienerHammerstein& model, Eigen::Index /*hold*/ = 0)
+    explicit OutputErrorTerms(const WienerHammerstein& model)
         : m_first(model.na1(), model.nb1(), model.nk(), model.nb1() + 1 + model.na1()),
           m_middle(model), m_y(model.na2(), model.num_params(), model.ni()), m_nb2(model.nb2()), m_na2(model.na2()),
           m_first_size(model.nb1() + 1 + model.na1()), m_front_size(m_first_size + model.r() - 1 + model.nh()),

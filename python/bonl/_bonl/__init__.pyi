@@ -2165,8 +2165,8 @@ class Estimator:
     Parameters
     ----------
     model : one of bonl.MODELS
-        Gives the structure; the estimate starts from zero (c = c0 for equation_error and paper,
-        c = 0 for output_error).
+        Gives the structure; the estimate starts from zero (P-H-W: c = c0 for equation_error and
+        paper, c = 0 for output_error).
     method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
         The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
         method on the free-run simulation error. 'equation_error': internal variables from the measured
@@ -2177,8 +2177,6 @@ class Estimator:
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     trace_ceiling : float, optional
         trace(P) is kept at or below trace_ceiling * trace(P(0)) by reducing the forgetting where it
         would grow P beyond that (no covariance wind-up under poor excitation). >= 1; inf turns it off
@@ -2188,35 +2186,39 @@ class Estimator:
         0: never (check ``diverged`` and call ``recover()``).
     stability_radius : float, default 0.999
         output_error: the linear block's poles are kept inside this radius (updates shortened).
-    backlash_hold : int, default 200
-        output_error, P-H-W: c is held at 0 for this many samples after each start from rest.
     window : WindowRefinementOptions, optional
         output_error: the window refinement, Levenberg-Marquardt on the newest samples spread over the
         updates (``bonl.WindowRefinementOptions()``); None: off.
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     """
     @typing.overload
-    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, backlash_hold: typing.SupportsInt | typing.SupportsIndex = 200, window: WindowRefinementOptions | None = None) -> None:
+    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     def recover(self) -> None:
         """
@@ -2391,7 +2393,7 @@ class _SelectionData:
     """
     The records and options of a selection, checked once (bonl::SelectionData); made by _selection_data.
     """
-    def __getstate__(self) -> tuple[list, str, float, int, int, str, typing.Any, float | None, float, int, bool, typing.Any]:
+    def __getstate__(self) -> tuple[list, str, float, int, int, str, typing.Any, float | None, int, bool, typing.Any]:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
@@ -2475,12 +2477,12 @@ def _select(candidates: collections.abc.Sequence[PrandtlIshlinskiiHammerstein], 
     """
     C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
     """
-def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> _SelectionData:
+def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> _SelectionData:
     """
     bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. The keyword arguments after window are identify's.
     """
 @typing.overload
-def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> ARX:
+def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> ARX:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2506,8 +2508,6 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2522,6 +2522,12 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2543,7 +2549,7 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Hammerstein:
+def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Hammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2569,8 +2575,6 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2585,6 +2589,12 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2606,7 +2616,7 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> HammersteinWiener:
+def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> HammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2632,8 +2642,6 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2648,6 +2656,12 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2669,7 +2683,7 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PseudoHammersteinWiener:
+def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PseudoHammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2695,8 +2709,6 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2711,6 +2723,12 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2732,7 +2750,7 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Wiener:
+def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Wiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2758,8 +2776,6 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2774,6 +2790,12 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2795,7 +2817,7 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> WienerHammerstein:
+def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> WienerHammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2821,8 +2843,6 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2837,6 +2857,12 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2858,7 +2884,7 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> NonlinearFeedback:
+def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> NonlinearFeedback:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2884,8 +2910,6 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2900,6 +2924,12 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------
@@ -2921,7 +2951,7 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, c0: typing.SupportsFloat | typing.SupportsIndex = 0.01, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PrandtlIshlinskiiHammerstein:
+def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PrandtlIshlinskiiHammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2947,8 +2977,6 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         for the others.
     p0 : float, optional
         P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
-    c0 : float, default 0.01
-        Initial backlash half-width (P-H-W; equation_error and paper: output_error starts at 0).
     refine_iterations : int, default 100
         Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
         'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
@@ -2963,6 +2991,12 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
     
     Returns
     -------

@@ -257,47 +257,59 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
   void constrain(Params& /*theta*/) const noexcept {}
 
  private:
-  /// The Bouc-Wen law on theta: the next force, its partial derivatives, and its parameters' entries.
-  /// A step is w(k) = m w(k-1) + alpha dy, m = 1 - gamma |dy| - delta dy sign(w(k-1)), stepped at
-  /// most to the force's rest: m is held at 0 where a step would take it below (|dy| beyond about
-  /// 1 / (|gamma| + |delta|)), since there the stepped law overshoots and, from step to step, would
-  /// grow without bound where the law it steps saturates.
+  /// The Bouc-Wen law on theta, stepped backward (implicit Euler): the next force solves
+  ///   w(k) = w(k-1) + alpha dy - gamma |dy| w(k-1)' - delta dy |w(k)|  with w(k-1)' = w(k), i.e.
+  ///   w(k) = (w(k-1) + alpha dy) / (1 + gamma |dy| + delta dy s),  s = sign(w(k-1) + alpha dy),
+  /// which stays between w(k-1) + alpha dy and the law's saturation however large the step (the
+  /// forward step overshoots once gamma |dy| > 1 and then grows without bound), and keeps the key
+  /// terms linear: w(k) = w(k-1) + alpha dy - gamma |dy| w(k) - delta dy |w(k)|, with w(k) the
+  /// internal variable. The denominator is held at kFloor where a hardening law (delta < -gamma) with
+  /// a step beyond its reach would take it below.
   class Law {
    public:
     explicit Law(const BoucWenFeedback& model) : m_first(model.first_law()) {}
-    /// m, the factor w(k-1) is carried with (0 where it would be below).
-    template <typename Theta>
-    Scalar carried(const Theta& theta, Scalar w, Scalar dy) const noexcept {
-      const Scalar m = Scalar(1) - theta[m_first + 1] * std::abs(dy) - theta[m_first + 2] * dy * sign(w);
-      return m > Scalar(0) ? m : Scalar(0);
-    }
     /// w(k) from w(k-1) and dy(k).
     template <typename Theta>
     Scalar next(const Theta& theta, Scalar w, Scalar dy) const noexcept {
-      return carried(theta, w, dy) * w + theta[m_first] * dy;
+      return (w + theta[m_first] * dy) / denominator(theta, w, dy);
     }
     /// d w(k) / d w(k-1).
     template <typename Theta>
     Scalar by_force(const Theta& theta, Scalar w, Scalar dy) const noexcept {
-      return carried(theta, w, dy);
+      return Scalar(1) / denominator(theta, w, dy);
     }
-    /// d w(k) / d dy(k).
+    /// d w(k) / d dy(k), at w(k) = next.
     template <typename Theta>
-    Scalar by_step(const Theta& theta, Scalar w, Scalar dy) const noexcept {
-      const Scalar law = carried(theta, w, dy) > Scalar(0) ? theta[m_first + 1] * sign(dy) * w + theta[m_first + 2] * std::abs(w)
-                                                            : Scalar(0);
-      return theta[m_first] - law;
+    Scalar by_step(const Theta& theta, Scalar w, Scalar dy, Scalar next) const noexcept {
+      const Scalar den = denominator(theta, w, dy);
+      if (den == kFloor) return theta[m_first] / den;
+      return (theta[m_first] - next * (theta[m_first + 1] * sign(dy) + theta[m_first + 2] * sign(w + theta[m_first] * dy))) / den;
     }
-    /// weight * d w(k) / d [alpha, gamma, delta] added into out's entries.
+    /// weight * d w(k) / d [alpha, gamma, delta] added into out's entries, at w(k) = next.
     template <typename Theta, typename Out>
-    void add_regressor(const Theta& theta, Scalar w, Scalar dy, Scalar weight, Out& out) const noexcept {
+    void add_sensitivity(const Theta& theta, Scalar w, Scalar dy, Scalar next, Scalar weight, Out& out) const noexcept {
+      const Scalar den = denominator(theta, w, dy);
+      out[m_first] += weight * dy / den;
+      if (den == kFloor) return;
+      out[m_first + 1] -= weight * std::abs(dy) * next / den;
+      out[m_first + 2] -= weight * dy * std::abs(next) / den;
+    }
+    /// weight * the key-term regressor of [alpha, gamma, delta] with the step's w(k) = next:
+    /// [dy, -|dy| next, -dy |next|].
+    template <typename Out>
+    void add_regressor(Scalar dy, Scalar next, Scalar weight, Out& out) const noexcept {
       out[m_first] += weight * dy;
-      if (carried(theta, w, dy) == Scalar(0)) return;
-      out[m_first + 1] -= weight * std::abs(dy) * w;
-      out[m_first + 2] -= weight * dy * std::abs(w);
+      out[m_first + 1] -= weight * std::abs(dy) * next;
+      out[m_first + 2] -= weight * dy * std::abs(next);
     }
 
    private:
+    static constexpr Scalar kFloor = Scalar(1e-3);
+    template <typename Theta>
+    Scalar denominator(const Theta& theta, Scalar w, Scalar dy) const noexcept {
+      const Scalar den = Scalar(1) + theta[m_first + 1] * std::abs(dy) + theta[m_first + 2] * dy * sign(w + theta[m_first] * dy);
+      return den > kFloor ? den : kFloor;
+    }
     // The slope of |x|: 0 at 0, where |x| has no slope (the one-sided ones are -1 and 1).
     static Scalar sign(Scalar x) noexcept { return Scalar((x > 0) - (x < 0)); }
     Eigen::Index m_first;
@@ -330,12 +342,12 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
       for (Eigen::Index j = 0; j < m_na; ++j) m_phi[m_nb + 1 + j] = -m_z[j];
       // w(k-1) by the law from w(k-2) and the measured dy(k-1): its coefficients enter the regressor.
       const Scalar w2 = m_force[0], dy1 = m_y[0] - m_y[1];
+      const Scalar w1 = m_law.next(theta, w2, dy1);
       m_phi.segment(m_first_law, 3).setZero();
-      m_law.add_regressor(theta, w2, dy1, Scalar(-1), m_phi);
-      const Scalar held = m_law.carried(theta, w2, dy1) > Scalar(0) ? w2 : Scalar(0);  // w(k-2)'s part of w(k-1)
-      m_force.push(m_law.next(theta, w2, dy1));
+      m_law.add_regressor(dy1, w1, Scalar(-1), m_phi);
+      m_force.push(w1);
       for (Eigen::Index j = 1; j < m_nd; ++j) m_phi[m_first_d + j - 1] = -m_force[j];
-      const Scalar carried = m_integrators.carried() - held;
+      const Scalar carried = m_integrators.carried() - w2;
       const Scalar prediction = m_phi.dot(theta) + carried;
       const Scalar lag = std::isnan(y) ? prediction : y;
       m_y.push(lag);
@@ -407,8 +419,9 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
       // The force this step makes, for the steps after it (accept() stores it).
       const Scalar w = m_w[0], dy = y - m_y[0];
       m_w_next = m_law.next(theta, w, dy);
-      m_dw_next = m_law.by_force(theta, w, dy) * m_dw.col(0) + m_law.by_step(theta, w, dy) * (m_psi - m_dy.col(0));
-      m_law.add_regressor(theta, w, dy, Scalar(1), m_dw_next);
+      m_dw_next = m_law.by_force(theta, w, dy) * m_dw.col(0) +
+                  m_law.by_step(theta, w, dy, m_w_next) * (m_psi - m_dy.col(0));
+      m_law.add_sensitivity(theta, w, dy, m_w_next, Scalar(1), m_dw_next);
       m_output = y;
       return {y, m_psi, w};
     }

@@ -80,7 +80,7 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
         detail::kIntegratorsOrder}},
       {{{"b", ParameterShape::Vector, 0, "b_0..b_nb", nullptr, false, {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
-        {"alpha", ParameterShape::Number, 0, "the force's stiffness: dw = alpha dy where w = 0", nullptr, false, {}},
+        {"alpha", ParameterShape::Number, 0, "the force's stiffness: dw = alpha dy where w = 0 (>= 0)", nullptr, true, {}},
         {"gamma", ParameterShape::Number, 0, "the law's |dy| w coefficient (beta gamma)", nullptr, false,
          {-1, 0, 0, 0}},
         {"delta", ParameterShape::Number, 0, "the law's dy |w| coefficient (beta delta)", nullptr, false,
@@ -253,8 +253,13 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     return true;
   }
 
-  /// Projects an estimate onto the model's valid set: every theta is valid.
-  void constrain(Params& /*theta*/) const noexcept {}
+  /// Projects an estimate onto the model's valid set: alpha >= 0 (a restoring force's stiffness; a
+  /// negative one would push the output away, and under noise the recursion drifted there, along the
+  /// valley where alpha's linear part trades against A, and stayed).
+  /// \param theta the estimate, projected in place
+  void constrain(Params& theta) const noexcept {
+    if (theta[first_law()] < Scalar(0)) theta[first_law()] = Scalar(0);
+  }
 
  private:
   /// The Bouc-Wen law on theta, stepped backward (implicit Euler): the next force solves

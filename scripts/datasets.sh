@@ -29,7 +29,7 @@ for script in "${scripts[@]}"; do
   results+=("docs/results/datasets/$script.json")
 done
 step "examples/datasets/bouc_wen_law.py (the benchmark's own law on its records)"
-(cd examples/datasets && "$python" bouc_wen_law.py --json ../../docs/results/datasets/bouc_wen_law.json)
+"$python" examples/datasets/bouc_wen_law.py --json docs/results/datasets/bouc_wen_law.json
 "$python" examples/datasets/table.py "${results[@]}" > docs/results/datasets_summary.md
 bonl_splice_summary datasets_summary docs/results/datasets_summary.md docs/lab/measured_data.md
 "$python" examples/datasets/comparison.py > docs/results/benchmarks_summary.md

@@ -35,10 +35,15 @@ def _record(name):
                  .astype(float) for side in "uy")
 
 
+def multisines():
+    """The training and the validation multisine, each a structured array with fields u and y."""
+    return tuple(np.genfromtxt(DATA / "bouc-wen" / f"{name}_multisine.csv", delimiter=",", names=True)
+                 for name in ("train", "val"))
+
+
 def make():
     """Bouc-Wen: every model family selected on the training multisine, tested on the validation multisine."""
-    train = np.genfromtxt(DATA / "bouc-wen" / "train_multisine.csv", delimiter=",", names=True)
-    test = np.genfromtxt(DATA / "bouc-wen" / "val_multisine.csv", delimiter=",", names=True)
+    train, test = multisines()
     return Benchmark(
         name="bouc-wen", unit="m",
         estimation=[(train["u"], train["y"])],

@@ -23,7 +23,7 @@ import pathlib
 
 import numpy as np
 
-from benchmark import DATA
+from bouc_wen import multisines
 
 SAMPLE_RATE = 750.0  # Hz
 UPSAMPLING = 20  # integration steps per sample, as the benchmark's own integrator
@@ -70,8 +70,7 @@ def _rms(error):
 
 
 def run():
-    train = np.genfromtxt(DATA / "bouc-wen" / "train_multisine.csv", delimiter=",", names=True)
-    test = np.genfromtxt(DATA / "bouc-wen" / "val_multisine.csv", delimiter=",", names=True)
+    train, test = multisines()
     assert np.array_equal(train["u"][:PERIOD], train["u"][PERIOD:2 * PERIOD]), "the training input repeats one period"
     law_train = simulate(train["u"][:PERIOD], 2)
     law_test = simulate(test["u"], 2)

@@ -169,12 +169,16 @@ TEMPLATE_LIST_TEST_CASE("with constant forgetting a step in the parameters is tr
   const Eigen::VectorXd u_validation = bonl::signals::random_levels(4000, 5, 1.0, 42);
   const Eigen::VectorXd y_validation = after.simulate(u_validation);
   Eigen::Index recovered = -1;
+  Eigen::VectorXd simulated;
   for (Eigen::Index k = 0; k < u.size(); ++k) {
     const double y = plant.step(k < 4000 ? before.theta() : after.theta(), u[k]).output;
     plant.accept();
     estimator.update(u[k], y);
+    // An estimate whose free run leaves the finite numbers (the Bouc-Wen feedback model's, just after
+    // the step, runs off once its hysteresis takes more stiffness than A holds) is not back.
     if (k >= 4000 && (k + 1 - 4000) % 50 == 0 && recovered < 0 &&
-        bonl::metrics::nrmse(y_validation, estimator.model().simulate(u_validation)) < 0.01) {
+        estimator.model().try_simulate(u_validation, simulated) &&
+        bonl::metrics::nrmse(y_validation, simulated) < 0.01) {
       recovered = k + 1 - 4000;
     }
   }

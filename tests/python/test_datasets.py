@@ -255,12 +255,14 @@ def test_the_emps_diagnosis_in_the_docs_is_what_the_records_and_the_model_file_g
 
 def test_the_bouc_wen_feedback_model_file_gives_its_figures_on_every_test():
     """The Bouc-Wen's model file, the Bouc-Wen feedback model that selection picks across the families,
-    scores its figures on each test record, is below the linear model on each, and in steady state on
-    the validation multisine below dynoNet's published figure (the best block-oriented one)."""
+    scores its figures on each test record, is below the linear model and the nonlinear-feedback model
+    on each, and in steady state on the validation multisine below dynoNet's published figure (the best
+    block-oriented one)."""
     _, rows = _rescored_model_file("bouc_wen", "BoucWenFeedback")
-    row, linear = rows["BoucWenFeedback"], rows["ARX"]
+    row, linear, plays = rows["BoucWenFeedback"], rows["ARX"], rows["NonlinearFeedback"]
     for test in _script("bouc_wen").make().tests:
         assert row["test_rms"][test.name] < linear["test_rms"][test.name], test.name
+        assert row["test_rms"][test.name] < plays["test_rms"][test.name], test.name
     assert _script("comparison").selected(_results("bouc_wen"))["model"] == "BoucWenFeedback"
     dynonet = float(dict(_script("bouc_wen").make().published)["dynoNet (Forgione and Piga 2021)"])
     assert row["test_rms"]["validation multisine"] < dynonet

@@ -9,7 +9,7 @@
 #
 #   bash scripts/datasets.sh [--quick]
 #
-# --quick (the CI's smoke run, about a minute): every step below, the same lines, on cheap inputs
+# --quick (the CI's smoke run, seconds): every step below, the same lines, on cheap inputs
 # (one candidate per model family on the estimation records' first samples, examples/datasets/
 # benchmark.py's quick; the Bouc-Wen law over a short stretch; two perturbation seeds), writing into a
 # temporary folder and splicing into copies of the pages there: nothing committed is touched and

@@ -4,13 +4,13 @@
 # (its own build folder, build/python-spread), recomputes every figure the committed-figure tests
 # compare with build/venv's gcc build (scripts/test.sh) and with that one
 # (tests/python/figure_spread.py), and prints the largest relative difference per family.
-# tests/python/figures.py's FIGURE_REL, the tests' tolerance, is a multiple of it: re-run this
-# when the compiler, the platform or the numerics change. About 10 minutes on 2 cores (the build,
-# then a minute per set of figures).
+# tests/python/figures.py's FIGURE_REL, the tests' tolerance, rests on it: re-run this when the
+# compiler, the platform or the numerics change. About 10 minutes on 2 cores (the build, 9 of them,
+# then 40 s per set of figures).
 #
 #   bash scripts/figure_spread.sh [--quick]
 #
-# --quick (the CI's smoke run, about 15 s): no second build; build/venv's figures of the two cheapest
+# --quick (the CI's smoke run, 4 s): no second build; build/venv's figures of the two cheapest
 # families against themselves, through the same lines, which must be bit-equal (a run that differs
 # from itself is nondeterministic, and the tolerance assumes it is not).
 set -euo pipefail

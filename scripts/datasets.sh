@@ -53,8 +53,6 @@ for script in "${scripts[@]}"; do
 done
 step "examples/datasets/bouc_wen_law.py ${quick[*]} (the benchmark's own law on its records)"
 "$python" examples/datasets/bouc_wen_law.py --json "$out/bouc_wen_law.json" "${quick[@]}"
-# Written to a file first: a failing table.py stops the script here (set -e does not see the
-# status of a command substitution's pipe into a page).
 "$python" examples/datasets/table.py "${files[@]}" > "$summaries/datasets_summary.md"
 bonl_splice_summary datasets_summary "$summaries/datasets_summary.md" "$pages/measured_data.md"
 "$python" examples/datasets/comparison.py --results "$out" > "$summaries/benchmarks_summary.md"

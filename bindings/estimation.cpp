@@ -166,12 +166,16 @@ void def_identify(py::module_& m) {
                      "identify(model, u, y) for one record, identify(model, records=[(u1, y1), (u2, y2), ...]) for "
                      "several",
                      inputs, outputs);
-        if (records.is_none()) bonl::detail::require_record(inputs[0], outputs[0], model.num_params());
-        bonl::Records<double> views;
-        for (std::size_t i = 0; i < inputs.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
+        // Checked once, here: one record by the names u and y, several by records[i].
+        const bonl::CheckedRecords<double> checked = [&] {
+          if (records.is_none()) return bonl::CheckedRecords<double>(inputs[0], outputs[0], model.num_params());
+          bonl::Records<double> views;
+          for (std::size_t i = 0; i < inputs.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
+          return bonl::CheckedRecords<double>(views, model.num_params());
+        }();
         Model identified = [&] {
           py::gil_scoped_release release;
-          return bonl::identify(model, views, options, settings);
+          return bonl::identify(model, checked, options, settings);
         }();
         const double radius = bonl::pole_radius(identified);
         if (radius >= 0.999) {

@@ -31,11 +31,12 @@ namespace bonl {
 /// the records' first differences. The records are deviations from the operating point. A start whose
 /// fit broke down numerically is left out.
 /// \param structure the orders, knots and thresholds
-/// \param records the identification records, deviations from the operating point
+/// \param records the identification records, deviations from the operating point, checked
 /// \param linear_iterations the Levenberg-Marquardt iterations of the best linear approximation
 /// \return the starts, possibly none
 template <class Model>
-std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Records<typename Model::Scalar>& records,
+std::vector<Model> nonlinear_feedback_starts(const Model& structure,
+                                             const CheckedRecords<typename Model::Scalar>& records,
                                              int linear_iterations = 100) {
   std::vector<Model> starts;
   try {
@@ -64,7 +65,7 @@ std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Recor
     Model velocity(structure.na(), structure.nb(), structure.nk(), structure.r(), structure.nh(), structure.nd(), 0, 0);
     velocity.set_knots(structure.knots());
     try {
-      velocity = identify(velocity, velocity_records);
+      velocity = identify(velocity, velocity_records);  // new numbers (the outputs' differences): checked there
       Model position = structure;
       position.set_theta(velocity.theta());
       starts.push_back(position);

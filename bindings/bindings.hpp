@@ -31,9 +31,11 @@ void bind_plant_simulate(py::module_& plant);    // plant_simulate.cpp: simulate
 void bind_plant_stepping(py::module_& plant);    // plant_stepping.cpp: SteppingPlant, Measurement
 
 /// The warnings bonl gives (models.cpp creates them): a model simulated on inputs outside the range it
-/// was identified on; an identified model that is unstable or barely damped.
+/// was identified on; an identified model that is unstable or barely damped; records whose input
+/// cannot excite the model's structure.
 py::handle extrapolation_warning();
 py::handle stability_warning();
+py::handle excitation_warning();
 /// Issues a warning of `category` from the calling Python code; raises if a filter makes it an error.
 void warn(py::handle category, const std::string& message);
 

@@ -119,6 +119,10 @@ Warns
 bonl.StabilityWarning
     The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
     where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+bonl.ExcitationWarning
+    The records' input takes fewer distinct values than the structure needs (two for every model; for an
+    input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+    cannot excite the structure, and the identified parameters are not fixed by the data.
 
 Raises
 ------
@@ -166,12 +170,20 @@ void def_identify(py::module_& m) {
                      "identify(model, u, y) for one record, identify(model, records=[(u1, y1), (u2, y2), ...]) for "
                      "several",
                      inputs, outputs);
-        if (records.is_none()) bonl::detail::require_record(inputs[0], outputs[0], model.num_params());
-        bonl::Records<double> views;
-        for (std::size_t i = 0; i < inputs.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
+        // Checked once, here: one record by the names u and y, several by records[i].
+        const bonl::CheckedRecords<double> checked = [&] {
+          if (records.is_none()) return bonl::CheckedRecords<double>(inputs[0], outputs[0], model.num_params());
+          bonl::Records<double> views;
+          for (std::size_t i = 0; i < inputs.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
+          return bonl::CheckedRecords<double>(views, model.num_params());
+        }();
+        // Before identifying: where the records cannot excite the structure the estimator may also break
+        // down, and the warning says why.
+        const std::string shortfall = bonl::excitation_shortfall(model, checked);
+        if (!shortfall.empty()) warn(excitation_warning(), shortfall);
         Model identified = [&] {
           py::gil_scoped_release release;
-          return bonl::identify(model, views, options, settings);
+          return bonl::identify(model, checked, options, settings);
         }();
         const double radius = bonl::pole_radius(identified);
         if (radius >= 0.999) {

@@ -61,6 +61,7 @@ numpy.ndarray, shape (n,)
 
 py::handle g_extrapolation_warning;  // created in bind_models, kept for the module's life
 py::handle g_stability_warning;
+py::handle g_excitation_warning;
 
 /// The ExtrapolationWarning for simulate() on inputs outside the model's input range, if any are.
 template <class Model>
@@ -341,6 +342,7 @@ void bind_model(py::module_& m) {
 
 py::handle extrapolation_warning() { return g_extrapolation_warning; }
 py::handle stability_warning() { return g_stability_warning; }
+py::handle excitation_warning() { return g_excitation_warning; }
 
 void warn(py::handle category, const std::string& message) {
   if (PyErr_WarnEx(category.ptr(), message.c_str(), 1) != 0) throw py::error_already_set();
@@ -357,9 +359,16 @@ void bind_models(py::module_& m) {
       "bonl.StabilityWarning",
       "identify() returned a model whose linear block is unstable or barely damped (Model.pole_radius >= 0.999).",
       PyExc_UserWarning, nullptr);
-  if (!g_extrapolation_warning || !g_stability_warning) throw py::error_already_set();
+  g_excitation_warning = PyErr_NewExceptionWithDoc(
+      "bonl.ExcitationWarning",
+      "identify() was given records whose input takes fewer distinct values than the model's structure needs "
+      "(a constant input; two levels for a polynomial of degree 2): the identified parameters are not fixed by "
+      "the data.",
+      PyExc_UserWarning, nullptr);
+  if (!g_extrapolation_warning || !g_stability_warning || !g_excitation_warning) throw py::error_already_set();
   m.attr("ExtrapolationWarning") = g_extrapolation_warning;
   m.attr("StabilityWarning") = g_stability_warning;
+  m.attr("ExcitationWarning") = g_excitation_warning;
   py::list classes;
   bonl::for_each_model(bonl::Models{}, [&](auto tag) {
     using Model = typename decltype(tag)::type;

@@ -15,6 +15,7 @@ scripts/datasets.sh writes it after the results files; tests/python/test_dataset
 
 from __future__ import annotations
 
+import argparse
 import dataclasses
 import importlib
 import json
@@ -54,11 +55,11 @@ def _figure(value: float) -> str:
     return f"{value:.3g}"
 
 
-def rows(script: str) -> list:
-    """One data set's lines of the table, one per compared test."""
+def rows(script: str, results_dir: pathlib.Path = RESULTS) -> list:
+    """One data set's lines of the table, one per compared test, from its results file in ``results_dir``."""
     sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
     comparisons = importlib.import_module(script).COMPARISONS
-    results = json.loads((RESULTS / f"{script}.json").read_text())
+    results = json.loads((results_dir / f"{script}.json").read_text())
     chosen, baseline = selected(results), linear(results)
     lines = []
     for comparison in comparisons:
@@ -76,13 +77,16 @@ def rows(script: str) -> list:
     return lines
 
 
-def table() -> str:
+def table(results_dir: pathlib.Path = RESULTS) -> str:
     lines = ["| data set (test; unit) | protocol | bonl, selected on the estimation data (model) | bonl's linear model "
              "(ARX) | bonl / linear | best published | bonl / best | best published block-oriented | "
              "bonl / block-oriented |",
              "|---|---|---|---:|---:|---|---:|---|---:|"]
-    return "\n".join(lines + [line for script in SCRIPTS for line in rows(script)])
+    return "\n".join(lines + [line for script in SCRIPTS for line in rows(script, results_dir)])
 
 
 if __name__ == "__main__":
-    print(table())
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--results", type=pathlib.Path, default=RESULTS,
+                        help="the folder of the results files (default: docs/results/datasets)")
+    print(table(parser.parse_args().results))

@@ -4,6 +4,7 @@
 
 #include "estimator/best_linear_approximation.hpp"
 #include "estimator/estimate_recursively.hpp"
+#include "estimator/excitation.hpp"
 #include "estimator/forgetting_schedule.hpp"
 #include "estimator/identify.hpp"
 #include "estimator/identify_options.hpp"

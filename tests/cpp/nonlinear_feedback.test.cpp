@@ -211,7 +211,7 @@ TEST_CASE("identify's open-loop start is the records' best linear approximation 
     INFO("ni = " << truth.ni());
     const Eigen::VectorXd u = identification_input();
     const Eigen::VectorXd y = truth.simulate(u);
-    const bonl::Records<double> records{{u, y}};
+    const bonl::CheckedRecords<double> records(u, y, truth.num_params());
     const auto starts = bonl::nonlinear_feedback_starts(structure_of(truth), records);
     // The open loop, and with the integrator the velocity model on the differences after it.
     REQUIRE(starts.size() == (truth.ni() == 1 ? 2U : 1U));

@@ -142,7 +142,7 @@ TEST_CASE("identify places the thresholds by the data rule where the structure's
   const Model truth = known_system<Model>("small");
   const Eigen::VectorXd u = (identification_input().array() * 0.8 + 0.1).matrix();
   const Eigen::VectorXd y = truth.simulate(u);
-  const bonl::Records<double> records{{u, y}};
+  const bonl::CheckedRecords<double> records(u, y, truth.num_params());
   const auto starts = bonl::prandtl_ishlinskii_starts(structure_of(truth), records);
   REQUIRE(starts.size() == 1);
   const double half_range = (u.maxCoeff() - u.minCoeff()) / 2.0;

@@ -17,8 +17,8 @@ TEST_CASE("structure_from_data places the plays' thresholds as identify's extra 
   const Model truth = known_system<Model>("small");
   const Eigen::VectorXd u = (bonl::signals::random_levels(3000, 5, 0.8, 11).array() + 0.3).matrix();
   const Eigen::VectorXd y = truth.simulate(u);
-  const bonl::Records<double> records{{u, y}};
-  const Model placed = bonl::structure_from_data(truth, records);
+  const bonl::CheckedRecords<double> records(u, y, truth.num_params());
+  const Model placed = bonl::structure_from_data(truth, records.records());
 
   const auto starts = bonl::prandtl_ishlinskii_starts(truth, records);
   REQUIRE(starts.size() == 1);

@@ -10,6 +10,7 @@ import pytest
 
 import bonl
 from conftest import load_measured_data_example
+from figures import FIGURE_REL
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -48,16 +49,16 @@ def test_quoted_tables_match_their_results(marker, source, pages):
 
 def test_the_plant_experiment_gives_its_committed_figures():
     """docs/results/plant_experiment.json (bonl_demo --json, scripts/plant_experiment.sh) is what the
-    experiment gives today: every validation MSE, identified and online, to 1e-9 relative."""
+    experiment gives today: every validation MSE, identified and online, to FIGURE_REL."""
     committed = json.loads((ROOT / "docs" / "results" / "plant_experiment.json").read_text())
     result = bonl.experiment.run_paper_experiment()
     for method, entry in committed["methods"].items():
         assert set(entry["mse"]) == set(result.model_names), method
         for model, mse in entry["mse"].items():
-            assert result.method(method).mse[model] == pytest.approx(mse, rel=1e-9), (method, model)
+            assert result.method(method).mse[model] == pytest.approx(mse, rel=FIGURE_REL), (method, model)
     for method, entry in committed["online"].items():
         for model, mse in entry.items():
-            assert result.method(method).online_mse[model] == pytest.approx(mse, rel=1e-9), ("online", method, model)
+            assert result.method(method).online_mse[model] == pytest.approx(mse, rel=FIGURE_REL), ("online", method, model)
 
 
 def table_rows(markdown):
@@ -120,9 +121,9 @@ def test_the_sweep_gives_its_committed_figures():
         for row in method_rows:
             m = result.method(row["method"])
             for name in result.model_names:
-                assert m.mse[name] == pytest.approx(float(row["mse_" + name]), rel=1e-9), (parameter, value, row["method"], name)
+                assert m.mse[name] == pytest.approx(float(row["mse_" + name]), rel=FIGURE_REL), (parameter, value, row["method"], name)
             c = m.models["PseudoHammersteinWiener"].params["c"]
-            assert c == pytest.approx(float(row["PseudoHammersteinWiener_c"]), rel=1e-9, abs=1e-15), (parameter, value)
+            assert c == pytest.approx(float(row["PseudoHammersteinWiener_c"]), rel=FIGURE_REL, abs=1e-15), (parameter, value)
 
 
 def test_the_sweep_summary_is_its_results_file():
@@ -170,7 +171,7 @@ def test_the_experiment_page_says_what_the_results_say_of_p_i_h():
 def test_the_measured_data_give_their_committed_figures():
     """docs/results/measured_data.json (scripts/measured_data.sh) holds the structure chosen for each
     model on each data set; identified again on the estimation data, each gives its committed
-    validation RMS to 1e-9 relative (the selection itself is re-run by test_measured_data.py)."""
+    validation RMS to FIGURE_REL (the selection itself is re-run by test_measured_data.py)."""
     md = load_measured_data_example()
     committed = json.loads((ROOT / "docs" / "results" / "measured_data.json").read_text())
     act, tanks = md.load_actuator(), md.load_cascaded_tanks()
@@ -189,7 +190,7 @@ def test_the_measured_data_give_their_committed_figures():
             simulated = md.simulate(model, u_sim - u0, y0)
             assert simulated is not None, (case, name)
             rms = md.rms(simulated[score_from:] - y_sim[score_from:])
-            assert rms == pytest.approx(chosen["validation_rms"], rel=1e-9), (case, name)
+            assert rms == pytest.approx(chosen["validation_rms"], rel=FIGURE_REL), (case, name)
 
 
 def test_the_benchmark_summary_is_the_committed_full_run():
@@ -209,7 +210,7 @@ def test_the_benchmark_summary_is_the_committed_full_run():
 
 def test_the_joint_angle_models_give_their_committed_figures():
     """docs/results/joint_angle.json (examples/joint_angle/joint_angle.py): the paper's four models on
-    the simulated joint's angle, without and with an integrator, recomputed to 1e-9 relative; the table
+    the simulated joint's angle, without and with an integrator, recomputed to FIGURE_REL; the table
     docs/explanation/plant.md quotes is the one the results give."""
     import importlib.util
     spec = importlib.util.spec_from_file_location("joint_angle", ROOT / "examples" / "joint_angle" / "joint_angle.py")
@@ -219,7 +220,7 @@ def test_the_joint_angle_models_give_their_committed_figures():
     results = joint_angle.run()
     assert [(r["model"], r["ni"]) for r in results["rows"]] == [(r["model"], r["ni"]) for r in committed["rows"]]
     for new, old in zip(results["rows"], committed["rows"]):
-        assert new["validation_rms"] == pytest.approx(old["validation_rms"], rel=1e-9), (new["model"], new["ni"])
+        assert new["validation_rms"] == pytest.approx(old["validation_rms"], rel=FIGURE_REL), (new["model"], new["ni"])
         assert new["json"]["orders"].get("ni", 0) == new["ni"]
     assert joint_angle.table(committed) == (ROOT / "docs" / "results" / "joint_angle_summary.md").read_text()
 

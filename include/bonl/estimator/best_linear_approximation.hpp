@@ -19,12 +19,12 @@ namespace detail {
 /// then refined on the simulation error) of the records, with `ni` integrators. Throws NumericalError
 /// where the least squares broke down.
 template <typename Scalar>
-ARX<Scalar> best_linear_approximation(const Records<Scalar>& records, Eigen::Index na, Eigen::Index nb,
+ARX<Scalar> best_linear_approximation(const CheckedRecords<Scalar>& records, Eigen::Index na, Eigen::Index nb,
                                       Eigen::Index nk, int iterations, Eigen::Index ni = 0) {
   IdentifyOptions least_squares;
   least_squares.method = Method::EquationError;
   const ARX<Scalar> arx = estimate_recursively(ARX<Scalar>(na, nb, nk, ni), records, least_squares);
-  return refine_output_error(arx, records, iterations);
+  return refine_output_error(std::vector<ARX<Scalar>>{arx}, records, iterations);
 }
 
 }  // namespace detail

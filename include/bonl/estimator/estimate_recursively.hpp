@@ -19,15 +19,14 @@ namespace bonl {
 /// Throws NumericalError if an update breaks down.
 /// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
 /// are not used
-/// \param records the records, each an input u and measured output y of equal length
+/// \param records the records, checked (CheckedRecords)
 /// \param options the method, passes and the estimator's options
 /// \param settings the model's own estimator settings (Estimator)
 /// \return structure with the last pass's estimate (projected onto the model's valid set)
 template <class Model>
-Model estimate_recursively(const Model& structure, const Records<typename Model::Scalar>& records,
+Model estimate_recursively(const Model& structure, const CheckedRecords<typename Model::Scalar>& records,
                            const IdentifyOptions& options, const ModelSettings<Model>& settings = {}) {
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
-  detail::require_records(records, structure.num_params());
   Estimator<Model> estimator(structure, options, settings);
   for (int pass = 0; pass < options.passes; ++pass) {
     for (std::size_t r = 0; r < records.size(); ++r) {
@@ -47,6 +46,20 @@ Model estimate_recursively(const Model& structure, const Records<typename Model:
   return estimator.model();
 }
 
+/// The same on records checked here (std::invalid_argument naming the bad record).
+/// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
+/// are not used
+/// \param records the records, each an input u and measured output y of equal length
+/// \param options the method, passes and the estimator's options
+/// \param settings the model's own estimator settings (Estimator)
+/// \return structure with the last pass's estimate (projected onto the model's valid set)
+template <class Model>
+Model estimate_recursively(const Model& structure, const Records<typename Model::Scalar>& records,
+                           const IdentifyOptions& options, const ModelSettings<Model>& settings = {}) {
+  return estimate_recursively(structure, CheckedRecords<typename Model::Scalar>(records, structure.num_params()),
+                              options, settings);
+}
+
 /// The same on one record (u, y).
 /// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
 /// are not used
@@ -58,10 +71,9 @@ Model estimate_recursively(const Model& structure, const Records<typename Model:
 template <class Model, typename U, typename Y>
 Model estimate_recursively(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
                            const IdentifyOptions& options, const ModelSettings<Model>& settings = {}) {
-  detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
-  detail::require_record(u, y, structure.num_params());
   const typename Model::VectorX input = u, output = y;
-  return estimate_recursively(structure, Records<typename Model::Scalar>{{input, output}}, options, settings);
+  return estimate_recursively(structure, CheckedRecords<typename Model::Scalar>(input, output, structure.num_params()),
+                              options, settings);
 }
 
 }  // namespace bonl

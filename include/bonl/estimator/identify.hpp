@@ -38,7 +38,7 @@ struct DataScale {
 };
 
 template <typename Scalar>
-DataScale data_scale(const Records<Scalar>& records, double u0, double y0, Eigen::Index ni = 0) {
+DataScale data_scale(const CheckedRecords<Scalar>& records, double u0, double y0, Eigen::Index ni = 0) {
   double u_squares = 0.0, y_squares = 0.0, samples = 0.0;
   for (const auto& record : records) {
     u_squares += static_cast<double>((record.u.array() - static_cast<Scalar>(u0)).matrix().squaredNorm());
@@ -61,21 +61,28 @@ DataScale data_scale(const Records<Scalar>& records, double u0, double y0, Eigen
   return {nearest_power_of_two(u_squares), nearest_power_of_two(y_squares)};
 }
 
-/// The records less (u0, y0) and divided by `scale`, owned, with views for identification.
+/// The records less (u0, y0) and divided by `scale`, owned, with views for identification. New
+/// numbers, so checked (a deviation of finite values can overflow).
 template <typename Scalar>
 struct ScaledRecords {
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  ScaledRecords(const Records<Scalar>& records, DataScale scale, double u0, double y0) {
+  ScaledRecords(const CheckedRecords<Scalar>& records, DataScale scale, double u0, double y0, Eigen::Index num_params)
+      : views(scaled_views(records, scale, u0, y0), num_params) {}
+  std::vector<VectorX> inputs, outputs;
+  CheckedRecords<Scalar> views;
+
+ private:
+  Records<Scalar> scaled_views(const CheckedRecords<Scalar>& records, DataScale scale, double u0, double y0) {
     inputs.reserve(records.size());
     outputs.reserve(records.size());
     for (const auto& record : records) {
       inputs.push_back((record.u.array() - static_cast<Scalar>(u0)).matrix() / static_cast<Scalar>(scale.u));
       outputs.push_back((record.y.array() - static_cast<Scalar>(y0)).matrix() / static_cast<Scalar>(scale.y));
     }
-    for (std::size_t i = 0; i < records.size(); ++i) views.emplace_back(inputs[i], outputs[i]);
+    Records<Scalar> out;
+    for (std::size_t i = 0; i < records.size(); ++i) out.emplace_back(inputs[i], outputs[i]);
+    return out;
   }
-  std::vector<VectorX> inputs, outputs;
-  Records<Scalar> views;
 };
 
 /// Does Model give identify() starts of its own (the customisation point below)?
@@ -83,19 +90,22 @@ template <class Model, class = void>
 struct HasIdentifyStarts : std::false_type {};
 template <class Model>
 struct HasIdentifyStarts<Model, std::void_t<decltype(Model::identify_starts(
-                                    std::declval<const Model&>(), std::declval<const Records<typename Model::Scalar>&>()))>>
+                                    std::declval<const Model&>(), std::declval<const CheckedRecords<typename Model::Scalar>&>()))>>
     : std::true_type {};
 
-/// identify() without the input range.
-template <class Model>
-Model identify_records(const Model& structure, const Records<typename Model::Scalar>& records,
-                       const IdentifyOptions& options, const ModelSettings<Model>& settings) {
+/// The options and settings identify() takes, checked (std::invalid_argument naming the bad one).
+template <class Settings>
+void require_identify_options(const IdentifyOptions& options, const Settings& settings) {
   options.validate();
   settings.validate();
-  detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
-  detail::require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
-  detail::require_records(records, structure.num_params());
+  require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
+  require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
+}
 
+/// identify() without the input range, on options and settings identify() has checked.
+template <class Model>
+Model identify_records(const Model& structure, const CheckedRecords<typename Model::Scalar>& records,
+                       const IdentifyOptions& options, const ModelSettings<Model>& settings) {
   const bool least_squares_arx = options.method == Method::EquationError && !Model::kHasInternalVariables;
   if (options.method == Method::Paper || least_squares_arx || options.refine_iterations == 0) {
     return estimate_recursively(structure, records, options, settings);
@@ -105,7 +115,7 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
   const double u0 = structure.u0(), y0 = structure.y0();
   const DataScale scale = options.normalise ? data_scale(records, u0, y0, structure.ni()) : DataScale{};
   if (u0 != 0.0 || y0 != 0.0 || scale.u != 1.0 || scale.y != 1.0) {
-    const ScaledRecords<typename Model::Scalar> transformed(records, scale, u0, y0);
+    const ScaledRecords<typename Model::Scalar> transformed(records, scale, u0, y0, structure.num_params());
     IdentifyOptions inner = options;
     inner.normalise = false;
     Model at_zero = rescaled(structure, 1.0 / scale.u, 1.0 / scale.y);
@@ -139,7 +149,7 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
     }
   }
   // A model whose recursive estimates alone make poor starts adds its own after them, by a member
-  //   static std::vector<Model> identify_starts(const Model& structure, const Records<Scalar>& records)
+  //   static std::vector<Model> identify_starts(const Model& structure, const CheckedRecords<Scalar>& records)
   // that gets the records as here: deviations from the operating point, in identify's units.
   if constexpr (HasIdentifyStarts<Model>::value) {
     for (Model& start : Model::identify_starts(structure, records)) starts.push_back(std::move(start));
@@ -166,14 +176,18 @@ Model identify_records(const Model& structure, const Records<typename Model::Sca
 /// Estimator takes them (P-H-W: c0 and backlash_hold), in the data's units.
 /// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
 /// are not used
-/// \param records the records, each an input u and measured output y of equal length
+/// \param records the records, checked (CheckedRecords)
 /// \param options the method, passes, refinement, normalisation and operating point
 /// \param settings the model's own estimator settings, in the data's units
 /// \return the identified model, in the data's units, with its operating point and input range
 template <class Model>
-Model identify(const Model& structure, const Records<typename Model::Scalar>& records,
+Model identify(const Model& structure, const CheckedRecords<typename Model::Scalar>& records,
                const IdentifyOptions& options = {}, const ModelSettings<Model>& settings = {}) {
-  detail::require_records(records, structure.num_params());
+  detail::require(records.samples() > structure.num_params(),
+                  "the records must be longer together than the number of parameters (" +
+                      std::to_string(structure.num_params()) + "), got " + std::to_string(records.samples()) +
+                      " samples");
+  detail::require_identify_options(options, settings);
   Model at = structure;
   if (options.operating_point == OperatingPointSource::Mean) {
     double u_sum = 0.0, y_sum = 0.0, samples = 0.0;
@@ -184,7 +198,7 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
     }
     at.set_operating_point(u_sum / samples, y_sum / samples);
   } else if (options.operating_point == OperatingPointSource::Initial) {
-    at.set_operating_point(static_cast<double>(records.front().u[0]), static_cast<double>(records.front().y[0]));
+    at.set_operating_point(static_cast<double>(records[0].u[0]), static_cast<double>(records[0].y[0]));
   }
   Model model = detail::identify_records(at, records, options, settings);
   double min = std::numeric_limits<double>::infinity(), max = -min;
@@ -194,6 +208,20 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
   }
   model.set_input_range(min, max);
   return model;
+}
+
+/// The same on records checked here (std::invalid_argument naming the bad record).
+/// \param structure the model to identify: its orders and operating point (and knots, thresholds); its parameter values
+/// are not used
+/// \param records the records, each an input u and measured output y of equal length
+/// \param options the method, passes, refinement, normalisation and operating point
+/// \param settings the model's own estimator settings, in the data's units
+/// \return the identified model, in the data's units, with its operating point and input range
+template <class Model>
+Model identify(const Model& structure, const Records<typename Model::Scalar>& records,
+               const IdentifyOptions& options = {}, const ModelSettings<Model>& settings = {}) {
+  return identify(structure, CheckedRecords<typename Model::Scalar>(records, structure.num_params()), options,
+                  settings);
 }
 
 /// The same on one record (u, y).
@@ -207,13 +235,9 @@ Model identify(const Model& structure, const Records<typename Model::Scalar>& re
 template <class Model, typename U, typename Y>
 Model identify(const Model& structure, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
                const IdentifyOptions& options = {}, const ModelSettings<Model>& settings = {}) {
-  options.validate();
-  settings.validate();
-  detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
-  detail::require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
-  detail::require_record(u, y, structure.num_params());
   const typename Model::VectorX input = u, output = y;
-  return identify(structure, Records<typename Model::Scalar>{{input, output}}, options, settings);
+  return identify(structure, CheckedRecords<typename Model::Scalar>(input, output, structure.num_params()), options,
+                  settings);
 }
 
 }  // namespace bonl

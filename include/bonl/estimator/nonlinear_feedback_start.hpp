@@ -30,11 +30,11 @@ namespace bonl {
 /// orders, delay and integrators), every other coefficient 0 (the feedback's block D = q^-1). The
 /// records are deviations from the operating point. None where the fit broke down numerically.
 /// \param structure the orders (and any structure of the feedback: knots, thresholds)
-/// \param records the identification records, deviations from the operating point
+/// \param records the identification records, deviations from the operating point, checked
 /// \param linear_iterations the Levenberg-Marquardt iterations of the best linear approximation
 /// \return the start, or none
 template <class Model>
-std::vector<Model> open_loop_starts(const Model& structure, const Records<typename Model::Scalar>& records,
+std::vector<Model> open_loop_starts(const Model& structure, const CheckedRecords<typename Model::Scalar>& records,
                                     int linear_iterations = 100) {
   std::vector<Model> starts;
   try {
@@ -55,11 +55,12 @@ std::vector<Model> open_loop_starts(const Model& structure, const Records<typena
 /// (open_loop_starts); and with ni = 1 and nv = 1 the velocity model identified on the records' first
 /// differences. A start whose fit broke down numerically is left out.
 /// \param structure the orders, knots and thresholds
-/// \param records the identification records, deviations from the operating point
+/// \param records the identification records, deviations from the operating point, checked
 /// \param linear_iterations the Levenberg-Marquardt iterations of the best linear approximation
 /// \return the starts, possibly none
 template <class Model>
-std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Records<typename Model::Scalar>& records,
+std::vector<Model> nonlinear_feedback_starts(const Model& structure,
+                                             const CheckedRecords<typename Model::Scalar>& records,
                                              int linear_iterations = 100) {
   std::vector<Model> starts = open_loop_starts(structure, records, linear_iterations);
   if (structure.ni() == 1 && structure.nv() == 1) {
@@ -77,7 +78,7 @@ std::vector<Model> nonlinear_feedback_starts(const Model& structure, const Recor
     Model velocity(structure.na(), structure.nb(), structure.nk(), structure.r(), structure.nh(), structure.nd(), 0, 0);
     velocity.set_knots(structure.knots());
     try {
-      velocity = identify(velocity, velocity_records);
+      velocity = identify(velocity, velocity_records);  // new numbers (the outputs' differences): checked there
       Model position = structure;
       position.set_theta(velocity.theta());
       starts.push_back(position);

@@ -182,18 +182,18 @@ inline constexpr Eigen::Index kCoarseSamples = 16384;
 /// of them. Most iterations happen far from a minimum, where a part of the data points the same way
 /// as all of it, at a fraction of the cost.
 /// \param starts the models to start from, at least one
-/// \param records the records, each an input u and measured output y of equal length
+/// \param records the records, checked (CheckedRecords)
 /// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
 /// \param report when not null, filled with the costs and iterations
 /// \return the refined model that simulates the records best
 template <class Model>
-Model refine_output_error(const std::vector<Model>& starts, const Records<typename Model::Scalar>& records,
+Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords<typename Model::Scalar>& records,
                           int max_iterations = 100, RefinementReport* report = nullptr) {
   using Scalar = typename Model::Scalar;
   detail::require(!starts.empty(), "starts must hold at least one model");
-  const Eigen::Index samples = detail::require_records(records, starts.front().num_params());
   detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
-  const typename Model::VectorX y = detail::stacked_outputs(records);
+  const Eigen::Index samples = records.samples();
+  const typename Model::VectorX y = detail::stacked_outputs(records.records());
   typename Model::VectorX simulated, scratch;
 
   RefinementReport local;
@@ -207,23 +207,20 @@ Model refine_output_error(const std::vector<Model>& starts, const Records<typena
     if (!checker.stable(candidate.theta(), Scalar(1)) && detail::reflect_poles_inside(candidate, Scalar(0.999))) {
       local.reflected = true;
     }
-    costs[i] = detail::simulation_cost(candidate, records, y, simulated, scratch);
+    costs[i] = detail::simulation_cost(candidate, records.records(), y, simulated, scratch);
   }
   local.initial_cost = *std::min_element(costs.begin(), costs.end());
   // Stage one: every start on the records' first part (all of them when they are short).
   const bool two_stages = samples > detail::kCoarseSamples;
-  Records<Scalar> first_part;
-  for (const auto& record : records) {
-    first_part.push_back(two_stages ? record.head(record.u.size() * detail::kCoarseSamples / samples + 1) : record);
-  }
+  const CheckedRecords<Scalar> first_part = two_stages ? records.first_part(detail::kCoarseSamples) : records;
   std::vector<double> dampings(candidates.size(), 1e-3);
   for (std::size_t i = 0; i < candidates.size() && max_iterations > 0; ++i) {
     if (!std::isfinite(costs[i])) continue;
     RefinementReport stage;
-    const Model refined = detail::levenberg_marquardt(candidates[i], first_part, max_iterations, dampings[i], stage);
+    const Model refined = detail::levenberg_marquardt(candidates[i], first_part.records(), max_iterations, dampings[i], stage);
     local.iterations += stage.iterations;
     // Kept only where it simulates all the records better (on one stage, always).
-    const double cost = detail::simulation_cost(refined, records, y, simulated, scratch);
+    const double cost = detail::simulation_cost(refined, records.records(), y, simulated, scratch);
     if (cost < costs[i]) {
       candidates[i] = refined;
       costs[i] = cost;
@@ -238,10 +235,24 @@ Model refine_output_error(const std::vector<Model>& starts, const Records<typena
   Model best = candidates[chosen];
   // Stage two: the best on all the records.
   if (two_stages && std::isfinite(costs[chosen]) && max_iterations > 0) {
-    best = detail::levenberg_marquardt(best, records, max_iterations, dampings[chosen], local);
+    best = detail::levenberg_marquardt(best, records.records(), max_iterations, dampings[chosen], local);
   }
   if (report) *report = local;
   return best;
+}
+
+/// The same on records checked here (std::invalid_argument naming the bad record).
+/// \param starts the models to start from, at least one
+/// \param records the records, each an input u and measured output y of equal length
+/// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
+/// \param report when not null, filled with the costs and iterations
+/// \return the refined model that simulates the records best
+template <class Model>
+Model refine_output_error(const std::vector<Model>& starts, const Records<typename Model::Scalar>& records,
+                          int max_iterations = 100, RefinementReport* report = nullptr) {
+  detail::require(!starts.empty(), "starts must hold at least one model");
+  return refine_output_error(starts, CheckedRecords<typename Model::Scalar>(records, starts.front().num_params()),
+                             max_iterations, report);
 }
 
 /// The same from one start.
@@ -266,9 +277,10 @@ Model refine_output_error(const Model& start, const Records<typename Model::Scal
 template <class Model, typename U, typename Y>
 Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
                           int max_iterations = 100, RefinementReport* report = nullptr) {
-  detail::require_record(u, y, start.num_params());
   const typename Model::VectorX input = u, output = y;
-  return refine_output_error(start, Records<typename Model::Scalar>{{input, output}}, max_iterations, report);
+  return refine_output_error(std::vector<Model>{start},
+                             CheckedRecords<typename Model::Scalar>(input, output, start.num_params()),
+                             max_iterations, report);
 }
 
 }  // namespace bonl

@@ -55,12 +55,13 @@ Model with_thresholds_from_data(const Model& structure, const Records<typename M
 /// (Method::OutputError). None where the structure already has those thresholds (its own recursive
 /// estimates are that start) or the recursion broke down.
 /// \param structure the model's orders and thresholds
-/// \param records the identification records, deviations from the operating point
+/// \param records the identification records, deviations from the operating point, checked
 /// \return zero or one start
 template <class Model>
-std::vector<Model> prandtl_ishlinskii_starts(const Model& structure, const Records<typename Model::Scalar>& records) {
+std::vector<Model> prandtl_ishlinskii_starts(const Model& structure,
+                                             const CheckedRecords<typename Model::Scalar>& records) {
   std::vector<Model> starts;
-  const Model ruled = with_thresholds_from_data(structure, records);
+  const Model ruled = with_thresholds_from_data(structure, records.records());
   if (ruled.thresholds() == structure.thresholds()) return starts;
   try {
     starts.push_back(estimate_recursively(ruled, records, IdentifyOptions{}));

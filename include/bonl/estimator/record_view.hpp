@@ -2,7 +2,8 @@
 // Several records (experiments) of one system identify one model: each record is simulated from rest
 // and no history is carried across a record's boundaries. A RecordView refers to a record's u and y
 // without copying them; it is made from vectors that outlive it (a temporary, such as the result of
-// an expression, is refused at compile time rather than left dangling).
+// an expression, is refused at compile time rather than left dangling). CheckedRecords are records
+// that passed the checks once, where they entered; the functions that take them check nothing again.
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -68,6 +69,92 @@ Eigen::Index require_records(const Records<Scalar>& records, Eigen::Index num_pa
                                   std::to_string(num_params) + "), got " + std::to_string(total) + " samples");
   return total;
 }
+
+}  // namespace detail
+
+/// Records checked once, where they enter the library: at least one; in each, u and y of equal length
+/// and finite; together longer than the number of parameters of the structure they were checked for.
+/// Only the constructors below make one, and they check, so the functions that take CheckedRecords
+/// (identify(), estimate_recursively(), refine_output_error(), the starts, excitation_shortfall())
+/// check nothing of the records again. Like Records it views vectors that must outlive it.
+template <typename Scalar = double>
+class CheckedRecords {
+ public:
+  using Vector = typename RecordView<Scalar>::Vector;  ///< the vectors a record is viewed in
+
+  /// Checks several records for a structure of `num_params` parameters; std::invalid_argument naming
+  /// the bad record ("records[1].u has a non-finite value at index 7") otherwise.
+  /// \param records the records, each an input u and measured output y of equal length
+  /// \param num_params the number of parameters the records must be longer than, together
+  CheckedRecords(const Records<Scalar>& records, Eigen::Index num_params)
+      : m_records(records), m_samples(detail::require_records(records, num_params)) {}
+
+  /// Checks one record (u, y) for a structure of `num_params` parameters; std::invalid_argument naming
+  /// u or y otherwise ("u has a non-finite value at index 3"). Temporaries are refused at compile time.
+  /// \param u the input
+  /// \param y the measured output, as long as u
+  /// \param num_params the number of parameters the record must be longer than
+  CheckedRecords(const Vector& u, const Vector& y, Eigen::Index num_params) : m_samples(u.size()) {
+    detail::require_record(u, y, num_params);
+    m_records.emplace_back(u, y);
+  }
+  CheckedRecords(Vector&&, const Vector&, Eigen::Index) = delete;
+  CheckedRecords(const Vector&, Vector&&, Eigen::Index) = delete;
+  CheckedRecords(Vector&&, Vector&&, Eigen::Index) = delete;
+
+  /// The records, as given
+  /// \return their views
+  const Records<Scalar>& records() const noexcept { return m_records; }
+  /// The samples of all the records together
+  /// \return the number of samples, > the number of parameters checked for
+  Eigen::Index samples() const noexcept { return m_samples; }
+  /// The number of records
+  /// \return at least 1
+  std::size_t size() const noexcept { return m_records.size(); }
+  /// One record
+  /// \param i its index, < size()
+  /// \return its view
+  const RecordView<Scalar>& operator[](std::size_t i) const noexcept { return m_records[i]; }
+  /// The first record, for range-for
+  /// \return an iterator to the first record
+  auto begin() const noexcept { return m_records.begin(); }
+  /// Past the last record, for range-for
+  /// \return the end iterator
+  auto end() const noexcept { return m_records.end(); }
+
+  /// The first lengths[i] samples of each record i (at most all of them): parts of checked records,
+  /// so not checked again but for being empty, which gives std::invalid_argument "records[i] is empty".
+  /// They need not be longer than the number of parameters.
+  /// \param lengths one length per record, >= 0
+  /// \return the parts, as views of the same vectors
+  CheckedRecords heads(const std::vector<Eigen::Index>& lengths) const {
+    detail::require(lengths.size() == m_records.size(), "heads needs one length per record");
+    CheckedRecords part;
+    for (std::size_t i = 0; i < m_records.size(); ++i) {
+      detail::require(lengths[i] > 0, "records[" + std::to_string(i) + "] is empty");
+      part.m_records.push_back(m_records[i].head(lengths[i]));
+      part.m_samples += part.m_records.back().u.size();
+    }
+    return part;
+  }
+
+  /// The first part of each record, each in proportion to its length and at least one sample, about
+  /// `samples` samples together (heads()).
+  /// \param samples about how many samples the parts hold together, <= samples()
+  /// \return the parts, as views of the same vectors
+  CheckedRecords first_part(Eigen::Index samples) const {
+    std::vector<Eigen::Index> lengths;
+    for (const auto& record : m_records) lengths.push_back(record.u.size() * samples / m_samples + 1);
+    return heads(lengths);
+  }
+
+ private:
+  CheckedRecords() = default;
+  Records<Scalar> m_records;
+  Eigen::Index m_samples = 0;
+};
+
+namespace detail {
 
 /// The records' outputs one after another.
 template <typename Scalar>

@@ -23,6 +23,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -116,7 +117,7 @@ class SelectionData {
                     std::string("select: window applies to criterion 'validation' only, got criterion '") +
                         to_string(options.criterion) + "'");
     options.identify.validate();
-    detail::require_records(records, 0);
+    m_checked.emplace(records, 0);
     for (std::size_t i = 0; i < records.size(); ++i) {
       const std::string name = "records[" + std::to_string(i) + "]";
       const Eigen::Index n = records[i].u.size();
@@ -129,6 +130,13 @@ class SelectionData {
       m_fit_records.push_back(records[i].head(m_split.back()));
       m_fit_samples += m_split.back();
     }
+    // The fit parts, parts of the checked records, once for every candidate. An empty one fails every
+    // candidate, with the reason, rather than the selection.
+    try {
+      m_fit_checked.emplace(m_checked->heads(m_split));
+    } catch (const std::invalid_argument& error) {
+      m_fit_error = error.what();
+    }
   }
 
   /// All the records
@@ -137,6 +145,15 @@ class SelectionData {
   /// Their fit parts
   /// \return views of the records' first parts
   const Records<Scalar>& fit_records() const noexcept { return m_fit_records; }
+  /// All the records, checked
+  /// \return the records given, as CheckedRecords
+  const CheckedRecords<Scalar>& checked_records() const noexcept { return *m_checked; }
+  /// The fit parts, checked; none where one is empty (fit_error() says which)
+  /// \return the fit parts as CheckedRecords, or none
+  const std::optional<CheckedRecords<Scalar>>& checked_fit_records() const noexcept { return m_fit_checked; }
+  /// Why the fit parts cannot be identified on (a fit part is empty); "" where they can
+  /// \return the reason, or ""
+  const std::string& fit_error() const noexcept { return m_fit_error; }
   /// Where each record's held-out part starts (its length under AIC and BIC).
   /// \return one sample index per record
   const std::vector<Eigen::Index>& split() const noexcept { return m_split; }
@@ -150,6 +167,9 @@ class SelectionData {
  private:
   Records<Scalar> m_records;
   Records<Scalar> m_fit_records;
+  std::optional<CheckedRecords<Scalar>> m_checked;
+  std::optional<CheckedRecords<Scalar>> m_fit_checked;
+  std::string m_fit_error;
   std::vector<Eigen::Index> m_split;
   Eigen::Index m_fit_samples = 0;
   SelectOptions m_options;
@@ -207,8 +227,12 @@ SelectionCandidate<Model> score_candidate(const Model& structure, const Selectio
                 std::to_string(data.fit_samples()) + " samples of the fit part";
     return row;
   }
+  if (!data.checked_fit_records()) {
+    row.error = data.fit_error();
+    return row;
+  }
   try {
-    row.model = identify(structure, data.fit_records(), options.identify);
+    row.model = identify(structure, *data.checked_fit_records(), options.identify);
   } catch (const std::exception& error) {  // NumericalError; or a structure this data cannot fit
     row.error = error.what();
     return row;
@@ -262,7 +286,7 @@ Selection<Model> select(const std::vector<Model>& candidates, const SelectionDat
   if (!table.front().model) {
     throw NumericalError("bonl: select: every candidate failed; the first: " + table.front().error);
   }
-  Model best = identify(candidates[order.front()], data.records(), data.options().identify);
+  Model best = identify(candidates[order.front()], data.checked_records(), data.options().identify);
   return {data.options().criterion, std::move(table), std::move(best)};
 }
 

@@ -169,13 +169,12 @@ std::optional<Vector> quantile_knots(const Vector& x, Eigen::Index nh) {
 /// BLA's least squares broke down, its b_0 = 0 or not finite, or every fit is degenerate (no linear
 /// term).
 /// \param structure the orders and knot count
-/// \param records the identification records, deviations from the operating point
+/// \param records the identification records, deviations from the operating point, checked
 /// \param linear_iterations the Levenberg-Marquardt iterations of the best linear approximation
 /// \return the splits, best first; possibly empty
 template <class Model>
-std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model& structure,
-                                                                     const Records<typename Model::Scalar>& records,
-                                                                     int linear_iterations = 100) {
+std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(
+    const Model& structure, const CheckedRecords<typename Model::Scalar>& records, int linear_iterations = 100) {
   using Scalar = typename Model::Scalar;
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
@@ -200,7 +199,7 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
   const auto pole_subsets = detail::subsets_of_size(pole_groups, na1);
   const auto zero_subsets = detail::subsets_of_size(zero_groups, nb1);
 
-  const VectorX y = detail::stacked_outputs(records);
+  const VectorX y = detail::stacked_outputs(records.records());
   const Eigen::Index samples = y.size();
   MatrixX regressors(samples, r + nh);
   VectorX x1(samples);
@@ -287,10 +286,11 @@ std::vector<WienerHammersteinSplit<Model>> wiener_hammerstein_splits(const Model
 /// identify_starts): the best kWienerHammersteinStarts splits, best first. Its recursive estimates
 /// alone depend on where they happen to go.
 /// \param structure the orders and knot count
-/// \param records the identification records, deviations from the operating point
+/// \param records the identification records, deviations from the operating point, checked
 /// \return at most kWienerHammersteinStarts models, best first
 template <class Model>
-std::vector<Model> wiener_hammerstein_starts(const Model& structure, const Records<typename Model::Scalar>& records) {
+std::vector<Model> wiener_hammerstein_starts(const Model& structure,
+                                             const CheckedRecords<typename Model::Scalar>& records) {
   const auto splits = wiener_hammerstein_splits(structure, records);
   std::vector<Model> starts;
   for (std::size_t i = 0; i < splits.size() && i < kWienerHammersteinStarts; ++i) starts.push_back(splits[i].model);

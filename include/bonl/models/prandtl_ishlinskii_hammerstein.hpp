@@ -133,6 +133,10 @@ class PrandtlIshlinskiiHammerstein
   Eigen::Index np() const noexcept { return m_np; }
   /// \copydoc ARX::ni
   Eigen::Index ni() const noexcept { return m_ni; }
+  /// The distinct input values the input polynomial needs (bonl::input_levels_needed()): r + 1, the
+  /// points that fix a polynomial of degree r.
+  /// \return r + 1
+  Eigen::Index input_levels_needed() const noexcept { return m_r + 1; }
   /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   /// \copydoc ARX::orders

@@ -2,6 +2,7 @@
 bonl: identification of block-oriented nonlinear models (C++ core).
 """
 from __future__ import annotations
+from bonl import ExcitationWarning
 from bonl import ExtrapolationWarning
 from bonl import StabilityWarning
 import collections.abc
@@ -12,7 +13,7 @@ from . import metrics
 from . import plant
 from . import experiment
 from . import control
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'EstimatorTrajectory', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'WindowRefinementCounts', 'WindowRefinementOptions', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'EstimatorTrajectory', 'ExcitationWarning', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'WindowRefinementCounts', 'WindowRefinementOptions', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     """
     Numerical trouble found while computing: a diverging simulation, a covariance that lost
@@ -2540,6 +2541,10 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
     bonl.StabilityWarning
         The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
         where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
     
     Raises
     ------
@@ -2607,6 +2612,10 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
     bonl.StabilityWarning
         The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
         where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
     
     Raises
     ------
@@ -2674,6 +2683,10 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
     bonl.StabilityWarning
         The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
         where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
     
     Raises
     ------
@@ -2741,6 +2754,10 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
     bonl.StabilityWarning
         The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
         where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
     
     Raises
     ------
@@ -2808,6 +2825,10 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
     bonl.StabilityWarning
         The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
         where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
     
     Raises
     ------
@@ -2875,6 +2896,10 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
     bonl.StabilityWarning
         The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
         where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
     
     Raises
     ------
@@ -2942,6 +2967,10 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
     bonl.StabilityWarning
         The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
         where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
     
     Raises
     ------
@@ -3009,6 +3038,10 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
     bonl.StabilityWarning
         The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
         where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
     
     Raises
     ------

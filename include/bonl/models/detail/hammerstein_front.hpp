@@ -84,6 +84,8 @@ class HammersteinFront {
   Eigen::Index ni() const noexcept { return m_ni; }
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   Eigen::Index front_size() const noexcept { return 2 * (m_r + 1) + m_nb + m_na; }
+  /// Distinct input values the two-segment polynomial needs: r + 1 on each side of zero (input_levels_needed()).
+  Eigen::Index input_levels_needed() const noexcept { return 2 * (m_r + 1); }
 
   /// Parameters in the order of eq. (19).
   const Params& theta() const noexcept { return m_theta; }

@@ -13,7 +13,7 @@ from . import metrics
 from . import plant
 from . import experiment
 from . import control
-__all__: list = ['ARX', 'Estimator', 'EstimatorHealth', 'EstimatorTrajectory', 'ExcitationWarning', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'WindowRefinementCounts', 'WindowRefinementOptions', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
+__all__: list = ['ARX', 'BoucWenFeedback', 'Estimator', 'EstimatorHealth', 'EstimatorTrajectory', 'ExcitationWarning', 'ExtrapolationWarning', 'Hammerstein', 'HammersteinWiener', 'MODELS', 'NonlinearFeedback', 'NumericalError', 'PrandtlIshlinskiiHammerstein', 'PseudoHammersteinWiener', 'StabilityWarning', 'UpdateResults', 'UpdateStatus', 'Wiener', 'WienerHammerstein', 'WindowRefinementCounts', 'WindowRefinementOptions', 'control', 'experiment', 'identify', 'load_model', 'metrics', 'plant']
 class NumericalError(ArithmeticError):
     """
     Numerical trouble found while computing: a diverging simulation, a covariance that lost
@@ -1978,6 +1978,255 @@ class PrandtlIshlinskiiHammerstein:
     @thresholds.setter
     def thresholds(self, arg1: numpy.typing.ArrayLike) -> None:
         ...
+class BoucWenFeedback:
+    """
+    Bouc-Wen feedback model: y(k) = -sum a_j y(k-j) + sum b_i u(k-nk-i) - sum_{j=1..nd} d_j h(k-j), d_1 = 1, h = w - alpha y the hysteretic part of the restoring force w(k) = w(k-1) + alpha dy - gamma |dy| w(k) - delta dy |w(k)|, dy = y(k) - y(k-1) (the Bouc-Wen law of hysteresis with nu = 1, stepped backward).
+    
+    Parameters
+    ----------
+    na : int
+        poles of the linear block (na >= 1).
+    nb : int
+        B has nb + 1 coefficients b_0..b_nb.
+    nk : int
+        pure delay of the input in samples.
+    nd : int
+        taps of the force's block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32).
+    ni : int, optional
+        integrators: poles fixed at 1 in the linear block's denominator (0..2); default 0.
+    b : array_like, optional
+        b_0..b_nb.
+    a : array_like, optional
+        a_1..a_na.
+    alpha : float, optional
+        the force's stiffness where it is zero: > 0 softens with the amplitude, < 0 stiffens.
+    gamma : float, optional
+        the law's |dy| w coefficient (beta gamma).
+    delta : float, optional
+        the law's dy |w| coefficient (beta delta).
+    d : array_like, optional
+        d_1..d_nd with d_1 = 1.
+    """
+    ORDERS: typing.ClassVar[tuple] = ('na', 'nb', 'nk', 'nd', 'ni')
+    ORDER_DEFAULTS: typing.ClassVar[dict] = {'ni': 0}
+    PAPER_ORDERS: typing.ClassVar[tuple] = (3, 2, 8, 2, 0)
+    def __copy__(self) -> BoucWenFeedback:
+        ...
+    def __deepcopy__(self, memo: dict) -> BoucWenFeedback:
+        ...
+    def __getstate__(self) -> str:
+        ...
+    def __init__(self, na: typing.SupportsInt | typing.SupportsIndex, nb: typing.SupportsInt | typing.SupportsIndex, nk: typing.SupportsInt | typing.SupportsIndex, nd: typing.SupportsInt | typing.SupportsIndex, ni: typing.SupportsInt | typing.SupportsIndex = 0, *, b: numpy.typing.ArrayLike | None = None, a: numpy.typing.ArrayLike | None = None, alpha: float | None = None, gamma: float | None = None, delta: float | None = None, d: numpy.typing.ArrayLike | None = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: str) -> None:
+        ...
+    def extrapolated_samples(self, u: numpy.typing.ArrayLike) -> int:
+        """
+        How many samples of u lie outside input_range.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            An input record.
+        
+        Returns
+        -------
+        int
+            The number of samples outside input_range (0: no extrapolation).
+        """
+    def predict(self, u: numpy.typing.ArrayLike, y: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        One-step-ahead prediction from measured data.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        y : array_like, shape (n,)
+            Measured output; y[k] is used to predict y[k + 1].
+        initial : (u_past, y_past), optional
+            The measured samples just before u and y (None: from rest at the operating point).
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The prediction of y[k] from u up to k and y up to k - 1. Internal variables are taken from the
+            measured output where the model lets them (Hammerstein: x = y; H-W: x = q^-1(y); P-H-W: the
+            backlash memory is the measured y[k - 1]).
+        """
+    def rescaled(self, input_scale: typing.SupportsFloat | typing.SupportsIndex, output_scale: typing.SupportsFloat | typing.SupportsIndex) -> BoucWenFeedback:
+        """
+        The model of y = output_scale * model(u / input_scale): the same model for u and y in other units.
+        
+        Parameters
+        ----------
+        input_scale, output_scale : float
+            The input's and the output's scale, finite and > 0.
+        
+        Returns
+        -------
+        model
+            A model of this class, the parameters in the new units.
+        """
+    def simulate(self, u: numpy.typing.ArrayLike, initial: tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike] | None = None) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Free-run simulation, from rest or after a measured past.
+        
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Input sequence.
+        initial : (u_past, y_past), optional
+            The measured samples just before u. They set the model's state (its internal variables are what
+            the measured past says, as predict() takes them); then the model runs on u alone. The
+            benchmarks' state-initialisation window of m samples is
+            ``model.simulate(u[m:], initial=(u[:m], y[:m]))``. None: from rest at the operating point.
+        
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            The model's output, driven by u alone after the initial state.
+        
+        Raises
+        ------
+        ValueError
+            If u or the past is not a finite 1-D array, or u_past and y_past differ in length.
+        bonl.NumericalError
+            If the simulation leaves the finite numbers (an unstable model).
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = -1) -> str:
+        """
+        The model in bonl's JSON model format (read by bonl.load_model and by C++'s bonl::io).
+        
+        Parameters
+        ----------
+        indent : int, default -1
+            Spaces per level of nesting; -1 for one line.
+        
+        Returns
+        -------
+        str
+            The model file's text.
+        """
+    @property
+    def a(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: a_1..a_na.
+        """
+    @a.setter
+    def a(self, arg1: numpy.typing.ArrayLike) -> None:
+        ...
+    @property
+    def alpha(self) -> float:
+        """
+        float: the force's stiffness where it is zero: > 0 softens with the amplitude, < 0 stiffens.
+        """
+    @alpha.setter
+    def alpha(self, arg1: float) -> None:
+        ...
+    @property
+    def b(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: b_0..b_nb.
+        """
+    @b.setter
+    def b(self, arg1: numpy.typing.ArrayLike) -> None:
+        ...
+    @property
+    def d(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: d_1..d_nd with d_1 = 1.
+        """
+    @d.setter
+    def d(self, arg1: numpy.typing.ArrayLike) -> None:
+        ...
+    @property
+    def delta(self) -> float:
+        """
+        float: the law's dy |w| coefficient (beta delta).
+        """
+    @delta.setter
+    def delta(self, arg1: float) -> None:
+        ...
+    @property
+    def gamma(self) -> float:
+        """
+        float: the law's |dy| w coefficient (beta gamma).
+        """
+    @gamma.setter
+    def gamma(self, arg1: float) -> None:
+        ...
+    @property
+    def input_range(self) -> tuple[float, float]:
+        """
+        tuple (min, max): the inputs the model was identified on (identify() records them; (-inf, inf) unless set). simulate() gives a bonl.ExtrapolationWarning for inputs outside it.
+        """
+    @input_range.setter
+    def input_range(self, arg1: tuple[float, float]) -> None:
+        ...
+    @property
+    def na(self) -> int:
+        """
+        int: poles of the linear block (na >= 1).
+        """
+    @property
+    def nb(self) -> int:
+        """
+        int: B has nb + 1 coefficients b_0..b_nb.
+        """
+    @property
+    def nd(self) -> int:
+        """
+        int: taps of the force's block D = d_1 q^-1 + ... + d_nd q^-nd, d_1 = 1 (1..32).
+        """
+    @property
+    def ni(self) -> int:
+        """
+        int: integrators: poles fixed at 1 in the linear block's denominator (0..2).
+        """
+    @property
+    def nk(self) -> int:
+        """
+        int: pure delay of the input in samples.
+        """
+    @property
+    def num_params(self) -> int:
+        """
+        int: number of identified parameters.
+        """
+    @property
+    def operating_point(self) -> tuple[float, float]:
+        """
+        tuple (u0, y0): the input and output at which the model rests; its blocks map u - u0 to y - y0. (0, 0) unless set. identify() keeps the structure's.
+        """
+    @operating_point.setter
+    def operating_point(self, arg1: tuple[float, float]) -> None:
+        ...
+    @property
+    def orders(self) -> tuple[int, ...]:
+        """
+        tuple of int: the orders, as ORDERS names them.
+        """
+    @property
+    def params(self) -> dict[str, float | numpy.typing.NDArray[numpy.float64]]:
+        """
+        dict: every parameter block by name, as the keyword arguments of the constructor take them.
+        """
+    @property
+    def pole_radius(self) -> float:
+        """
+        float: the largest pole magnitude of the linear block: below 1 the model is stable, near 1 barely damped.
+        """
+    @property
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: the parameter vector in the order of eq. (19).
+        """
+    @theta.setter
+    def theta(self, arg1: numpy.typing.ArrayLike) -> None:
+        ...
 class UpdateStatus:
     """
     What one online update did.
@@ -2221,6 +2470,9 @@ class Estimator:
     @typing.overload
     def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
+    @typing.overload
+    def __init__(self, model: BoucWenFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+        ...
     def recover(self) -> None:
         """
         Leave the diverged state: P = p0 I, theta kept (a covariance reset); the counters in health stay.
@@ -2324,7 +2576,7 @@ class Estimator:
         float: the adaptive memory's current length 1 / (1 - lambda) in samples (NaN for a step schedule).
         """
     @property
-    def model(self) -> ARX | Hammerstein | HammersteinWiener | PseudoHammersteinWiener | Wiener | WienerHammerstein | NonlinearFeedback | PrandtlIshlinskiiHammerstein:
+    def model(self) -> ARX | Hammerstein | HammersteinWiener | PseudoHammersteinWiener | Wiener | WienerHammerstein | NonlinearFeedback | PrandtlIshlinskiiHammerstein | BoucWenFeedback:
         """
         The current estimate as a model.
         """
@@ -2439,6 +2691,11 @@ def _score_candidate(structure: PrandtlIshlinskiiHammerstein, data: _SelectionDa
     bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
     """
 @typing.overload
+def _score_candidate(structure: BoucWenFeedback, data: _SelectionData) -> tuple:
+    """
+    bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).
+    """
+@typing.overload
 def _select(candidates: collections.abc.Sequence[ARX], data: _SelectionData) -> tuple[list, ARX]:
     """
     C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
@@ -2475,6 +2732,11 @@ def _select(candidates: collections.abc.Sequence[NonlinearFeedback], data: _Sele
     """
 @typing.overload
 def _select(candidates: collections.abc.Sequence[PrandtlIshlinskiiHammerstein], data: _SelectionData) -> tuple[list, PrandtlIshlinskiiHammerstein]:
+    """
+    C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
+    """
+@typing.overload
+def _select(candidates: collections.abc.Sequence[BoucWenFeedback], data: _SelectionData) -> tuple[list, BoucWenFeedback]:
     """
     C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
     """
@@ -3050,7 +3312,78 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
     bonl.NumericalError
         The estimator broke down numerically.
     """
-def load_model(text: str) -> ARX | Hammerstein | HammersteinWiener | PseudoHammersteinWiener | Wiener | WienerHammerstein | NonlinearFeedback | PrandtlIshlinskiiHammerstein:
+@typing.overload
+def identify(model: BoucWenFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> BoucWenFeedback:
+    """
+    Identify a model's parameters from an input/output record, or from several.
+    
+    Parameters
+    ----------
+    model : one of bonl.MODELS
+        Gives the structure (orders); its parameter values are not used.
+    u, y : array_like, shape (n,)
+        Input and measured output of one record.
+    records : sequence of (u, y) pairs, optional
+        Several records (experiments of the same system), by keyword, in place of u and y:
+        ``identify(model, records=[(u1, y1), (u2, y2)])``. Each record is simulated from rest; no history
+        is carried across records.
+    passes : int, default 1
+        Passes of the recursive estimator over the record(s) (the paper's step 5).
+    method : {'output_error', 'equation_error', 'paper'}, default 'output_error'
+        The recursive estimator (docs/explanation/algorithm.md). 'output_error': recursive prediction-error
+        method on the free-run simulation error. 'equation_error': internal variables from the measured
+        output (ARX: least squares). 'paper': eqs. (21)-(31) as written.
+    forgetting : float, tuple or 'adaptive', optional
+        Forgetting factor: a constant in (0, 1], (initial, initial_samples, final), or 'adaptive' (the
+        adaptive memory). Default: 'adaptive' for output_error, the paper's 0.98 for 200 samples then 1
+        for the others.
+    p0 : float, optional
+        P(0) = p0 I. Default: 10 for output_error, 1e6 for the others.
+    refine_iterations : int, default 100
+        Levenberg-Marquardt iterations of the refinement that follows the recursive stage for
+        'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the
+        free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
+        stable.
+    normalise : bool, default True
+        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
+        the model in the data's units, so that the settings mean the same whatever the units. The recursive
+        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
+        estimator's, in the data's units.
+    operating_point : {None, 'mean', 'initial'}, default None
+        The identified model's operating point (u0, y0): None keeps the structure's
+        (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
+        first sample of the first record (the record starts at rest there).
+    c0 : float, optional
+        PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
+        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+    backlash_hold : int, optional
+        PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
+        samples after each start from rest. Default: 200.
+    
+    Returns
+    -------
+    model
+        A new model of the same type with the identified parameters, that operating point and the
+        records' input range (Model.input_range).
+    
+    Warns
+    -----
+    bonl.StabilityWarning
+        The identified model's largest pole has magnitude >= 0.999 (unstable or barely damped); possible
+        where identify returns the recursive estimate as it is ('paper', refine_iterations=0, ARX least squares).
+    bonl.ExcitationWarning
+        The records' input takes fewer distinct values than the structure needs (two for every model; for an
+        input polynomial of degree r, r + 1, on each side of zero where it has two segments): a constant input
+        cannot excite the structure, and the identified parameters are not fixed by the data.
+    
+    Raises
+    ------
+    ValueError
+        Bad orders, settings, lengths or non-finite samples.
+    bonl.NumericalError
+        The estimator broke down numerically.
+    """
+def load_model(text: str) -> ARX | Hammerstein | HammersteinWiener | PseudoHammersteinWiener | Wiener | WienerHammerstein | NonlinearFeedback | PrandtlIshlinskiiHammerstein | BoucWenFeedback:
     """
     Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
     
@@ -3068,5 +3401,5 @@ def load_model(text: str) -> ARX | Hammerstein | HammersteinWiener | PseudoHamme
     ValueError
         The text is not valid JSON or not a valid bonl model (the message names the problem).
     """
-MODELS: tuple = (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, Wiener, WienerHammerstein, NonlinearFeedback, PrandtlIshlinskiiHammerstein)
+MODELS: tuple = (ARX, Hammerstein, HammersteinWiener, PseudoHammersteinWiener, Wiener, WienerHammerstein, NonlinearFeedback, PrandtlIshlinskiiHammerstein, BoucWenFeedback)
 __version__: str = '0.1.0'

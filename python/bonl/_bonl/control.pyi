@@ -171,6 +171,9 @@ class InverseModel:
     @typing.overload
     def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.BoucWenFeedback, **kwargs) -> None:
+        ...
     def commands(self, reference: numpy.typing.ArrayLike) -> InverseRun:
         """
         The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
@@ -338,6 +341,9 @@ class AdaptiveInverse:
         ...
     @typing.overload
     def __init__(self, model: bonl._bonl.PrandtlIshlinskiiHammerstein, *, command_min: typing.SupportsFloat | typing.SupportsIndex | None = None, command_max: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_band: typing.SupportsFloat | typing.SupportsIndex = 0.0, backlash_band_per_c: typing.SupportsFloat | typing.SupportsIndex = 0.0, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, rederive_every: typing.SupportsInt | typing.SupportsIndex = 100, max_covariance_trace: typing.SupportsFloat | typing.SupportsIndex = 10.0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999) -> None:
+        ...
+    @typing.overload
+    def __init__(self, model: bonl._bonl.BoucWenFeedback, **kwargs) -> None:
         ...
     def rederive(self) -> bool:
         """

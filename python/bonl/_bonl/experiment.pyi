@@ -72,7 +72,7 @@ class ModelResult:
         str: how the paper's tables write it (e.g. 'H-W').
         """
     @property
-    def model(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.WienerHammerstein | bonl._bonl.NonlinearFeedback | bonl._bonl.PrandtlIshlinskiiHammerstein | None:
+    def model(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.WienerHammerstein | bonl._bonl.NonlinearFeedback | bonl._bonl.PrandtlIshlinskiiHammerstein | bonl._bonl.BoucWenFeedback | None:
         """
         The identified model (identify(): the recursive estimate refined), as its bonl class; None if
         its parameters are not finite.
@@ -88,7 +88,7 @@ class ModelResult:
         str: the model's name (its class name, e.g. 'HammersteinWiener').
         """
     @property
-    def online_model(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.WienerHammerstein | bonl._bonl.NonlinearFeedback | bonl._bonl.PrandtlIshlinskiiHammerstein | None:
+    def online_model(self) -> bonl._bonl.ARX | bonl._bonl.Hammerstein | bonl._bonl.HammersteinWiener | bonl._bonl.PseudoHammersteinWiener | bonl._bonl.Wiener | bonl._bonl.WienerHammerstein | bonl._bonl.NonlinearFeedback | bonl._bonl.PrandtlIshlinskiiHammerstein | bonl._bonl.BoucWenFeedback | None:
         """
         The recursive estimator's model alone after one pass (no refinement); None if not finite.
         """

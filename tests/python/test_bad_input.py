@@ -915,12 +915,15 @@ def test_a3_models_identify_estimator_and_metrics_never_modify_the_callers_array
         for metric in METRICS:
             metric(y, u)
         copy.copy(model).theta = theta
-    params = {k: np.asarray(v) for k, v in model.params.items() if k != "c"}
+    # The array parameters in every layout; the numbers (P-H-W's c, the Bouc-Wen law's coefficients)
+    # are passed as they are.
+    params = {k: np.asarray(v) for k, v in model.params.items() if np.ndim(v) > 0}
+    numbers = {k: v for k, v in model.params.items() if np.ndim(v) == 0}
     layouts = {k: _layouts(v) for k, v in params.items()}
     for key, by_kind in layouts.items():
         snapshots.update({f"{key} {kind}": _snapshot(v) for kind, v in by_kind.items()})
     for kind in ("contiguous", "strided", "float32", "fortran column", "read-only"):
-        type(model)(*_orders(model), **{key: by_kind[kind] for key, by_kind in layouts.items()}, **_c(model))
+        type(model)(*_orders(model), **{key: by_kind[kind] for key, by_kind in layouts.items()}, **numbers)
     _check_untouched({f"u {k}": v for k, v in us.items()}, snapshots)
     _check_untouched({f"y {k}": v for k, v in ys.items()}, snapshots)
     _check_untouched({f"theta {k}": v for k, v in thetas.items()}, snapshots)
@@ -930,10 +933,6 @@ def test_a3_models_identify_estimator_and_metrics_never_modify_the_callers_array
 
 def _orders(model):
     return list(model.orders)
-
-
-def _c(model):
-    return {"c": model.c} if hasattr(model, "c") else {}
 
 
 def test_a4_the_plant_never_modifies_the_callers_arrays():

@@ -368,11 +368,14 @@ class Harness {
 
   void check_fresh() {
     // The output-error method starts from zero, the others at the model's initial estimate: zero
-    // but c = c0 for a model with a backlash.
+    // but c = c0 for a model with a backlash, or where a model's initial_estimate() says
+    // (models/estimator_settings.hpp; the Bouc-Wen feedback model's alpha).
     Params expected = Params::Zero(m_n);
-    if constexpr (uses_c0<Model>()) {
-      if (m_est.options().method != bonl::Method::OutputError) {
+    if (m_est.options().method != bonl::Method::OutputError) {
+      if constexpr (uses_c0<Model>()) {
         expected[m_n - 1] = to_scalar<Scalar>(m_est.settings().c0);
+      } else if constexpr (bonl::detail::HasInitialEstimate<Model>::value) {
+        expected = m_structure.initial_estimate(m_est.settings());
       }
     }
     FUZZ_CHECK(same(expected, m_est.theta()));

@@ -18,7 +18,8 @@ namespace {
 
 class TextbookRls {
  public:
-  TextbookRls(Eigen::Index n, double p0) : m_theta(Eigen::VectorXd::Zero(n)), m_P(Eigen::MatrixXd::Identity(n, n) * p0) {}
+  TextbookRls(Eigen::Index n, double p0)
+      : m_theta(Eigen::VectorXd::Zero(n)), m_P(Eigen::MatrixXd::Identity(n, n) * p0) {}
 
   void update(const Eigen::VectorXd& phi, double y, double lambda) {
     const Eigen::VectorXd P_phi = m_P * phi;

@@ -6,8 +6,8 @@
 //   generates exactly the same numbers for padasip and numpy (see regressors()).
 
 #include <Eigen/Core>
-#include <bonl/bonl.hpp>
 #include <array>
+#include <bonl/bonl.hpp>
 #include <cstdint>
 #include <string>
 #include <type_traits>
@@ -141,14 +141,14 @@ Model make_known_model() {
     // Any other block (the W-H model's knots and g: none at nh = 0), and a known block whose size
     // differs here (the nonlinear-feedback model's f, f_2..f_r), keeps the structure's value, which
     // is valid by construction: a block this function does not know cannot make it throw.
-    const Eigen::VectorXd value = name == "b" || name == "b2" ? true_b()
-                                  : name == "b1"             ? Eigen::VectorXd(0.1 * true_b())
+    const Eigen::VectorXd value = name == "b" || name == "b2"                   ? true_b()
+                                  : name == "b1"                                ? Eigen::VectorXd(0.1 * true_b())
                                   : name == "a" || name == "a1" || name == "a2" ? true_a()
                                   : normalised_f || name == "q"                 ? true_q()
                                   : name == "f"                                 ? true_f()
                                   : name == "p"                                 ? true_p()
                                   : name == "c"                                 ? Eigen::VectorXd::Constant(1, kTrueC)
-                                                                                : model.parameter(i).template cast<double>();
+                                                : model.parameter(i).template cast<double>();
     if (value.size() == model.parameter(i).size()) model.set_parameter(i, value.cast<S>());
   }
   return model;

@@ -19,9 +19,8 @@ namespace {
 
 void per_sample(benchmark::State& state, Eigen::Index samples) {
   state.SetItemsProcessed(state.iterations() * samples);
-  state.counters["per_sample"] = benchmark::Counter(static_cast<double>(samples),
-                                                    benchmark::Counter::kIsIterationInvariantRate |
-                                                        benchmark::Counter::kInvert);
+  state.counters["per_sample"] = benchmark::Counter(
+      static_cast<double>(samples), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 bonl::control::InverseOptions command_range() {
@@ -59,8 +58,8 @@ void register_sizes(const std::string& suffix) {
 
 /// The blocks' inverses alone, on the reference of the known P-H-W model (x_d and w made up from it).
 const Eigen::VectorXd& block_reference() {
-  static const Eigen::VectorXd r = bonl_bench::make_known_model<bonl::PseudoHammersteinWienerd>().simulate(
-      bonl_bench::record<double>().u);
+  static const Eigen::VectorXd r =
+      bonl_bench::make_known_model<bonl::PseudoHammersteinWienerd>().simulate(bonl_bench::record<double>().u);
   return r;
 }
 
@@ -136,13 +135,14 @@ void adaptive_inverse(benchmark::State& state) {
 const int registered = [] {
   register_sizes<true>("fixed/double");
   register_sizes<false>("dynamic/double");
-  benchmark::RegisterBenchmark("inverse/blocks/linear_exact", [](benchmark::State& s) { linear(s, bonl_bench::true_b()); });
+  benchmark::RegisterBenchmark("inverse/blocks/linear_exact",
+                               [](benchmark::State& s) { linear(s, bonl_bench::true_b()); });
   benchmark::RegisterBenchmark("inverse/blocks/linear_zpetc", [](benchmark::State& s) {
     linear(s, (Eigen::VectorXd(3) << 1.0, 1.5, 0.2).finished());  // zeros at -1.35 and -0.15
   });
   benchmark::RegisterBenchmark("inverse/blocks/input_polynomial", [](benchmark::State& s) {
     static const bonl::control::InputPolynomialInverse<double> inverse(bonl_bench::true_f(), bonl_bench::true_p(), -1.5,
-                                                                        1.5);
+                                                                       1.5);
     static_block(s, inverse, 0.05);  // w of the order of the model's (x / 16.7)
   });
   benchmark::RegisterBenchmark("inverse/blocks/output_polynomial", [](benchmark::State& s) {

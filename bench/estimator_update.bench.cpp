@@ -71,8 +71,9 @@ void register_sizes(const std::string& suffix) {
     using Model = typename decltype(tag)::type;
     for (const bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
       const std::string extra = method == bonl::Method::OutputError ? "" : std::string("/") + bonl::to_string(method);
-      benchmark::RegisterBenchmark((std::string("update/") + Model::kName + "/" + suffix + extra).c_str(),
-                                   [method](benchmark::State& s) { update<Model>(s, method, bonl_bench::record<S>()); });
+      benchmark::RegisterBenchmark(
+          (std::string("update/") + Model::kName + "/" + suffix + extra).c_str(),
+          [method](benchmark::State& s) { update<Model>(s, method, bonl_bench::record<S>()); });
     }
   });
 }
@@ -98,28 +99,33 @@ void register_window() {
   benchmark::RegisterBenchmark("update/PseudoHammersteinWiener/fixed/double/window", [](benchmark::State& s) {
     update<Model>(s, bonl::Method::OutputError, record<double>(), true);
   });
-  benchmark::RegisterBenchmark("update_worst/PseudoHammersteinWiener/fixed/double/window", [](benchmark::State& state) {
-    const Model structure = bonl_bench::make_structure<Model>();
-    const bonl_bench::Record<double>& data = record<double>();
-    bonl::EstimatorOptions options;
-    options.window.enabled = true;
-    constexpr long kUpdates = 1000000;
-    for (auto _ : state) {
-      bonl::Estimator<Model> estimator(structure, options);
-      double worst = 0.0, total = 0.0;
-      for (long i = 0; i < kUpdates; ++i) {
-        const Eigen::Index k = static_cast<Eigen::Index>(i % data.u.size());
-        const auto start = std::chrono::steady_clock::now();
-        benchmark::DoNotOptimize(estimator.update(data.u[k], data.y[k]));
-        const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
-        worst = std::max(worst, ns);
-        total += ns;
-      }
-      state.counters["worst_ns"] = worst;
-      state.counters["mean_ns"] = total / kUpdates;
-      state.counters["swaps"] = static_cast<double>(estimator.health().window.swaps);
-    }
-  })->Iterations(1)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(
+      "update_worst/PseudoHammersteinWiener/fixed/double/window",
+      [](benchmark::State& state) {
+        const Model structure = bonl_bench::make_structure<Model>();
+        const bonl_bench::Record<double>& data = record<double>();
+        bonl::EstimatorOptions options;
+        options.window.enabled = true;
+        constexpr long kUpdates = 1000000;
+        for (auto _ : state) {
+          bonl::Estimator<Model> estimator(structure, options);
+          double worst = 0.0, total = 0.0;
+          for (long i = 0; i < kUpdates; ++i) {
+            const Eigen::Index k = static_cast<Eigen::Index>(i % data.u.size());
+            const auto start = std::chrono::steady_clock::now();
+            benchmark::DoNotOptimize(estimator.update(data.u[k], data.y[k]));
+            const double ns =
+                std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+            worst = std::max(worst, ns);
+            total += ns;
+          }
+          state.counters["worst_ns"] = worst;
+          state.counters["mean_ns"] = total / kUpdates;
+          state.counters["swaps"] = static_cast<double>(estimator.health().window.swaps);
+        }
+      })
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
 }
 
 const int registered = [] {

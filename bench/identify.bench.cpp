@@ -54,9 +54,8 @@ void identify_hammerstein_wiener(benchmark::State& state) {
     rms = std::sqrt((model.simulate(data.u) - data.y).squaredNorm() / static_cast<double>(samples));
     benchmark::DoNotOptimize(rms);
   }
-  state.counters["per_sample"] = benchmark::Counter(static_cast<double>(samples),
-                                                    benchmark::Counter::kIsIterationInvariantRate |
-                                                        benchmark::Counter::kInvert);
+  state.counters["per_sample"] = benchmark::Counter(
+      static_cast<double>(samples), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["simulation_rms"] = rms;
 }
 

@@ -23,7 +23,8 @@ void plant_simulate(benchmark::State& state) {
     benchmark::ClobberMemory();
     steps = run.steps;
   }
-  state.counters["realtime_factor"] = benchmark::Counter(options.duration, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["realtime_factor"] =
+      benchmark::Counter(options.duration, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["steps"] = static_cast<double>(steps);
   state.counters["simulated_s"] = options.duration;
 }

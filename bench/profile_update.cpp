@@ -32,9 +32,10 @@ long run(bonl::Method method, long passes, const std::string& data) {
 }
 
 int usage() {
-  std::fprintf(stderr, "usage: bonl_profile_update MODEL[-METHOD] [PASSES [DATA]]  (MODEL: a model's name, e.g. "
-                       "PseudoHammersteinWiener; METHOD: output_error, equation_error, paper; PASSES >= 1, default 1; "
-                       "DATA: known (default), delayed_fir, integrator)\n");
+  std::fprintf(stderr,
+               "usage: bonl_profile_update MODEL[-METHOD] [PASSES [DATA]]  (MODEL: a model's name, e.g. "
+               "PseudoHammersteinWiener; METHOD: output_error, equation_error, paper; PASSES >= 1, default 1; "
+               "DATA: known (default), delayed_fir, integrator)\n");
   return 2;
 }
 

@@ -41,7 +41,8 @@ using InvertibleModel = bonl::ApplyModels<bonl::control::InvertibleModels, std::
 
 /// ValueError for a refused step (the inverse is untouched).
 void raise_if_rejected(InverseStatus status, Eigen::Index window_size, Eigen::Index given) {
-  bonl::detail::require(status != InverseStatus::RejectedNonFinite, "reference must be finite (every entry of the window)");
+  bonl::detail::require(status != InverseStatus::RejectedNonFinite,
+                        "reference must be finite (every entry of the window)");
   bonl::detail::require(status != InverseStatus::RejectedOverflow,
                         "the reference is too large: the inverse's arithmetic overflowed (nothing changed)");
   bonl::detail::require(status != InverseStatus::RejectedShortPreview,
@@ -55,7 +56,8 @@ template <class Inverse>
 bonl::control::InverseStep<double> step_on(Inverse& inverse, Eigen::Index window_size, const py::object& reference) {
   bonl::control::InverseStep<double> out{0.0, InverseStatus::Exact};
   Eigen::Index given = 1;
-  if (py::isinstance<py::array>(reference) || py::isinstance<py::list>(reference) || py::isinstance<py::tuple>(reference)) {
+  if (py::isinstance<py::array>(reference) || py::isinstance<py::list>(reference) ||
+      py::isinstance<py::tuple>(reference)) {
     const Eigen::VectorXd window = to_vector(reference, "reference");
     given = window.size();
     out = inverse.step(window);
@@ -71,7 +73,8 @@ using InverseOf = bonl::control::InverseModel<Model>;
 
 class AnyInverse {
  public:
-  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::control::InvertibleModels, InverseOf>::type, std::variant>::type;
+  using Variant =
+      bonl::ApplyModels<bonl::MapModels<bonl::control::InvertibleModels, InverseOf>::type, std::variant>::type;
 
   template <class Model>
   AnyInverse(const Model& model, const bonl::control::InverseOptions& options)
@@ -115,8 +118,9 @@ class AnyInverse {
     return std::visit([](const auto& inverse) { return inverse.command_max(); }, m_inverse);
   }
   Vector stable_factor() const {
-    return std::visit([](const auto& inverse) { return to_numpy(Eigen::VectorXd(inverse.linear_inverse().stable_factor())); },
-                      m_inverse);
+    return std::visit(
+        [](const auto& inverse) { return to_numpy(Eigen::VectorXd(inverse.linear_inverse().stable_factor())); },
+        m_inverse);
   }
   Vector unstable_factor() const {
     return std::visit(
@@ -154,15 +158,16 @@ using AdaptiveOf = bonl::control::AdaptiveInverse<Model>;
 /// bonl.control.AdaptiveInverse over AdaptiveInverse<Model> for every model of InvertibleModels.
 class AnyAdaptive {
  public:
-  using Variant = bonl::ApplyModels<bonl::MapModels<bonl::control::InvertibleModels, AdaptiveOf>::type, std::variant>::type;
+  using Variant =
+      bonl::ApplyModels<bonl::MapModels<bonl::control::InvertibleModels, AdaptiveOf>::type, std::variant>::type;
 
   template <class Model>
   AnyAdaptive(const Model& model, const bonl::control::AdaptiveInverseOptions& options)
       : m_adaptive(std::in_place_type<AdaptiveOf<Model>>, model, options) {}
 
   bonl::control::InverseStep<double> step(const Reference& reference) {
-    return std::visit(
-        [&](auto& adaptive) { return step_on(adaptive, adaptive.inverse().window_size(), reference); }, m_adaptive);
+    return std::visit([&](auto& adaptive) { return step_on(adaptive, adaptive.inverse().window_size(), reference); },
+                      m_adaptive);
   }
   bonl::UpdateStatus update(const Real& u, const Real& y) {
     const double u_value = to_scalar(u, "u");
@@ -249,7 +254,8 @@ window too short raises ValueError and leaves the inverse untouched.)doc";
 
 void bind_control(py::module_& m) {
   py::module_ control = m.def_submodule(
-      "control", "Inverse models: the command that makes an identified model follow a reference (docs/how-to/control.md).");
+      "control",
+      "Inverse models: the command that makes an identified model follow a reference (docs/how-to/control.md).");
 
   py::enum_<InverseStatus>(control, "InverseStatus", py::arithmetic(),
                            "What an inverse reports with a command: flags, exact (0) when the model follows the "
@@ -304,8 +310,7 @@ backlash_band_per_c : float, default 0
 Raises ValueError where the model has no inverse (b_0 = 0, a zero of B at z = 1, q_1 = 0, an input
 polynomial that is not monotone through 0, input hysteresis whose slope can take either sign near 0).)doc");
   def_inits(inverse, [](auto& cls, auto tag) { def_inverse_init<typename decltype(tag)::type>(cls); });
-  inverse
-      .def("step", &AnyInverse::step, py::arg("reference"), kStepDoc)
+  inverse.def("step", &AnyInverse::step, py::arg("reference"), kStepDoc)
       .def("commands", &AnyInverse::commands, py::arg("reference"),
            R"doc(The commands for a whole reference r(0..N-1), from rest (this object's state is not used).
 
@@ -340,12 +345,14 @@ InverseRun
   py::class_<Health>(control, "AdaptiveInverseHealth", "What an AdaptiveInverse's guard did.")
       .def_readonly("rederivations", &Health::rederivations, "int: new inverses put in use")
       .def_readonly("refused_diverged", &Health::refused_diverged, "int: estimates refused: the estimator had diverged")
-      .def_readonly("refused_covariance", &Health::refused_covariance, "int: estimates refused: trace(P) above the limit")
+      .def_readonly("refused_covariance", &Health::refused_covariance,
+                    "int: estimates refused: trace(P) above the limit")
       .def_readonly("refused_unstable", &Health::refused_unstable,
                     "int: estimates refused: a pole at or beyond stability_radius")
       .def_readonly("refused_no_inverse", &Health::refused_no_inverse,
                     "int: estimates refused: InverseModel refused the estimate")
-      .def_readonly("last_refusal", &Health::last_refusal, "str: why the last refused estimate was refused ('' if none)")
+      .def_readonly("last_refusal", &Health::last_refusal,
+                    "str: why the last refused estimate was refused ('' if none)")
       .def("__repr__", [](const Health& h) {
         return "AdaptiveInverseHealth(rederivations=" + std::to_string(h.rederivations) +
                ", refused_diverged=" + std::to_string(h.refused_diverged) +
@@ -376,8 +383,7 @@ stability_radius : float, default 0.999
 Raises ValueError for bad options or a model without an inverse.)doc";
   py::class_<AnyAdaptive> adaptive(control, "AdaptiveInverse", adaptive_doc.c_str());
   def_inits(adaptive, [](auto& cls, auto tag) { def_adaptive_init<typename decltype(tag)::type>(cls); });
-  adaptive
-      .def("step", &AnyAdaptive::step, py::arg("reference"), kStepDoc)
+  adaptive.def("step", &AnyAdaptive::step, py::arg("reference"), kStepDoc)
       .def("update", &AnyAdaptive::update, py::arg("u"), py::arg("y"),
            R"doc(One sample of the plant, to the estimator; every rederive_every samples, rederive().
 
@@ -401,9 +407,10 @@ bool
     Whether the new inverse is in use; if not, the last good one stays and health says why.)doc")
       .def_property_readonly("model", &AnyAdaptive::model, "The model the inverse in use was derived from.")
       .def_property_readonly("estimate", &AnyAdaptive::estimate, "The estimator's current estimate, as a model.")
-      .def_property_readonly("health", &AnyAdaptive::health,
-                             "AdaptiveInverseHealth: rederivations, the refusals by reason (refused_diverged,\n"
-                             "refused_covariance, refused_unstable, refused_no_inverse) and last_refusal (why, '' if none).");
+      .def_property_readonly(
+          "health", &AnyAdaptive::health,
+          "AdaptiveInverseHealth: rederivations, the refusals by reason (refused_diverged,\n"
+          "refused_covariance, refused_unstable, refused_no_inverse) and last_refusal (why, '' if none).");
 }
 
 }  // namespace bonl_python

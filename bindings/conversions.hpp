@@ -35,10 +35,10 @@ class Typed : public py::object {
 };
 
 /// `using Name = Typed<...>` shown as `hint`, a string literal.
-#define BONL_PYTHON_TYPED(Name, hint)             \
-  struct Name##Hint {                             \
-    static constexpr const char text[] = hint;    \
-  };                                              \
+#define BONL_PYTHON_TYPED(Name, hint)          \
+  struct Name##Hint {                          \
+    static constexpr const char text[] = hint; \
+  };                                           \
   using Name = ::bonl_python::Typed<Name##Hint>
 
 /// A 1-D array of real numbers: to_vector / to_float64_array check it.
@@ -53,9 +53,7 @@ BONL_PYTHON_TYPED(Record, "tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]
 BONL_PYTHON_TYPED(RecordList, "collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]]");
 
 /// The name of an object's type, for messages.
-inline std::string type_name(const py::handle& object) {
-  return py::str(py::type::handle_of(object).attr("__name__"));
-}
+inline std::string type_name(const py::handle& object) { return py::str(py::type::handle_of(object).attr("__name__")); }
 
 /// True for the numpy dtype kinds whose values are real numbers: bool, signed and unsigned integers,
 /// floating point.
@@ -72,7 +70,8 @@ inline py::array_t<double, py::array::c_style> to_float64_array(const py::handle
   const std::string prefix(name);
   const std::string expected = prefix + " must be a 1-D array of real numbers";
   require(!object.is_none(), expected + ", got None");
-  require(!py::isinstance<py::str>(object) && !py::isinstance<py::bytes>(object), expected + ", got " + type_name(object));
+  require(!py::isinstance<py::str>(object) && !py::isinstance<py::bytes>(object),
+          expected + ", got " + type_name(object));
   const py::module_ numpy = py::module_::import("numpy");
   require(!(py::isinstance(object, numpy.attr("ma").attr("MaskedArray")) &&
             numpy.attr("ma").attr("is_masked")(object).cast<bool>()),
@@ -87,7 +86,8 @@ inline py::array_t<double, py::array::c_style> to_float64_array(const py::handle
   require(static_cast<bool>(array), expected + ", got " + type_name(object));
   // ndim 0: a number, or an object numpy cannot see as a sequence (dict, set, generator).
   require(array.ndim() != 0, expected + ", got a single " + type_name(object));
-  require(array.ndim() == 1, prefix + " must be 1-D, got an array with " + std::to_string(array.ndim()) + " dimensions");
+  require(array.ndim() == 1,
+          prefix + " must be 1-D, got an array with " + std::to_string(array.ndim()) + " dimensions");
   const char kind = array.dtype().kind();
   require(kind != 'c', prefix + " must be real, got a complex array (dtype " + std::string(py::str(array.dtype())) +
                            "): pass its .real or abs() explicitly");
@@ -140,7 +140,6 @@ inline double to_scalar(const py::handle& object, const std::string& name) {
   bonl::detail::require(overflow.empty(), name + " must be a real number that a float64 can hold: " + overflow);
   return value;
 }
-
 
 /// Eigen vector -> 1-D numpy float64 array without copying the data (the array owns the moved vector).
 inline Vector to_numpy(Eigen::VectorXd&& vector) { return Vector(py::cast(std::move(vector))); }

@@ -38,8 +38,8 @@ double forgetting_factor(const py::handle& value, const char* what) {
       real = false;
     }
   }
-  bonl::detail::require(real, std::string(kForgettingForms) + "; " + what + " must be a real number, got " +
-                                  type_name(value));
+  bonl::detail::require(
+      real, std::string(kForgettingForms) + "; " + what + " must be a real number, got " + type_name(value));
   return factor;
 }
 
@@ -55,9 +55,9 @@ std::optional<bonl::ForgettingSchedule> parse_forgetting(const py::object& forge
     bonl::detail::require(items.size() == 3, kForgettingForms);
     const py::object samples = items[1];
     // An integer (Python or numpy), not a bool or a float that happens to be whole.
-    bonl::detail::require(!py::isinstance<py::bool_>(samples) && PyIndex_Check(samples.ptr()),
-                          std::string(kForgettingForms) + "; initial_samples must be an integer, got " +
-                              type_name(samples));
+    bonl::detail::require(
+        !py::isinstance<py::bool_>(samples) && PyIndex_Check(samples.ptr()),
+        std::string(kForgettingForms) + "; initial_samples must be an integer, got " + type_name(samples));
     Eigen::Index initial_samples = 0;
     bool in_range = true;
     try {
@@ -133,11 +133,10 @@ bonl.NumericalError
 
 /// identify's docstring: its options' entries from option_docs.hpp's table.
 const char* identify_doc() {
-  static const std::string doc =
-      std::string(kIdentifyHead) +
-      option_docs({"passes", "method", "forgetting", "p0", "refine_iterations", "normalise", "operating_point", "c0",
-                   "backlash_hold"}) +
-      kIdentifyTail;
+  static const std::string doc = std::string(kIdentifyHead) +
+                                 option_docs({"passes", "method", "forgetting", "p0", "refine_iterations", "normalise",
+                                              "operating_point", "c0", "backlash_hold"}) +
+                                 kIdentifyTail;
   return doc.c_str();
 }
 
@@ -363,11 +362,10 @@ void read_records(const py::object& u, const py::object& y, const py::object& re
     outputs.push_back(to_vector(y, "y"));
     return;
   }
-  bonl::detail::require(u.is_none() && y.is_none(),
-                        std::string("give u and y, or records, not both (") + usage + ")");
-  bonl::detail::require(!py::isinstance<py::array>(records) && py::isinstance<py::sequence>(records) &&
-                            !py::isinstance<py::str>(records),
-                        "records must be a list of pairs (u, y), got " + type_name(records) + " (" + usage + ")");
+  bonl::detail::require(u.is_none() && y.is_none(), std::string("give u and y, or records, not both (") + usage + ")");
+  bonl::detail::require(
+      !py::isinstance<py::array>(records) && py::isinstance<py::sequence>(records) && !py::isinstance<py::str>(records),
+      "records must be a list of pairs (u, y), got " + type_name(records) + " (" + usage + ")");
   const py::sequence list = records.cast<py::sequence>();
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string name = "records[" + std::to_string(i) + "]";
@@ -411,8 +409,7 @@ void bind_estimation(py::module_& m) {
            "work_per_sample : int, default 8\n    Model steps of the refinement per update (>= 2).\n\n"
            "Returns\n-------\nWindowRefinementOptions\n    The options; the Estimator checks them.")
       .def_readwrite("enabled", &bonl::WindowRefinementOptions::enabled, "bool: whether the refinement runs")
-      .def_readwrite("length", &bonl::WindowRefinementOptions::length,
-                     "int: the most samples it fits at once (>= 100)")
+      .def_readwrite("length", &bonl::WindowRefinementOptions::length, "int: the most samples it fits at once (>= 100)")
       .def_readwrite("work_per_sample", &bonl::WindowRefinementOptions::work_per_sample,
                      "int: model steps of the refinement per update (>= 2)");
 
@@ -463,7 +460,8 @@ void bind_estimation(py::module_& m) {
       option_docs({"method", "forgetting", "p0", "trace_ceiling", "recover_after", "stability_radius", "window", "c0",
                    "backlash_hold"});
   py::class_<AnyEstimator> estimator(m, "Estimator", estimator_doc.c_str());
-  bonl::for_each_model(bonl::Models{}, [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
+  bonl::for_each_model(bonl::Models{},
+                       [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
   py::class_<UpdateResults>(m, "UpdateResults", "What Estimator.update_record returns for a record.")
       .def_readonly("status", &UpdateResults::status,
                     "numpy.ndarray of int8: each sample's UpdateStatus, as int(UpdateStatus.<name>)")

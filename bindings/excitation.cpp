@@ -69,9 +69,7 @@ PyCommand command_argument(const py::object& object, const char* name) {
                        std::string(py::str(py::type::handle_of(object).attr("__name__"))));
 }
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 void bind_excitation(py::module_& sub) {
   py::class_<PyCommand>(sub, "Command",

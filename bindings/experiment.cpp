@@ -64,8 +64,13 @@ struct PyModelResult {
 
 template <class Model>
 PyModelResult python_result(const experiment::ModelResult<Model>& r) {
-  PyModelResult out{r.kName, experiment::paper_label(r.kName), python_model(r.model), python_model(r.online_model),
-                    r, experiment::labelled_parameters(r.model), {}};
+  PyModelResult out{r.kName,
+                    experiment::paper_label(r.kName),
+                    python_model(r.model),
+                    python_model(r.online_model),
+                    r,
+                    experiment::labelled_parameters(r.model),
+                    {}};
   for (std::size_t i = 0; i < Model::kDescription.parameters.size(); ++i) {
     const bonl::ParameterDescription& parameter = Model::kDescription.parameters[i];
     const Eigen::VectorXd value = r.model.parameter(i);
@@ -100,23 +105,31 @@ void bind_record(py::module_& sub) {
   using experiment::Record;
   py::class_<Record>(sub, "Record",
                      "One processed record of the experiment, on the output grid (bonl/experiment/records.hpp).")
-      .def_property_readonly("time", [](const Record& r) { return to_numpy(r.time); }, "numpy.ndarray: [s].")
-      .def_property_readonly("input", [](const Record& r) { return to_numpy(r.input); },
-                             "numpy.ndarray: u = V - V0 [V], the identification input.")
-      .def_property_readonly("angle", [](const Record& r) { return to_numpy(r.angle); },
-                             "numpy.ndarray: the averaged, low-passed measured angle [rad].")
-      .def_property_readonly("velocity", [](const Record& r) { return to_numpy(r.velocity); },
-                             "numpy.ndarray: y, its numerical derivative [rad/s]: what the models are fitted on.")
-      .def_property_readonly("true_velocity", [](const Record& r) { return to_numpy(r.true_velocity); },
-                             "numpy.ndarray: the plant's joint rate, noise-free and unfiltered [rad/s].")
-      .def_property_readonly("min_position", [](const Record& r) { return r.trajectory.min_position; },
-                             "float: smallest piston position of the plant's run [m].")
-      .def_property_readonly("max_position", [](const Record& r) { return r.trajectory.max_position; },
-                             "float: largest piston position of the plant's run [m].")
-      .def_property_readonly("reached_end_stop", [](const Record& r) { return r.trajectory.reached_end_stop; },
-                             "bool: the piston left the stroke during the run.")
-      .def_property_readonly("steps", [](const Record& r) { return r.trajectory.steps; },
-                             "int: CVODE's internal steps for the run.")
+      .def_property_readonly(
+          "time", [](const Record& r) { return to_numpy(r.time); }, "numpy.ndarray: [s].")
+      .def_property_readonly(
+          "input", [](const Record& r) { return to_numpy(r.input); },
+          "numpy.ndarray: u = V - V0 [V], the identification input.")
+      .def_property_readonly(
+          "angle", [](const Record& r) { return to_numpy(r.angle); },
+          "numpy.ndarray: the averaged, low-passed measured angle [rad].")
+      .def_property_readonly(
+          "velocity", [](const Record& r) { return to_numpy(r.velocity); },
+          "numpy.ndarray: y, its numerical derivative [rad/s]: what the models are fitted on.")
+      .def_property_readonly(
+          "true_velocity", [](const Record& r) { return to_numpy(r.true_velocity); },
+          "numpy.ndarray: the plant's joint rate, noise-free and unfiltered [rad/s].")
+      .def_property_readonly(
+          "min_position", [](const Record& r) { return r.trajectory.min_position; },
+          "float: smallest piston position of the plant's run [m].")
+      .def_property_readonly(
+          "max_position", [](const Record& r) { return r.trajectory.max_position; },
+          "float: largest piston position of the plant's run [m].")
+      .def_property_readonly(
+          "reached_end_stop", [](const Record& r) { return r.trajectory.reached_end_stop; },
+          "bool: the piston left the stroke during the run.")
+      .def_property_readonly(
+          "steps", [](const Record& r) { return r.trajectory.steps; }, "int: CVODE's internal steps for the run.")
       .def("__repr__", [](const Record& r) { return "Record(" + std::to_string(r.time.size()) + " samples)"; });
 }
 
@@ -130,18 +143,23 @@ void bind_model_result(py::module_& sub) {
                     "its parameters are not finite.")
       .def_readonly("online_model", &PyModelResult::online_model,
                     "The recursive estimator's model alone after one pass (no refinement); None if not finite.")
-      .def_property_readonly("mse", [](const PyModelResult& r) { return r.scores.mse; },
-                             "float: validation MSE of the velocity, free-run [(rad/s)^2]; inf when unstable.")
-      .def_property_readonly("simulated", [](const PyModelResult& r) { return to_numpy(r.scores.simulated); },
-                             "numpy.ndarray: the free-run validation velocity [rad/s]; NaN when unstable.")
-      .def_property_readonly("online_mse", [](const PyModelResult& r) { return r.scores.online_mse; },
-                             "float: the online estimate's validation MSE [(rad/s)^2].")
-      .def_property_readonly("robustness_mse", [](const PyModelResult& r) { return r.scores.robustness_mse; },
-                             "list of float: validation MSE on each robustness trajectory (empty when not run).")
-      .def_property_readonly("seconds", [](const PyModelResult& r) { return r.scores.seconds; },
-                             "float: wall time of identify() [s].")
-      .def_property_readonly("online_seconds", [](const PyModelResult& r) { return r.scores.online_seconds; },
-                             "float: wall time of the one-pass recursive estimate [s].")
+      .def_property_readonly(
+          "mse", [](const PyModelResult& r) { return r.scores.mse; },
+          "float: validation MSE of the velocity, free-run [(rad/s)^2]; inf when unstable.")
+      .def_property_readonly(
+          "simulated", [](const PyModelResult& r) { return to_numpy(r.scores.simulated); },
+          "numpy.ndarray: the free-run validation velocity [rad/s]; NaN when unstable.")
+      .def_property_readonly(
+          "online_mse", [](const PyModelResult& r) { return r.scores.online_mse; },
+          "float: the online estimate's validation MSE [(rad/s)^2].")
+      .def_property_readonly(
+          "robustness_mse", [](const PyModelResult& r) { return r.scores.robustness_mse; },
+          "list of float: validation MSE on each robustness trajectory (empty when not run).")
+      .def_property_readonly(
+          "seconds", [](const PyModelResult& r) { return r.scores.seconds; }, "float: wall time of identify() [s].")
+      .def_property_readonly(
+          "online_seconds", [](const PyModelResult& r) { return r.scores.online_seconds; },
+          "float: wall time of the one-pass recursive estimate [s].")
       .def_readonly("parameters", &PyModelResult::table,
                     "list of (str, float): the parameters as the rows of the paper's Table 1, ('b0', b_0), ...")
       .def_readonly("params", &PyModelResult::params,
@@ -154,11 +172,13 @@ void bind_model_result(py::module_& sub) {
 void bind_method_result(py::module_& sub) {
   using experiment::MethodResult;
   py::class_<MethodResult>(sub, "MethodResult", "One estimator method's results, for every model of the experiment.")
-      .def_property_readonly("method", [](const MethodResult& m) { return bonl::to_string(m.method); },
-                             "str: 'output_error' or 'paper'.")
+      .def_property_readonly(
+          "method", [](const MethodResult& m) { return bonl::to_string(m.method); }, "str: 'output_error' or 'paper'.")
       .def_property_readonly(
           "models",
-          [](const MethodResult& m) { return by_model<PyModelResult>(m, [](const auto& r) { return python_result(r); }); },
+          [](const MethodResult& m) {
+            return by_model<PyModelResult>(m, [](const auto& r) { return python_result(r); });
+          },
           "dict[str, ModelResult]: by model name, in the order of the paper's equations (ARX first).")
       .def_property_readonly(
           "mse", [](const MethodResult& m) { return by_model<py::float_>(m, [](const auto& r) { return r.mse; }); },
@@ -167,7 +187,8 @@ void bind_method_result(py::module_& sub) {
           "online_mse",
           [](const MethodResult& m) { return by_model<py::float_>(m, [](const auto& r) { return r.online_mse; }); },
           "dict[str, float]: the online estimates' validation MSE by model name [(rad/s)^2].")
-      .def("__repr__", [](const MethodResult& m) { return std::string("MethodResult(") + bonl::to_string(m.method) + ")"; });
+      .def("__repr__",
+           [](const MethodResult& m) { return std::string("MethodResult(") + bonl::to_string(m.method) + ")"; });
 }
 
 void bind_result(py::module_& sub) {
@@ -192,8 +213,9 @@ void bind_result(py::module_& sub) {
       sub, "PaperExperimentResult",
       "Everything the paper's experiment gives (run_paper_experiment): the plant, the two records, both\n"
       "methods' results for every model, and the wall times.")
-      .def_property_readonly("parameters", [](const PaperExperimentResult& r) { return r.parameters; },
-                             "bonl.plant.Parameters: the plant the experiment ran on.")
+      .def_property_readonly(
+          "parameters", [](const PaperExperimentResult& r) { return r.parameters; },
+          "bonl.plant.Parameters: the plant the experiment ran on.")
       .def_property_readonly(
           "identification", [](const PaperExperimentResult& r) { return &r.records.identification; },
           py::return_value_policy::reference_internal, "Record: the identification record (the paper's multi-sine).")
@@ -236,8 +258,7 @@ void bind_result(py::module_& sub) {
 }  // namespace
 
 void bind_tracking(py::module_& sub) {
-  py::class_<experiment::TrackingRun>(sub, "TrackingRun",
-                                      "One controller's run of ``run_tracking_experiment``.")
+  py::class_<experiment::TrackingRun>(sub, "TrackingRun", "One controller's run of ``run_tracking_experiment``.")
       .def_readonly("controller", &experiment::TrackingRun::controller,
                     "str: 'PI', a model's name (PI plus its inverse as feedforward), or '<model> (adaptive)'.")
       .def_readonly("label", &experiment::TrackingRun::label,
@@ -249,12 +270,15 @@ void bind_tracking(py::module_& sub) {
                     "float: the same over the period before change_time.")
       .def_readonly("rms_after_change", &experiment::TrackingRun::rms_after_change,
                     "float: the same over [change_time + period, change_time + 2 period].")
-      .def_property_readonly("command", [](const experiment::TrackingRun& r) { return to_numpy(r.command); },
-                             "numpy.ndarray: V(k) applied [V].")
-      .def_property_readonly("feedforward", [](const experiment::TrackingRun& r) { return to_numpy(r.feedforward); },
-                             "numpy.ndarray: the feedforward's part of the command [V] (0 for PI).")
-      .def_property_readonly("joint_rate", [](const experiment::TrackingRun& r) { return to_numpy(r.joint_rate); },
-                             "numpy.ndarray: the plant's true joint rate [rad/s].")
+      .def_property_readonly(
+          "command", [](const experiment::TrackingRun& r) { return to_numpy(r.command); },
+          "numpy.ndarray: V(k) applied [V].")
+      .def_property_readonly(
+          "feedforward", [](const experiment::TrackingRun& r) { return to_numpy(r.feedforward); },
+          "numpy.ndarray: the feedforward's part of the command [V] (0 for PI).")
+      .def_property_readonly(
+          "joint_rate", [](const experiment::TrackingRun& r) { return to_numpy(r.joint_rate); },
+          "numpy.ndarray: the plant's true joint rate [rad/s].")
       .def_readonly("inexact", &experiment::TrackingRun::inexact,
                     "int: feedforward samples whose InverseStatus was not Exact.")
       .def_readonly("rederivations", &experiment::TrackingRun::rederivations,
@@ -265,11 +289,13 @@ void bind_tracking(py::module_& sub) {
                ", rms=" + bonl::detail::format_number(r.rms) + ")";
       });
   py::class_<experiment::TrackingResult>(sub, "TrackingResult", "What ``run_tracking_experiment`` gives.")
-      .def_property_readonly("time", [](const experiment::TrackingResult& r) { return to_numpy(r.time); },
-                             "numpy.ndarray: t_k [s].")
-      .def_property_readonly("reference", [](const experiment::TrackingResult& r) { return to_numpy(r.reference); },
-                             "numpy.ndarray: the reference joint velocity [rad/s].")
-      .def_readonly("proportional_gain", &experiment::TrackingResult::proportional_gain, "float: the PI's Kc [V/(rad/s)].")
+      .def_property_readonly(
+          "time", [](const experiment::TrackingResult& r) { return to_numpy(r.time); }, "numpy.ndarray: t_k [s].")
+      .def_property_readonly(
+          "reference", [](const experiment::TrackingResult& r) { return to_numpy(r.reference); },
+          "numpy.ndarray: the reference joint velocity [rad/s].")
+      .def_readonly("proportional_gain", &experiment::TrackingResult::proportional_gain,
+                    "float: the PI's Kc [V/(rad/s)].")
       .def_readonly("integral_time", &experiment::TrackingResult::integral_time, "float: the PI's tau_I [s].")
       .def_readonly("runs", &experiment::TrackingResult::runs,
                     "list of TrackingRun: PI and each model's feedforward; then PI, P-H-W and adaptive P-H-W under the "
@@ -398,7 +424,8 @@ void bind_experiment(py::module_& m) {
       [](const ArrayLike& x, double ts) { return to_numpy(experiment::differentiate(to_vector(x, "x"), ts)); },
       py::arg("x"), py::arg("ts"),
       "Numerical derivative: central differences, one-sided at both ends.\n\n"
-      "Parameters\n----------\nx : array_like, 1-D\n    Finite samples, at least 2.\nts : float\n    Sample time [s].\n\n"
+      "Parameters\n----------\nx : array_like, 1-D\n    Finite samples, at least 2.\nts : float\n    Sample time "
+      "[s].\n\n"
       "Returns\n-------\nnumpy.ndarray\n\n"
       "Raises\n------\nValueError\n    When ``x`` is not 1-D, not finite or shorter than 2, or ts is not > 0.");
 

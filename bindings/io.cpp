@@ -12,9 +12,8 @@ namespace bonl_python {
 
 void bind_io(py::module_& m) {
   m.def(
-      "load_model",
-      [](const std::string& text) -> AnyModel { return bonl::io::load_model(text); },
-      py::arg("text"), R"doc(Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
+      "load_model", [](const std::string& text) -> AnyModel { return bonl::io::load_model(text); }, py::arg("text"),
+      R"doc(Read a model written by Model.to_json (or by C++'s bonl::io::to_json).
 
 Parameters
 ----------

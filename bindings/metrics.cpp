@@ -20,22 +20,21 @@ void bind_metrics(py::module_& m) {
            "Returns\n-------\nfloat\n    " +
            returns;
   };
-  metrics.def(
-      "mse", pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::mse(y, yhat); }),
-      py::arg("y"), py::arg("yhat"),
-      doc("Mean squared error, mean((y - yhat)^2).", "The MSE, in y's units squared, >= 0.").c_str());
+  metrics.def("mse",
+              pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::mse(y, yhat); }),
+              py::arg("y"), py::arg("yhat"),
+              doc("Mean squared error, mean((y - yhat)^2).", "The MSE, in y's units squared, >= 0.").c_str());
   metrics.def(
       "rmse", pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::rmse(y, yhat); }),
       py::arg("y"), py::arg("yhat"),
       doc("Root mean squared error of yhat against y, sqrt(mean((y - yhat)^2)).", "The RMSE, in y's units, >= 0.")
           .c_str());
-  metrics.def(
-      "nrmse",
-      pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::nrmse(y, yhat); }),
-      py::arg("y"), py::arg("yhat"),
-      doc("Normalised error ||y - yhat|| / ||y - mean(y)||.",
-          "The NRMSE, >= 0 (0 is perfect, 1 no better than y's mean).")
-          .c_str());
+  metrics.def("nrmse",
+              pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::nrmse(y, yhat); }),
+              py::arg("y"), py::arg("yhat"),
+              doc("Normalised error ||y - yhat|| / ||y - mean(y)||.",
+                  "The NRMSE, >= 0 (0 is perfect, 1 no better than y's mean).")
+                  .c_str());
   metrics.def(
       "fit_percent",
       pair([](const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) { return bonl::metrics::fit_percent(y, yhat); }),

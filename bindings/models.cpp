@@ -86,10 +86,10 @@ std::pair<double, double> read_pair(const py::object& value, const char* what, c
 /// initial=(u_past, y_past): the measured recent past, or None (rest): (u_past, y_past) as vectors.
 std::pair<Eigen::VectorXd, Eigen::VectorXd> read_initial(const py::object& initial) {
   if (initial.is_none()) return {Eigen::VectorXd(0), Eigen::VectorXd(0)};
-  bonl::detail::require(!py::isinstance<py::array>(initial) && py::isinstance<py::sequence>(initial) &&
-                            !py::isinstance<py::str>(initial) && py::len(initial) == 2,
-                        "initial must be None or a pair (u_past, y_past) of the measured recent past, got " +
-                            type_name(initial));
+  bonl::detail::require(
+      !py::isinstance<py::array>(initial) && py::isinstance<py::sequence>(initial) &&
+          !py::isinstance<py::str>(initial) && py::len(initial) == 2,
+      "initial must be None or a pair (u_past, y_past) of the measured recent past, got " + type_name(initial));
   const py::sequence pair = initial.cast<py::sequence>();
   return {to_vector(pair[0], "u_past"), to_vector(pair[1], "y_past")};
 }
@@ -199,7 +199,8 @@ str
       .def(py::pickle([](const Model& model) { return bonl::io::to_json(model); },
                       [](const std::string& text) { return bonl::io::model_from_json<Model>(text); }))
       .def("__copy__", [](const Model& model) { return Model(model); })
-      .def("__deepcopy__", [](const Model& model, const py::dict&) { return Model(model); }, py::arg("memo"));
+      .def(
+          "__deepcopy__", [](const Model& model, const py::dict&) { return Model(model); }, py::arg("memo"));
 }
 
 /// The class docstring: the model's summary, then its constructor's arguments, from its description.
@@ -214,7 +215,8 @@ std::string class_doc() {
   }
   for (const bonl::ParameterDescription& parameter : description.parameters) {
     doc += std::string(parameter.name) +
-           (parameter.shape == bonl::ParameterShape::Number ? " : float, optional\n    " : " : array_like, optional\n    ") +
+           (parameter.shape == bonl::ParameterShape::Number ? " : float, optional\n    "
+                                                            : " : array_like, optional\n    ") +
            parameter.meaning + (parameter.non_negative ? ", >= 0" : "") + ".\n";
   }
   return doc;
@@ -227,7 +229,8 @@ py::object parameter_to_python(const bonl::ParameterDescription& parameter, cons
 }
 
 Eigen::VectorXd parameter_from_python(const bonl::ParameterDescription& parameter, const py::handle& value) {
-  if (parameter.shape == bonl::ParameterShape::Number) return Eigen::VectorXd::Constant(1, to_scalar(value, parameter.name));
+  if (parameter.shape == bonl::ParameterShape::Number)
+    return Eigen::VectorXd::Constant(1, to_scalar(value, parameter.name));
   return to_vector(value, parameter.name);
 }
 
@@ -235,9 +238,8 @@ template <std::size_t>
 using OrderArgument = Eigen::Index;
 /// The constructor's keyword argument for parameter block P: a number or an array, or None.
 template <class Model, std::size_t P>
-using ParameterArgument =
-    py::typing::Optional<std::conditional_t<Model::kDescription.parameters[P].shape == bonl::ParameterShape::Number,
-                                            Real, ArrayLike>>;
+using ParameterArgument = py::typing::Optional<
+    std::conditional_t<Model::kDescription.parameters[P].shape == bonl::ParameterShape::Number, Real, ArrayLike>>;
 
 /// The constructor's argument for order O: required, or with its default (the integrators ni).
 template <class Model, std::size_t O>
@@ -279,7 +281,7 @@ void bind_model(py::module_& m) {
   py::list order_names;
   for (const bonl::OrderDescription& order : description.orders) order_names.append(order.name);
   cls.attr("ORDERS") = py::tuple(order_names);  // the constructor's order arguments, in order
-  py::dict order_defaults;  // the orders a call or a file may leave out, and their values
+  py::dict order_defaults;                      // the orders a call or a file may leave out, and their values
   for (const bonl::OrderDescription& order : description.orders) {
     if (order.default_value != bonl::OrderDescription::kRequired) order_defaults[order.name] = order.default_value;
   }
@@ -298,8 +300,9 @@ void bind_model(py::module_& m) {
   }
   for (std::size_t i = 0; i < kParameters; ++i) {
     const bonl::ParameterDescription& parameter = description.parameters[i];
-    const std::string doc = std::string(parameter.shape == bonl::ParameterShape::Number ? "float: " : "numpy.ndarray: ") +
-                            parameter.meaning + ".";
+    const std::string doc =
+        std::string(parameter.shape == bonl::ParameterShape::Number ? "float: " : "numpy.ndarray: ") +
+        parameter.meaning + ".";
     // A number block is a float, an array block a 1-D array, in Python and in the stubs.
     if (parameter.shape == bonl::ParameterShape::Number) {
       cls.def_property(
@@ -322,7 +325,8 @@ void bind_model(py::module_& m) {
          [](const Model& model) {
            py::typing::Dict<py::str, py::typing::Union<py::float_, Vector>> params;
            for (std::size_t i = 0; i < kParameters; ++i) {
-             params[description.parameters[i].name] = parameter_to_python(description.parameters[i], model.parameter(i));
+             params[description.parameters[i].name] =
+                 parameter_to_python(description.parameters[i], model.parameter(i));
            }
            return params;
          },
@@ -353,8 +357,8 @@ void bind_models(py::module_& m) {
   // Released never: the classes live as long as the interpreter.
   g_extrapolation_warning = PyErr_NewExceptionWithDoc(
       "bonl.ExtrapolationWarning",
-      "A model was simulated on inputs outside the range it was identified on (Model.input_range).",
-      PyExc_UserWarning, nullptr);
+      "A model was simulated on inputs outside the range it was identified on (Model.input_range).", PyExc_UserWarning,
+      nullptr);
   g_stability_warning = PyErr_NewExceptionWithDoc(
       "bonl.StabilityWarning",
       "identify() returned a model whose linear block is unstable or barely damped (Model.pole_radius >= 0.999).",

@@ -33,8 +33,9 @@ PyCommand command_argument(const py::object& object, const char* name);
 
 // How the stubs show the plant's arguments taken as Python objects (conversions.hpp's Typed).
 /// simulate's command: what command_argument takes.
-BONL_PYTHON_TYPED(CommandArgument, "bonl._bonl.plant.Command | collections.abc.Callable[[float], float] | "
-                                   "tuple[numpy.typing.ArrayLike, float]");
+BONL_PYTHON_TYPED(CommandArgument,
+                  "bonl._bonl.plant.Command | collections.abc.Callable[[float], float] | "
+                  "tuple[numpy.typing.ArrayLike, float]");
 /// The load: a command as command_argument takes it (but a pair), or None.
 BONL_PYTHON_TYPED(LoadArgument, "bonl._bonl.plant.Command | collections.abc.Callable[[float], float] | None");
 /// atol: a dict {state: tolerance}, or None.

@@ -149,16 +149,20 @@ void bind_plant_parameters(py::module_& sub) {
   cls.def("validate", &plant::Parameters::validate,
           "Check that every parameter is physical.\n\n"
           "Raises\n------\nValueError\n    Naming the first non-physical parameter, its requirement and its value.")
-      .def("head_area", &plant::Parameters::head_area, "The piston area A1 = pi D^2 / 4.\n\n"
+      .def("head_area", &plant::Parameters::head_area,
+           "The piston area A1 = pi D^2 / 4.\n\n"
            "Returns\n-------\nfloat\n    A1 [m^2].")
-      .def("annulus_area", &plant::Parameters::annulus_area, "The annulus area A2 = pi (D^2 - d^2) / 4.\n\n"
+      .def("annulus_area", &plant::Parameters::annulus_area,
+           "The annulus area A2 = pi (D^2 - d^2) / 4.\n\n"
            "Returns\n-------\nfloat\n    A2 [m^2].")
-      .def("flow_gain", &plant::Parameters::flow_gain, "The flow gain Kq = Cd w xv_max sqrt(2 / rho).\n\n"
+      .def("flow_gain", &plant::Parameters::flow_gain,
+           "The flow gain Kq = Cd w xv_max sqrt(2 / rho).\n\n"
            "Returns\n-------\nfloat\n    Kq [m^3/(s sqrt(Pa))].")
       .def("valve_gain", &plant::Parameters::valve_gain,
            "The valve gain kv = 1 / (V0 - d): a full command opens the spool fully.\n\n"
            "Returns\n-------\nfloat\n    kv [1/V].")
-      .def("angle_offset", &plant::Parameters::angle_offset, "phi0, the linkage angle at mid-stroke.\n\n"
+      .def("angle_offset", &plant::Parameters::angle_offset,
+           "phi0, the linkage angle at mid-stroke.\n\n"
            "Returns\n-------\nfloat\n    phi0 [rad].")
       .def("linkage_angle", &plant::Parameters::linkage_angle, py::arg("position"),
            "Linkage angle phi at piston position h (law of cosines).\n\n"
@@ -169,20 +173,24 @@ void bind_plant_parameters(py::module_& sub) {
       .def("moment_arm", &plant::Parameters::moment_arm, py::arg("position"),
            "Moment arm r(h) = a b sin(phi) / l, so that dtheta/dt = v / r.\n\n"
            "Parameters\n----------\nposition : float\n    h [m].\n\nReturns\n-------\nfloat\n    r [m].")
-      .def("gravity_force",
-           [](const plant::Parameters& p, double position) { return plant::gravity_force(p, position); },
-           py::arg("position"),
-           "Spring (gravity) force at the rod, Fs(h) = m_dcg g cos(theta + theta_g) / r(h).\n\n"
-           "Parameters\n----------\nposition : float\n    h [m].\n\nReturns\n-------\nfloat\n    Fs [N].")
+      .def(
+          "gravity_force",
+          [](const plant::Parameters& p, double position) { return plant::gravity_force(p, position); },
+          py::arg("position"),
+          "Spring (gravity) force at the rod, Fs(h) = m_dcg g cos(theta + theta_g) / r(h).\n\n"
+          "Parameters\n----------\nposition : float\n    h [m].\n\nReturns\n-------\nfloat\n    Fs [N].")
       .def("to_dict", &parameters_to_dict, "Every parameter by name.\n\nReturns\n-------\ndict[str, float]")
       .def(
-          "copy", [](const plant::Parameters& p) { return p; }, "An independent copy.\n\n"
+          "copy", [](const plant::Parameters& p) { return p; },
+          "An independent copy.\n\n"
           "Returns\n-------\nParameters\n    The copy, equal to this one.")
       .def("__copy__", [](const plant::Parameters& p) { return p; })
-      .def("__deepcopy__", [](const plant::Parameters& p, const py::dict&) { return p; }, py::arg("memo"))
+      .def(
+          "__deepcopy__", [](const plant::Parameters& p, const py::dict&) { return p; }, py::arg("memo"))
       .def("__eq__",
            [](const plant::Parameters& a, const py::object& other) -> py::object {
-             if (!py::isinstance<plant::Parameters>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+             if (!py::isinstance<plant::Parameters>(other))
+               return py::reinterpret_borrow<py::object>(Py_NotImplemented);
              const auto& b = other.cast<const plant::Parameters&>();
              for (const ParameterField& field : parameter_fields()) {
                if (!(a.*field.member == b.*field.member)) return py::bool_(false);

@@ -23,33 +23,38 @@ namespace plant = bonl::plant;
 double initial_position_argument(const py::object& initial_position) {
   if (initial_position.is_none()) return -1.0;
   const double h0 = to_scalar(initial_position, "initial_position");
-  bonl::detail::require(std::isfinite(h0) && h0 >= 0.0,
-                        "initial_position must be finite and >= 0 (None means mid-stroke), got " +
-                            bonl::detail::format_number(h0));
+  bonl::detail::require(
+      std::isfinite(h0) && h0 >= 0.0,
+      "initial_position must be finite and >= 0 (None means mid-stroke), got " + bonl::detail::format_number(h0));
   return h0;
 }
 
-plant::SimulationOptions simulation_options(double sample_time, double command_rate, double rtol, const py::object& atol,
-                                            long max_steps_per_interval, bool sensor_noise, std::uint64_t noise_seed,
-                                            const py::object& initial_position, const py::object& load,
-                                            bool& calls_python) {
+plant::SimulationOptions simulation_options(double sample_time, double command_rate, double rtol,
+                                            const py::object& atol, long max_steps_per_interval, bool sensor_noise,
+                                            std::uint64_t noise_seed, const py::object& initial_position,
+                                            const py::object& load, bool& calls_python) {
   plant::SimulationOptions options;
   options.sample_time = sample_time;
   options.command_rate = command_rate;
   options.tolerances.relative = rtol;
   options.tolerances.max_steps_per_interval = max_steps_per_interval;
   if (!atol.is_none()) {
-    bonl::detail::require(py::isinstance<py::dict>(atol),
-                          "atol must be a dict {state: tolerance} (position, velocity, pressure, spool), got " +
-                              type_name(atol));
+    bonl::detail::require(
+        py::isinstance<py::dict>(atol),
+        "atol must be a dict {state: tolerance} (position, velocity, pressure, spool), got " + type_name(atol));
     for (const auto& item : atol.cast<py::dict>()) {
       const auto key = std::string(py::str(item.first));
       const double value = to_scalar(item.second, "atol['" + key + "']");
-      if (key == "position") options.tolerances.absolute_position = value;
-      else if (key == "velocity") options.tolerances.absolute_velocity = value;
-      else if (key == "pressure") options.tolerances.absolute_pressure = value;
-      else if (key == "spool") options.tolerances.absolute_spool = value;
-      else bonl::detail::fail("atol: unknown key '" + key + "' (position, velocity, pressure, spool)");
+      if (key == "position")
+        options.tolerances.absolute_position = value;
+      else if (key == "velocity")
+        options.tolerances.absolute_velocity = value;
+      else if (key == "pressure")
+        options.tolerances.absolute_pressure = value;
+      else if (key == "spool")
+        options.tolerances.absolute_spool = value;
+      else
+        bonl::detail::fail("atol: unknown key '" + key + "' (position, velocity, pressure, spool)");
     }
   }
   options.sensor_noise = sensor_noise;
@@ -116,7 +121,8 @@ void bind_trajectory(py::module_& sub) {
   }
   cls.def_readonly("min_position", &plant::Trajectory::min_position,
                    "float: smallest h reached on the command grid [m].")
-      .def_readonly("max_position", &plant::Trajectory::max_position, "float: largest h reached on the command grid [m].")
+      .def_readonly("max_position", &plant::Trajectory::max_position,
+                    "float: largest h reached on the command grid [m].")
       .def_readonly("reached_end_stop", &plant::Trajectory::reached_end_stop,
                     "bool: h left [0, L] at some point of the command grid.")
       .def_readonly("steps", &plant::Trajectory::steps, "int: CVODE's internal steps.")
@@ -136,8 +142,8 @@ void bind_trajectory(py::module_& sub) {
           "dict[str, numpy.ndarray | float | bool | int]")
       .def("__len__", [](const plant::Trajectory& t) { return t.time.size(); })
       .def("__repr__", [](const plant::Trajectory& t) {
-        return "Trajectory(" + std::to_string(t.time.size()) + " samples, reached_end_stop=" +
-               (t.reached_end_stop ? "True" : "False") + ")";
+        return "Trajectory(" + std::to_string(t.time.size()) +
+               " samples, reached_end_stop=" + (t.reached_end_stop ? "True" : "False") + ")";
       });
 }
 

@@ -66,7 +66,8 @@ void bind_measurement(py::module_& sub) {
       });
 }
 
-const char* const kSteppingPlantDoc = R"doc(The plant advanced one sample per call: ``measurement = plant.step(command)``.
+const char* const kSteppingPlantDoc =
+    R"doc(The plant advanced one sample per call: ``measurement = plant.step(command)``.
 
 From rest at t = 0, ``step(V)`` holds the command V [V] over one sample (``sample_time``, on the
 ``command_rate`` grid), integrates with CVODE and returns the ``Measurement`` at the sample's end:
@@ -164,10 +165,10 @@ void bind_plant_stepping(py::module_& sub) {
                        const ToleranceArgument& atol, long max_steps_per_interval, bool sensor_noise,
                        std::uint64_t noise_seed, const PositionArgument& initial_position, const LoadArgument& load) {
              bool calls_python = false;
-             return plant::SteppingPlant(parameters_argument(parameters),
-                                         simulation_options(sample_time, command_rate, rtol, atol, max_steps_per_interval,
-                                                            sensor_noise, noise_seed, initial_position, load,
-                                                            calls_python));
+             return plant::SteppingPlant(
+                 parameters_argument(parameters),
+                 simulation_options(sample_time, command_rate, rtol, atol, max_steps_per_interval, sensor_noise,
+                                    noise_seed, initial_position, load, calls_python));
            }),
            py::arg("parameters") = py::none(), py::kw_only(), py::arg("sample_time") = 0.01,
            py::arg("command_rate") = 1000.0, py::arg("rtol") = 1e-6, py::arg("atol") = py::none(),
@@ -175,11 +176,13 @@ void bind_plant_stepping(py::module_& sub) {
            py::arg("noise_seed") = std::uint64_t{1}, py::arg("initial_position") = py::none(),
            py::arg("load") = py::none())
       .def(
-          "step", [](plant::SteppingPlant& self, const Real& command) { return self.step(to_scalar(command, "command")); },
+          "step",
+          [](plant::SteppingPlant& self, const Real& command) { return self.step(to_scalar(command, "command")); },
           py::arg("command"), kStepDoc)
       .def(
           "reset",
-          [](plant::SteppingPlant& self, const PositionArgument& initial_position, std::optional<std::uint64_t> noise_seed) {
+          [](plant::SteppingPlant& self, const PositionArgument& initial_position,
+             std::optional<std::uint64_t> noise_seed) {
             if (initial_position.is_none() && !noise_seed) return self.reset();
             return self.reset(initial_position.is_none() ? self.options().initial_position
                                                          : initial_position_argument(initial_position),
@@ -196,7 +199,8 @@ void bind_plant_stepping(py::module_& sub) {
           "measurement", [](const plant::SteppingPlant& self) { return self.measurement(); },
           "Measurement: the latest, at ``time`` (a copy).")
       .def_property_readonly("time", &plant::SteppingPlant::time, "float: t_k, the latest measurement's time [s].")
-      .def_property_readonly("steps", &plant::SteppingPlant::steps, "int: CVODE's internal steps since the start or reset.")
+      .def_property_readonly("steps", &plant::SteppingPlant::steps,
+                             "int: CVODE's internal steps since the start or reset.")
       .def_property_readonly(
           "sample_time", [](const plant::SteppingPlant& self) { return self.options().sample_time; },
           "float: the time one step advances [s].")

@@ -133,19 +133,18 @@ void bind_selection(py::module_& m) {
       [](const py::typing::Optional<ArrayLike>& u, const py::typing::Optional<ArrayLike>& y,
          const py::typing::Optional<RecordList>& records, const std::string& criterion, double validation_fraction,
          const py::object& window, int passes, const std::string& method, const Forgetting& forgetting,
-         std::optional<double> p0, int refine_iterations, bool normalise,
-         const OperatingPointSource& operating_point) {
+         std::optional<double> p0, int refine_iterations, bool normalise, const OperatingPointSource& operating_point) {
         std::vector<Eigen::VectorXd> inputs, outputs;
         read_records(u, y, records,
                      "select(candidates, u, y) for one record, select(candidates, records=[(u1, y1), (u2, y2), ...]) "
                      "for several",
                      inputs, outputs);
-        return make_selection(std::move(inputs), std::move(outputs), criterion, validation_fraction, window_from(window),
+        return make_selection(std::move(inputs), std::move(outputs), criterion, validation_fraction,
+                              window_from(window),
                               {passes, method, forgetting, p0, refine_iterations, normalise, operating_point});
       },
       py::arg("u") = py::none(), py::arg("y") = py::none(), py::kw_only(), py::arg("records") = py::none(),
-      py::arg("criterion") = "validation",
-      py::arg("validation_fraction") = 0.25, py::arg("window") = 0,
+      py::arg("criterion") = "validation", py::arg("validation_fraction") = 0.25, py::arg("window") = 0,
       "bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. "
       "The keyword arguments after window are identify's.");
   bonl::for_each_model(bonl::Models{}, [&m](auto tag) { def_selection<typename decltype(tag)::type>(m); });

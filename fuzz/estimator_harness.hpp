@@ -23,7 +23,6 @@
 
 namespace bonl_fuzz {
 
-
 /// Everything model-specific comes from the model's description (bonl/models/model_description.hpp):
 /// which orders it takes, their documented ranges and compile-time values, and whether it has a
 /// backlash half-width c (the only constrained parameter, started at c0).
@@ -86,7 +85,8 @@ Scalar to_scalar(double x) {
     const auto rounded = static_cast<double>(std::nextafter(std::numeric_limits<Scalar>::max(), Scalar(0)));
     const double halfway = static_cast<double>(std::numeric_limits<Scalar>::max()) +
                            0.5 * (static_cast<double>(std::numeric_limits<Scalar>::max()) - rounded);
-    if (std::abs(x) < halfway) return std::copysign(std::numeric_limits<Scalar>::max(), static_cast<Scalar>(x > 0 ? 1 : -1));
+    if (std::abs(x) < halfway)
+      return std::copysign(std::numeric_limits<Scalar>::max(), static_cast<Scalar>(x > 0 ? 1 : -1));
     return x > 0 ? std::numeric_limits<Scalar>::infinity() : -std::numeric_limits<Scalar>::infinity();
   }
   return static_cast<Scalar>(x);
@@ -167,14 +167,15 @@ inline bool verbose() {
 inline void print(const FuzzedOptions& decoded) {
   if (!verbose()) return;
   const bonl::EstimatorOptions& o = decoded.options;
-  std::fprintf(stderr,
-               "options: method %s, forgetting %s %.17g for %ld then %.17g (memory %.17g, %.17g, growth %.17g), p0 %.17g, "
-               "c0 %.17g, internal_refresh %ld, trace_ceiling %.17g, recover_after %ld\n",
-               bonl::to_string(o.method), o.resolved_forgetting().adaptive() ? "adaptive" : "steps",
-               o.resolved_forgetting().initial, long(o.resolved_forgetting().initial_samples), o.resolved_forgetting().final,
-               o.resolved_forgetting().initial_memory, o.resolved_forgetting().changing_memory,
-               o.resolved_forgetting().memory_growth, o.resolved_p0(), decoded.c0, long(o.internal_refresh),
-               o.resolved_trace_ceiling(), long(o.recover_after));
+  std::fprintf(
+      stderr,
+      "options: method %s, forgetting %s %.17g for %ld then %.17g (memory %.17g, %.17g, growth %.17g), p0 %.17g, "
+      "c0 %.17g, internal_refresh %ld, trace_ceiling %.17g, recover_after %ld\n",
+      bonl::to_string(o.method), o.resolved_forgetting().adaptive() ? "adaptive" : "steps",
+      o.resolved_forgetting().initial, long(o.resolved_forgetting().initial_samples), o.resolved_forgetting().final,
+      o.resolved_forgetting().initial_memory, o.resolved_forgetting().changing_memory,
+      o.resolved_forgetting().memory_growth, o.resolved_p0(), decoded.c0, long(o.internal_refresh),
+      o.resolved_trace_ceiling(), long(o.recover_after));
 }
 
 /// With BONL_FUZZ_STATS set: how the inputs and updates ended, printed at exit (docs/lab/fuzzing.md).
@@ -182,9 +183,10 @@ struct Outcomes {
   long bad_orders = 0, bad_options = 0, estimators = 0, status[4] = {0, 0, 0, 0};
   ~Outcomes() {
     if (std::getenv("BONL_FUZZ_STATS") == nullptr) return;
-    std::fprintf(stderr, "outcomes: orders rejected %ld, options rejected %ld, estimators run %ld; updates: Updated %ld, "
-                 "NoInformation %ld, RejectedNonFinite %ld, NumericalFailure %ld\n", bad_orders, bad_options, estimators,
-                 status[0], status[1], status[2], status[3]);
+    std::fprintf(stderr,
+                 "outcomes: orders rejected %ld, options rejected %ld, estimators run %ld; updates: Updated %ld, "
+                 "NoInformation %ld, RejectedNonFinite %ld, NumericalFailure %ld\n",
+                 bad_orders, bad_options, estimators, status[0], status[1], status[2], status[3]);
   }
 };
 inline Outcomes outcomes;
@@ -329,8 +331,7 @@ class Harness {
         FUZZ_CHECK(finite && !recovered && now.failures == health.failures && now.consecutive_failures == 0);
         FUZZ_CHECK(m_est.diverged() == health.diverged);
         break;
-      default:
-        FUZZ_CHECK(false);
+      default: FUZZ_CHECK(false);
     }
     FUZZ_CHECK(m_est.samples() == samples + 1);
     FUZZ_CHECK(m_est.diverged() == now.diverged);

@@ -10,12 +10,12 @@
 #include <limits>
 
 /// A violated invariant is a finding: say which, then trap (libFuzzer saves the input as crash-*).
-#define FUZZ_CHECK(condition)                                                                   \
-  do {                                                                                          \
-    if (!(condition)) {                                                                         \
+#define FUZZ_CHECK(condition)                                                                  \
+  do {                                                                                         \
+    if (!(condition)) {                                                                        \
       std::fprintf(stderr, "FUZZ_CHECK failed: %s (%s:%d)\n", #condition, __FILE__, __LINE__); \
-      __builtin_trap();                                                                         \
-    }                                                                                           \
+      __builtin_trap();                                                                        \
+    }                                                                                          \
   } while (false)
 
 namespace bonl_fuzz {

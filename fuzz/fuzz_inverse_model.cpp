@@ -70,8 +70,8 @@ void fuzz_inverse(FuzzedDataProvider& in) {
     const bool overflow = step.status == bonl::control::InverseStatus::RejectedOverflow;
     if (length < inverse.window_size() || !finite || overflow) {
       const auto expected = length < inverse.window_size() ? bonl::control::InverseStatus::RejectedShortPreview
-                            : !finite                     ? bonl::control::InverseStatus::RejectedNonFinite
-                                                          : bonl::control::InverseStatus::RejectedOverflow;
+                            : !finite                      ? bonl::control::InverseStatus::RejectedNonFinite
+                                                           : bonl::control::InverseStatus::RejectedOverflow;
       FUZZ_CHECK(step.status == expected);
       FUZZ_CHECK(std::isnan(step.value));
       // Untouched: the copy made before and the inverse step alike from here on.

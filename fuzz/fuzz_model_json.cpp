@@ -21,8 +21,8 @@
 #include <algorithm>
 #include <array>
 #include <cfloat>
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <initializer_list>
@@ -188,7 +188,7 @@ void check_format(const std::string& text, const M& model) {
       if (parameter.non_negative) FUZZ_CHECK(x >= 0.0);  // c >= 0
     } else {
       FUZZ_CHECK(numbers_ok(value, expected));
-      if (parameter.normalised != nullptr) FUZZ_CHECK(value[0] == 1.0);  // b_0 = 1, q_1 = 1
+      if (parameter.normalised != nullptr) FUZZ_CHECK(value[0] == 1.0);             // b_0 = 1, q_1 = 1
       for (Eigen::Index j = 0; parameter.increasing && j < expected.size(); ++j) {  // the knots
         FUZZ_CHECK(expected[j] != 0.0 && (j == 0 || expected[j - 1] < expected[j]));
       }

@@ -44,18 +44,42 @@ struct Field {
 #define BONL_FIELD(name) \
   Field { #name, &Parameters::name }
 constexpr std::array<Field, 36> kFields = {
-    BONL_FIELD(bore_diameter),      BONL_FIELD(rod_diameter),       BONL_FIELD(stroke),
-    BONL_FIELD(dead_volume_head),   BONL_FIELD(dead_volume_rod),    BONL_FIELD(supply_pressure),
-    BONL_FIELD(return_pressure),    BONL_FIELD(bulk_modulus),       BONL_FIELD(oil_density),
-    BONL_FIELD(discharge_coefficient), BONL_FIELD(area_gradient),   BONL_FIELD(spool_travel),
-    BONL_FIELD(internal_leakage),   BONL_FIELD(external_leakage),   BONL_FIELD(orifice_smoothing),
-    BONL_FIELD(valve_time_constant), BONL_FIELD(dead_band),         BONL_FIELD(neutral_voltage),
-    BONL_FIELD(max_voltage),        BONL_FIELD(pilot_hysteresis),   BONL_FIELD(mass),
-    BONL_FIELD(gravity_moment),     BONL_FIELD(gravity_angle_offset), BONL_FIELD(gravity),
-    BONL_FIELD(coulomb_friction),   BONL_FIELD(static_friction),    BONL_FIELD(stribeck_velocity),
-    BONL_FIELD(viscous_friction),   BONL_FIELD(friction_smoothing), BONL_FIELD(end_stop_stiffness),
-    BONL_FIELD(end_stop_damping),   BONL_FIELD(pivot_to_rod_pin),   BONL_FIELD(pivot_to_base_pin),
-    BONL_FIELD(retracted_length),   BONL_FIELD(joint_backlash),     BONL_FIELD(sensor_noise),
+    BONL_FIELD(bore_diameter),
+    BONL_FIELD(rod_diameter),
+    BONL_FIELD(stroke),
+    BONL_FIELD(dead_volume_head),
+    BONL_FIELD(dead_volume_rod),
+    BONL_FIELD(supply_pressure),
+    BONL_FIELD(return_pressure),
+    BONL_FIELD(bulk_modulus),
+    BONL_FIELD(oil_density),
+    BONL_FIELD(discharge_coefficient),
+    BONL_FIELD(area_gradient),
+    BONL_FIELD(spool_travel),
+    BONL_FIELD(internal_leakage),
+    BONL_FIELD(external_leakage),
+    BONL_FIELD(orifice_smoothing),
+    BONL_FIELD(valve_time_constant),
+    BONL_FIELD(dead_band),
+    BONL_FIELD(neutral_voltage),
+    BONL_FIELD(max_voltage),
+    BONL_FIELD(pilot_hysteresis),
+    BONL_FIELD(mass),
+    BONL_FIELD(gravity_moment),
+    BONL_FIELD(gravity_angle_offset),
+    BONL_FIELD(gravity),
+    BONL_FIELD(coulomb_friction),
+    BONL_FIELD(static_friction),
+    BONL_FIELD(stribeck_velocity),
+    BONL_FIELD(viscous_friction),
+    BONL_FIELD(friction_smoothing),
+    BONL_FIELD(end_stop_stiffness),
+    BONL_FIELD(end_stop_damping),
+    BONL_FIELD(pivot_to_rod_pin),
+    BONL_FIELD(pivot_to_base_pin),
+    BONL_FIELD(retracted_length),
+    BONL_FIELD(joint_backlash),
+    BONL_FIELD(sensor_noise),
 };
 #undef BONL_FIELD
 static_assert(sizeof(Parameters) == kFields.size() * sizeof(double),
@@ -80,7 +104,8 @@ Parameters decode(FuzzedDataProvider& in) {
       default: {
         const bool up = in.ConsumeBool();
         for (int k = in.ConsumeIntegralInRange<int>(1, 4); k > 0; --k)
-          value = std::nextafter(value, up ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
+          value = std::nextafter(
+              value, up ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
         break;
       }
     }
@@ -101,8 +126,10 @@ struct Outcomes {
   long rejected = 0, accepted = 0, simulated = 0, invalid_argument = 0, numerical_error = 0;
   ~Outcomes() {
     if (std::getenv("BONL_FUZZ_STATS") == nullptr) return;
-    std::fprintf(stderr, "outcomes: validate rejected %ld, accepted %ld; simulate returned %ld, threw invalid_argument %ld, "
-                 "NumericalError %ld\n", rejected, accepted, simulated, invalid_argument, numerical_error);
+    std::fprintf(stderr,
+                 "outcomes: validate rejected %ld, accepted %ld; simulate returned %ld, threw invalid_argument %ld, "
+                 "NumericalError %ld\n",
+                 rejected, accepted, simulated, invalid_argument, numerical_error);
   }
 } outcomes;
 
@@ -181,12 +208,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bonl::plant::Trajectory out = bonl::plant::simulate(p, command, options);
     FUZZ_CHECK(!may_reject);
     ++outcomes.simulated;
-    const std::pair<const char*, const Eigen::VectorXd*> columns[] = {
-        {"time", &out.time},           {"command", &out.command},         {"input", &out.input},
-        {"position", &out.position},   {"velocity", &out.velocity},       {"head_pressure", &out.head_pressure},
-        {"rod_pressure", &out.rod_pressure}, {"spool", &out.spool},       {"pilot", &out.pilot},
-        {"head_flow", &out.head_flow}, {"rod_flow", &out.rod_flow},       {"joint_angle", &out.joint_angle},
-        {"joint_rate", &out.joint_rate}, {"pin_angle", &out.pin_angle},   {"measured_angle", &out.measured_angle}};
+    const std::pair<const char*, const Eigen::VectorXd*> columns[] = {{"time", &out.time},
+                                                                      {"command", &out.command},
+                                                                      {"input", &out.input},
+                                                                      {"position", &out.position},
+                                                                      {"velocity", &out.velocity},
+                                                                      {"head_pressure", &out.head_pressure},
+                                                                      {"rod_pressure", &out.rod_pressure},
+                                                                      {"spool", &out.spool},
+                                                                      {"pilot", &out.pilot},
+                                                                      {"head_flow", &out.head_flow},
+                                                                      {"rod_flow", &out.rod_flow},
+                                                                      {"joint_angle", &out.joint_angle},
+                                                                      {"joint_rate", &out.joint_rate},
+                                                                      {"pin_angle", &out.pin_angle},
+                                                                      {"measured_angle", &out.measured_angle}};
     for (const auto& [name, v] : columns) {
       FUZZ_CHECK(v->size() == 6);
       for (Eigen::Index k = 0; k < v->size(); ++k) {
@@ -203,7 +239,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const bonl::NumericalError& e) {
     ++outcomes.numerical_error;
     if (must_reject) {  // bad parameters and options are reported as such, before any integration
-      std::fprintf(stderr, "simulate: NumericalError instead of invalid_argument (accepted %d, initial position %d): %s\n",
+      std::fprintf(stderr,
+                   "simulate: NumericalError instead of invalid_argument (accepted %d, initial position %d): %s\n",
                    accepted, good_position, e.what());
     }
     FUZZ_CHECK(!must_reject);

@@ -6,7 +6,7 @@
 #
 #   bash scripts/format.sh [--check] [--cpp | --python]   (default: both)
 #
-# The CI (.ci/run) runs `--check --python`; the C++ tree has not been formatted yet.
+# The CI (.ci/run) runs `--check`.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh

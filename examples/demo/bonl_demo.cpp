@@ -112,10 +112,12 @@ void print_tables(const MethodResult& m) {
   for (const std::string& row : rows) {
     std::printf("%-10s", row.c_str());
     for (const Column& c : cols) {
-      const auto cell = std::find_if(c.parameters.begin(), c.parameters.end(),
-                                     [&](const auto& entry) { return entry.first == row; });
-      if (cell == c.parameters.end()) std::printf(" %12s", "");
-      else std::printf(" %12.4g", cell->second);
+      const auto cell =
+          std::find_if(c.parameters.begin(), c.parameters.end(), [&](const auto& entry) { return entry.first == row; });
+      if (cell == c.parameters.end())
+        std::printf(" %12s", "");
+      else
+        std::printf(" %12.4g", cell->second);
     }
     std::printf("\n");
   }
@@ -220,7 +222,8 @@ std::string json_array(const Eigen::VectorXd& v) {
 std::string json_mse(const MethodResult& m, bool online) {
   std::string out = "{";
   m.for_each([&](const auto& r) {
-    out += (out.size() > 1 ? ", \"" : "\"") + std::string(r.kName) + "\": " + json_number(online ? r.online_mse : r.mse);
+    out +=
+        (out.size() > 1 ? ", \"" : "\"") + std::string(r.kName) + "\": " + json_number(online ? r.online_mse : r.mse);
   });
   return out + "}";
 }
@@ -237,8 +240,8 @@ std::string json_results(const MethodResult& m) {
     for (std::size_t i = 0; i < Model::kDescription.parameters.size(); ++i) {
       const bonl::ParameterDescription& parameter = Model::kDescription.parameters[i];
       const Eigen::VectorXd value = r.model.parameter(i);
-      out += (i ? ", \"" : "\"") + std::string(parameter.name) + "\": " +
-             (parameter.shape == bonl::ParameterShape::Number ? json_number(value[0]) : json_array(value));
+      out += (i ? ", \"" : "\"") + std::string(parameter.name) +
+             "\": " + (parameter.shape == bonl::ParameterShape::Number ? json_number(value[0]) : json_array(value));
     }
     out += "}";
   });
@@ -287,12 +290,13 @@ void write_markdown(const std::string& path, const PaperExperimentResult& result
     const auto score = experiment::published_score(header[i].name);
     out << ' ' << (score ? format("%g", score->mse) : std::string()) << " |";
     if (i > 0) {
-      percentages += (percentages.empty() ? "" : " / ") + (score ? std::to_string(score->proposed_lower_percent) + "%" : "-");
+      percentages +=
+          (percentages.empty() ? "" : " / ") + (score ? std::to_string(score->proposed_lower_percent) + "%" : "-");
     }
   }
   out << ' ' << percentages << " |\n";
   struct Row {
-    std::string name;  ///< the table's
+    std::string name;        ///< the table's
     std::string short_name;  ///< the sentence's
     std::vector<Column> cols;
     bool online;
@@ -323,8 +327,9 @@ void write_markdown(const std::string& path, const PaperExperimentResult& result
       places.push_back(ordinal(better.size() + 1) + " " + row.short_name +
                        (better.empty() ? "" : " (after " + join_words(better) + ")"));
     }
-    out << '\n' << header[i].label << " (" << header[i].name << ", not in the paper) ranks, of " << header.size()
-        << ", " << join_words(places) << ".\n";
+    out << '\n'
+        << header[i].label << " (" << header[i].name << ", not in the paper) ranks, of " << header.size() << ", "
+        << join_words(places) << ".\n";
   }
   if (!out) throw std::runtime_error("bonl_demo: cannot write " + path);
 }
@@ -385,9 +390,10 @@ void write_sweep_markdown(const std::string& path, const std::vector<Point>& poi
         << " |\n";
   }
   const PaperExperimentResult& zero = points.back().result;
-  out << "\nWith both at zero the identified c is " << format("%.2g", zero.method(bonl::Method::OutputError).get<Proposed>().model.c())
-      << " rad/s with the output-error method and " << format("%.2g", zero.method(bonl::Method::Paper).get<Proposed>().model.c())
-      << " rad/s with the paper's.\n";
+  out << "\nWith both at zero the identified c is "
+      << format("%.2g", zero.method(bonl::Method::OutputError).get<Proposed>().model.c())
+      << " rad/s with the output-error method and "
+      << format("%.2g", zero.method(bonl::Method::Paper).get<Proposed>().model.c()) << " rad/s with the paper's.\n";
   if (!out) throw std::runtime_error("bonl_demo: cannot write " + path);
 }
 
@@ -401,7 +407,8 @@ int sweep(const std::string& dir, const std::string& markdown) {
   experiment::PaperExperimentOptions options;
   options.robustness = false;
   std::vector<Point> points;
-  const auto run = [&](const std::string& name, double value, const std::function<void(bonl::plant::Parameters&)>& set) {
+  const auto run = [&](const std::string& name, double value,
+                       const std::function<void(bonl::plant::Parameters&)>& set) {
     bonl::plant::Parameters parameters;
     set(parameters);
     points.push_back({name, value, experiment::run_paper_experiment(parameters, options)});
@@ -438,8 +445,8 @@ int sweep(const std::string& dir, const std::string& markdown) {
   }
   const auto chart = [&](const std::string& parameter, double scale, const std::string& x_label, bonl::Method method) {
     bonl_demo::Chart c;
-    c.title = std::string(method == bonl::Method::OutputError ? "output-error method" : "paper method") +
-              ": validation MSE";
+    c.title =
+        std::string(method == bonl::Method::OutputError ? "output-error method" : "paper method") + ": validation MSE";
     c.x_label = x_label;
     c.y_label = "validation MSE of the velocity [(rad/s)^2]";
     for (const Point& p : points) {
@@ -468,11 +475,11 @@ int sweep(const std::string& dir, const std::string& markdown) {
                                             chart("joint_backlash", 1000.0, delta_label, bonl::Method::Paper)});
   const PaperExperimentResult& zero = points.back().result;
   const Eigen::VectorXd y = experiment::acquire(bonl::plant::Parameters{}).validation.velocity;
-  std::printf("\nWith no pilot hysteresis and no pin backlash, the identified c is %.4g (output_error) and %.4g (paper) "
-              "rad/s; the default plant's validation velocity has a standard deviation of %.4g rad/s.\n",
-              zero.method(bonl::Method::OutputError).get<Proposed>().model.c(),
-              zero.method(bonl::Method::Paper).get<Proposed>().model.c(),
-              std::sqrt((y.array() - y.mean()).square().mean()));
+  std::printf(
+      "\nWith no pilot hysteresis and no pin backlash, the identified c is %.4g (output_error) and %.4g (paper) "
+      "rad/s; the default plant's validation velocity has a standard deviation of %.4g rad/s.\n",
+      zero.method(bonl::Method::OutputError).get<Proposed>().model.c(),
+      zero.method(bonl::Method::Paper).get<Proposed>().model.c(), std::sqrt((y.array() - y.mean()).square().mean()));
   std::printf("wrote %s/sweep.csv and %s/sweep.svg\n", dir.c_str(), dir.c_str());
   if (!markdown.empty()) {
     write_sweep_markdown(markdown, points);
@@ -483,10 +490,13 @@ int sweep(const std::string& dir, const std::string& markdown) {
 
 void print_report(const PaperExperimentResult& result) {
   const bonl::plant::Parameters& parameters = result.parameters;
-  std::printf("Plant: 20 t excavator dipper joint (docs/explanation/plant.md), pilot hysteresis %.0f%%, pin backlash %.1f mrad.\n",
-              100 * parameters.pilot_hysteresis, 1000 * parameters.joint_backlash);
-  std::printf("Records: 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated. Identification: "
-              "paper's multi-sine; validation: smooth random signal (1 Hz band).\n");
+  std::printf(
+      "Plant: 20 t excavator dipper joint (docs/explanation/plant.md), pilot hysteresis %.0f%%, pin backlash %.1f "
+      "mrad.\n",
+      100 * parameters.pilot_hysteresis, 1000 * parameters.joint_backlash);
+  std::printf(
+      "Records: 50 s at 100 Hz, 10 repeats averaged, 10 Hz low-pass, differentiated. Identification: "
+      "paper's multi-sine; validation: smooth random signal (1 Hz band).\n");
   for (const auto* record : {&result.records.identification, &result.records.validation}) {
     const auto& run = record->trajectory;
     std::printf("  %s: piston %.3f-%.3f m of %.2f m%s, CVODE %ld steps\n",

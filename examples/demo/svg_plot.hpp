@@ -55,15 +55,17 @@ inline void write_svg(const std::string& path, const std::vector<Chart>& charts,
     const double x_min = chart.x.front(), x_max = chart.x.back();
     const double w = panel_w - left - right, h = panel_h - top - bottom;
     const auto px = [&](double x) { return ox + left + (x - x_min) / (x_max - x_min) * w; };
-    const auto py = [&](double y) { return oy + top + (hi - std::log10(std::min(y, std::pow(10.0, hi)))) / (hi - lo) * h; };
+    const auto py = [&](double y) {
+      return oy + top + (hi - std::log10(std::min(y, std::pow(10.0, hi)))) / (hi - lo) * h;
+    };
     svg << "<text x='" << ox + panel_w / 2 << "' y='" << oy + 22
         << "' text-anchor='middle' font-size='14' font-weight='bold'>" << chart.title << "</text>\n";
     svg << "<rect x='" << ox + left << "' y='" << oy + top << "' width='" << w << "' height='" << h
         << "' fill='none' stroke='black'/>\n";
     for (double e = lo; e <= hi; e += 1) {
       svg << "<line x1='" << ox + left << "' x2='" << ox + left + w << "' y1='" << py(std::pow(10, e)) << "' y2='"
-          << py(std::pow(10, e)) << "' stroke='#ddd'/>\n<text x='" << ox + left - 6 << "' y='" << py(std::pow(10, e)) + 4
-          << "' text-anchor='end'>1e" << e << "</text>\n";
+          << py(std::pow(10, e)) << "' stroke='#ddd'/>\n<text x='" << ox + left - 6 << "' y='"
+          << py(std::pow(10, e)) + 4 << "' text-anchor='end'>1e" << e << "</text>\n";
     }
     for (double x : chart.x) {
       char label[32];

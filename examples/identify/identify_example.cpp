@@ -100,8 +100,10 @@ void run(bonl::Method method, const Eigen::VectorXd& u, const Eigen::VectorXd& y
     std::printf("%-6s", row.c_str());
     for (const auto& model : parameters) {
       const auto found = model.find(row);
-      if (found == model.end()) std::printf(" %24s", "");
-      else std::printf(" %24.4f", found->second);
+      if (found == model.end())
+        std::printf(" %24s", "");
+      else
+        std::printf(" %24.4f", found->second);
     }
     std::printf("\n");
   }
@@ -109,7 +111,8 @@ void run(bonl::Method method, const Eigen::VectorXd& u, const Eigen::VectorXd& y
   for (double value : mse) std::printf(" %24.3e", value);
   std::printf("\n%s's error is", names[0].c_str());
   for (std::size_t i = 1; i < mse.size(); ++i) {
-    std::printf(" %.0f%% lower than %s's%s", 100 * (1 - mse[0] / mse[i]), names[i].c_str(), i + 1 < mse.size() ? "," : "");
+    std::printf(" %.0f%% lower than %s's%s", 100 * (1 - mse[0] / mse[i]), names[i].c_str(),
+                i + 1 < mse.size() ? "," : "");
   }
   std::printf(" (the paper: 14%%, 30%%, 75%%)\n");
 }

@@ -82,7 +82,8 @@ Eigen::VectorXd column(const std::map<std::string, std::vector<double>>& csv, co
 // ------------------------------------------------------------------------------------- candidates
 
 /// The models, each named by its kName; their orders come from their descriptions.
-using MeasuredModels = bonl::ModelList<bonl::ARXd, bonl::Hammersteind, bonl::HammersteinWienerd, bonl::PseudoHammersteinWienerd>;
+using MeasuredModels =
+    bonl::ModelList<bonl::ARXd, bonl::Hammersteind, bonl::HammersteinWienerd, bonl::PseudoHammersteinWienerd>;
 
 /// Values of each order, by the order's name (a model takes those its description names).
 using Grid = std::map<std::string, std::vector<Eigen::Index>>;
@@ -219,8 +220,8 @@ struct Result {
 
 template <class Model>
 Result run_case(const Eigen::VectorXd& u_est, const Eigen::VectorXd& y_est, const Eigen::VectorXd& u_sim,
-                const Eigen::VectorXd& y_sim, Eigen::Index score_from, const Grid& grid, const std::vector<Offset>& offsets,
-                unsigned jobs) {
+                const Eigen::VectorXd& y_sim, Eigen::Index score_from, const Grid& grid,
+                const std::vector<Offset>& offsets, unsigned jobs) {
   const std::vector<Candidate> cands = candidates<Model>(grid, offsets);
   std::vector<double> scores(cands.size(), kInf);
   std::atomic<std::size_t> next{0};
@@ -235,7 +236,8 @@ Result run_case(const Eigen::VectorXd& u_est, const Eigen::VectorXd& y_est, cons
   std::size_t best = 0;  // lowest score, first in grid order on ties
   for (std::size_t i = 1; i < cands.size(); ++i)
     if (scores[i] < scores[best]) best = i;
-  if (!std::isfinite(scores[best])) throw std::runtime_error(std::string(Model::kName) + ": every candidate broke down");
+  if (!std::isfinite(scores[best]))
+    throw std::runtime_error(std::string(Model::kName) + ": every candidate broke down");
 
   Result result;
   result.chosen = cands[best];
@@ -287,13 +289,20 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
       return argv[++i];
     };
-    if (arg == "--data") data = value();
-    else if (arg == "--out") out = value();
-    else if (arg == "--json") json = value();
-    else if (arg == "--selection") selection_file = value();
-    else if (arg == "--markdown") markdown_file = value();
-    else if (arg == "--small-grid") small = true;
-    else if (arg == "--jobs") jobs = static_cast<unsigned>(std::max(1, std::stoi(value())));
+    if (arg == "--data")
+      data = value();
+    else if (arg == "--out")
+      out = value();
+    else if (arg == "--json")
+      json = value();
+    else if (arg == "--selection")
+      selection_file = value();
+    else if (arg == "--markdown")
+      markdown_file = value();
+    else if (arg == "--small-grid")
+      small = true;
+    else if (arg == "--jobs")
+      jobs = static_cast<unsigned>(std::max(1, std::stoi(value())));
     else {
       std::fprintf(stderr,
                    "usage: %s [--data DIR] [--out DIR] [--json FILE] [--selection FILE] [--markdown FILE] "
@@ -381,12 +390,12 @@ int main(int argc, char** argv) {
       const Result& r = results[key][names[m]];
       std::string orders;
       for (std::size_t i = 0; i < r.chosen.orders.size(); ++i) {
-        orders += std::string(i == 0 ? "" : ", ") + "\"" + order_names[names[m]][i] + "\": " +
-                  std::to_string(r.chosen.orders[i]);
+        orders += std::string(i == 0 ? "" : ", ") + "\"" + order_names[names[m]][i] +
+                  "\": " + std::to_string(r.chosen.orders[i]);
       }
-      selection += "    \"" + names[m] + "\": {\"orders\": {" + orders + "}, \"offset\": \"" + to_string(r.chosen.offset) +
-                   "\", \"check_rms\": " + number(r.check_rms) + ", \"validation_rms\": " + number(r.validation_rms) +
-                   "}" + (m + 1 < names.size() ? ",\n" : "\n");
+      selection += "    \"" + names[m] + "\": {\"orders\": {" + orders + "}, \"offset\": \"" +
+                   to_string(r.chosen.offset) + "\", \"check_rms\": " + number(r.check_rms) +
+                   ", \"validation_rms\": " + number(r.validation_rms) + "}" + (m + 1 < names.size() ? ",\n" : "\n");
       char rms_text[32];
       std::snprintf(rms_text, sizeof rms_text, "%.3f", r.validation_rms);
       const auto published = kPublished.at(key).find(names[m]);

@@ -87,7 +87,6 @@ VectorXd output_noise(const VectorXd& y, const Noise& noise, std::uint64_t seed)
   return e * (noise.level * standard_deviation(y) / standard_deviation(e));
 }
 
-
 /// The plant of the tracking test: `before` up to `change`, then `after`, one free run (the
 /// output-error terms with fixed parameters are the model's simulation, sample by sample).
 template <class Model>
@@ -166,7 +165,8 @@ Json tracking(const Model& truth, bool window) {
   for (Eigen::Index k = 0; k < samples; ++k) {
     estimator.update(u[k], y[k]);
     const Eigen::Index since = k + 1 - change;
-    if (since > 0 && since % 50 == 0 && recovered.is_null() && nrmse(estimator.model(), u_validation, y_validation) < 0.01) {
+    if (since > 0 && since % 50 == 0 && recovered.is_null() &&
+        nrmse(estimator.model(), u_validation, y_validation) < 0.01) {
       recovered = since;
     }
   }
@@ -274,7 +274,9 @@ std::string targets(const Json& results) {
       const Json& recovered = system.at(column.tracking).at("samples_to_1_percent");
       if (!recovered.is_null() && recovered.get<long>() <= 1000) ++tracked;
     }
-    const auto within = [&](double bound) { return std::count_if(ratios.begin(), ratios.end(), [&](double r) { return r <= bound; }); };
+    const auto within = [&](double bound) {
+      return std::count_if(ratios.begin(), ratios.end(), [&](double r) { return r <= bound; });
+    };
     out << "| " << column.label << " | " << format(median(ratios), "%.2f") << " | "
         << format(*std::max_element(ratios.begin(), ratios.end()), "%.2f") << " | " << within(1.2) << " of "
         << ratios.size() << " | " << within(1.5) << " of " << ratios.size() << " | " << noise_free[0] << " of "
@@ -299,12 +301,14 @@ std::string summary(const Json& results) {
   };
   const char* estimators[] = {"output_error", "output_error_window", "equation_error", "paper", "identify"};
   std::ostringstream out;
-  out << "| models | condition | online output_error | output_error, window | online equation_error | online paper | identify() |\n"
+  out << "| models | condition | online output_error | output_error, window | online equation_error | online paper | "
+         "identify() |\n"
       << "|---|---|---|---|---|---|---|\n";
   for (bool arx : {false, true}) {
     const char* models = arx ? "ARX" : "block models";
     for (const char* input : {"random_levels", "multisine"}) {
-      out << "| " << models << " | noise-free, " << (std::string(input) == "multisine" ? "multi-sine" : "random levels");
+      out << "| " << models << " | noise-free, "
+          << (std::string(input) == "multisine" ? "multi-sine" : "random levels");
       for (const char* key : estimators) {
         out << " | " << range(arx, [&](const Json& s) { return as_number(s.at("noise_free").at(input).at(key)); });
       }
@@ -353,7 +357,8 @@ std::string markdown(const Json& results) {
   }
   out << "\n## Output noise, random levels, 4000 samples, " << kSeeds << " seeds: median NRMSE\n\n"
       << "The ratio is the online output-error median over identify()'s.\n\n"
-      << "| system | noise | online output_error | output_error, window | online equation_error | online paper | identify() | ratio | ratio, window |\n"
+      << "| system | noise | online output_error | output_error, window | online equation_error | online paper | "
+         "identify() | ratio | ratio, window |\n"
       << "|---|---|---|---|---|---|---|---|---|\n";
   for (const Json& system : results.at("systems")) {
     for (const Noise& noise : kNoises) {
@@ -367,7 +372,8 @@ std::string markdown(const Json& results) {
     }
   }
   out << "\n## Tracking: constant forgetting 0.995, input gain +30% (P-H-W: and c doubled) at sample 4000\n\n"
-      << "| system | samples until NRMSE < 1% | NRMSE at the end (4000 samples after) | window: samples | window: NRMSE |\n"
+      << "| system | samples until NRMSE < 1% | NRMSE at the end (4000 samples after) | window: samples | window: "
+         "NRMSE |\n"
       << "|---|---|---|---|---|\n";
   const auto recovered = [](const Json& t) {
     return t.at("samples_to_1_percent").is_null() ? std::string("not within 4000")
@@ -376,8 +382,9 @@ std::string markdown(const Json& results) {
   for (const Json& system : results.at("systems")) {
     const Json& t = system.at("tracking");
     const Json& r = system.at("tracking_window");
-    out << "| " << system.at("name").get<std::string>() << " | " << recovered(t) << " | " << format(as_number(t.at("final")))
-        << " | " << recovered(r) << " | " << format(as_number(r.at("final"))) << " |\n";
+    out << "| " << system.at("name").get<std::string>() << " | " << recovered(t) << " | "
+        << format(as_number(t.at("final"))) << " | " << recovered(r) << " | " << format(as_number(r.at("final")))
+        << " |\n";
   }
   return out.str();
 }
@@ -411,8 +418,9 @@ void compare(const Json& computed, const Json& committed, const std::string& whe
 }
 
 [[noreturn]] void usage(const std::string& problem) {
-  std::cerr << "bonl_online_accuracy: " << problem
-            << "\nusage: bonl_online_accuracy [--systems FILE] [--json FILE] [--markdown FILE] [--quick] [--check FILE]\n";
+  std::cerr
+      << "bonl_online_accuracy: " << problem
+      << "\nusage: bonl_online_accuracy [--systems FILE] [--json FILE] [--markdown FILE] [--quick] [--check FILE]\n";
   std::exit(2);
 }
 
@@ -427,12 +435,18 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) usage(arg + " needs a value");
       return argv[++i];
     };
-    if (arg == "--systems") systems_path = value();
-    else if (arg == "--json") json_path = value();
-    else if (arg == "--markdown") markdown_path = value();
-    else if (arg == "--check") check_path = value();
-    else if (arg == "--quick") quick = true;
-    else usage("unknown argument '" + arg + "'");
+    if (arg == "--systems")
+      systems_path = value();
+    else if (arg == "--json")
+      json_path = value();
+    else if (arg == "--markdown")
+      markdown_path = value();
+    else if (arg == "--check")
+      check_path = value();
+    else if (arg == "--quick")
+      quick = true;
+    else
+      usage("unknown argument '" + arg + "'");
   }
   try {
     const std::vector<System> systems = load_systems(systems_path);

@@ -1,6 +1,6 @@
 #pragma once
-// The building blocks of the block-oriented models: input two-segment polynomial, play operators and the Prandtl-Ishlinskii input (input hysteresis), linear dynamic
-// block with pure delay, output polynomial and backlash.
+// The building blocks of the block-oriented models: input two-segment polynomial, play operators and the
+// Prandtl-Ishlinskii input (input hysteresis), linear dynamic block with pure delay, output polynomial and backlash.
 
 #include "blocks/backlash.hpp"
 #include "blocks/linear_block.hpp"

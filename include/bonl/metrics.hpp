@@ -14,8 +14,8 @@ namespace bonl::metrics {
 
 /// The scores of a prediction yhat of y, all at once (scores()).
 struct Scores {
-  double mse = 0.0;  ///< mean squared error
-  double rmse = 0.0;  ///< root mean squared error, in y's units
+  double mse = 0.0;          ///< mean squared error
+  double rmse = 0.0;         ///< root mean squared error, in y's units
   double nrmse = 0.0;        ///< ||y - yhat|| / ||y - mean(y)|| (0 is perfect)
   double fit_percent = 0.0;  ///< 100 (1 - nrmse)
 };
@@ -40,8 +40,8 @@ auto scaled(const Eigen::MatrixBase<V>& v, int exponent) {
 /// 2^exponent brings every value into (-1, 1), where sums of squares neither overflow nor underflow.
 template <typename A, typename B>
 int common_exponent(const Eigen::MatrixBase<A>& y, const Eigen::MatrixBase<B>& yhat) {
-  const double largest = std::max(static_cast<double>(y.cwiseAbs().maxCoeff()),
-                                  static_cast<double>(yhat.cwiseAbs().maxCoeff()));
+  const double largest =
+      std::max(static_cast<double>(y.cwiseAbs().maxCoeff()), static_cast<double>(yhat.cwiseAbs().maxCoeff()));
   int exponent = 0;
   if (largest > 0.0) std::frexp(largest, &exponent);
   return exponent;

@@ -22,8 +22,8 @@
 
 #include "models/arx.hpp"
 #include "models/bouc_wen_feedback.hpp"
-#include "models/hammerstein.hpp"
 #include "models/fixed_orders.hpp"
+#include "models/hammerstein.hpp"
 #include "models/hammerstein_wiener.hpp"
 #include "models/model_description.hpp"
 #include "models/model_steps.hpp"
@@ -38,21 +38,20 @@
 namespace bonl {
 
 // The models in double, run-time orders throughout.
-using ARXd = ARX<double>;  ///< ARX in double
-using Hammersteind = Hammerstein<double>;  ///< Hammerstein in double
-using HammersteinWienerd = HammersteinWiener<double>;  ///< HammersteinWiener in double
-using PseudoHammersteinWienerd = PseudoHammersteinWiener<double>;  ///< PseudoHammersteinWiener in double
-using Wienerd = Wiener<double>;  ///< Wiener in double
-using WienerHammersteind = WienerHammerstein<double>;  ///< WienerHammerstein in double
-using NonlinearFeedbackd = NonlinearFeedback<double>;  ///< NonlinearFeedback in double
+using ARXd = ARX<double>;                                                    ///< ARX in double
+using Hammersteind = Hammerstein<double>;                                    ///< Hammerstein in double
+using HammersteinWienerd = HammersteinWiener<double>;                        ///< HammersteinWiener in double
+using PseudoHammersteinWienerd = PseudoHammersteinWiener<double>;            ///< PseudoHammersteinWiener in double
+using Wienerd = Wiener<double>;                                              ///< Wiener in double
+using WienerHammersteind = WienerHammerstein<double>;                        ///< WienerHammerstein in double
+using NonlinearFeedbackd = NonlinearFeedback<double>;                        ///< NonlinearFeedback in double
 using PrandtlIshlinskiiHammersteind = PrandtlIshlinskiiHammerstein<double>;  ///< PrandtlIshlinskiiHammerstein in double
-using BoucWenFeedbackd = BoucWenFeedback<double>;  ///< BoucWenFeedback in double
+using BoucWenFeedbackd = BoucWenFeedback<double>;                            ///< BoucWenFeedback in double
 
 /// Every model, at run-time orders in double: what a model file can hold, what Python binds, what
 /// the property suites run over. A new model is one entry here.
-using Models =
-    ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd, WienerHammersteind,
-              NonlinearFeedbackd, PrandtlIshlinskiiHammersteind, BoucWenFeedbackd>;
+using Models = ModelList<ARXd, Hammersteind, HammersteinWienerd, PseudoHammersteinWienerd, Wienerd, WienerHammersteind,
+                         NonlinearFeedbackd, PrandtlIshlinskiiHammersteind, BoucWenFeedbackd>;
 
 /// The orders of the fixed-order variants (WithOrders), by name: the paper's (section 5), na = 3,
 /// nb = 2, r = r1 = 3 and nk = 8 (a run-time order: the structures of the benchmarks and of the
@@ -62,8 +61,17 @@ using Models =
 /// Prandtl-Ishlinskii Hammerstein model.
 struct PaperOrders {
   /// The table: each order by name and its value.
-  static constexpr std::array<OrderValue, 11> kOrders{{{"na", 3}, {"nb", 2}, {"nk", 8}, {"r", 3}, {"r1", 3}, {"na1", 3},
-                                                       {"nb1", 2}, {"na2", 3}, {"nb2", 2}, {"nh", 0}, {"nd", 2}}};
+  static constexpr std::array<OrderValue, 11> kOrders{{{"na", 3},
+                                                       {"nb", 2},
+                                                       {"nk", 8},
+                                                       {"r", 3},
+                                                       {"r1", 3},
+                                                       {"na1", 3},
+                                                       {"nb1", 2},
+                                                       {"na2", 3},
+                                                       {"nb2", 2},
+                                                       {"nh", 0},
+                                                       {"nd", 2}}};
 };
 
 /// Every model at the paper's orders fixed at compile time, in double: what the fixed-size tests,
@@ -72,10 +80,12 @@ using PaperOrderModels = ModelsWithOrders<Models, PaperOrders>::type;
 
 /// The paper's models at its orders at compile time (ARX<double, 3, 2>, Hammerstein<double, 3, 2, 3>,
 /// ...); nk = 8 is given to the constructor, e.g. PaperPseudoHammersteinWiener model(3, 2, 8, 3).
-using PaperARX = WithOrders<ARXd, PaperOrders>;  ///< ARX at the paper's orders
+using PaperARX = WithOrders<ARXd, PaperOrders>;                  ///< ARX at the paper's orders
 using PaperHammerstein = WithOrders<Hammersteind, PaperOrders>;  ///< Hammerstein at the paper's orders
-using PaperHammersteinWiener = WithOrders<HammersteinWienerd, PaperOrders>;  ///< HammersteinWiener at the paper's orders
-using PaperPseudoHammersteinWiener = WithOrders<PseudoHammersteinWienerd, PaperOrders>;  ///< PseudoHammersteinWiener at the paper's orders
-using PaperWiener = WithOrders<Wienerd, PaperOrders>;  ///< Wiener at the paper's orders
+using PaperHammersteinWiener =
+    WithOrders<HammersteinWienerd, PaperOrders>;  ///< HammersteinWiener at the paper's orders
+using PaperPseudoHammersteinWiener =
+    WithOrders<PseudoHammersteinWienerd, PaperOrders>;  ///< PseudoHammersteinWiener at the paper's orders
+using PaperWiener = WithOrders<Wienerd, PaperOrders>;   ///< Wiener at the paper's orders
 
 }  // namespace bonl

@@ -67,7 +67,8 @@ inline Eigen::VectorXd multisine(Eigen::Index n, double ts, const Eigen::VectorX
   Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
   for (Eigen::Index k = 0; k < n; ++k) {
     const double t = static_cast<double>(k) * ts;
-    for (Eigen::Index i = 0; i < frequencies_hz.size(); ++i) u[k] += std::sin(two_pi * frequencies_hz[i] * t + phases[i]);
+    for (Eigen::Index i = 0; i < frequencies_hz.size(); ++i)
+      u[k] += std::sin(two_pi * frequencies_hz[i] * t + phases[i]);
   }
   u *= amplitude;
   detail::require(u.allFinite(),

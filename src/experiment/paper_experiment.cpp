@@ -92,7 +92,8 @@ const MethodResult& PaperExperimentResult::method(Method method) const {
                " was not run (the paper's experiment runs output_error and paper)");
 }
 
-std::vector<plant::Command> robustness_commands(const plant::Parameters& parameters, const MeasurementOptions& options) {
+std::vector<plant::Command> robustness_commands(const plant::Parameters& parameters,
+                                                const MeasurementOptions& options) {
   const double multisine_rms = 0.4 * std::sqrt(5.0 / 2.0);
   std::vector<plant::Command> commands;
   for (std::uint64_t seed = 100; seed < 104; ++seed) {

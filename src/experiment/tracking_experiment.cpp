@@ -165,9 +165,8 @@ control::AdaptiveInverseOptions TrackingOptions::adaptive_defaults() {
 
 void TrackingOptions::validate() const {
   const auto positive = [](double value, const char* name) {
-    detail::require(std::isfinite(value) && value > 0.0, std::string("tracking: ") + name +
-                                                             " must be finite and > 0, got " +
-                                                             detail::format_number(value));
+    detail::require(std::isfinite(value) && value > 0.0,
+                    std::string("tracking: ") + name + " must be finite and > 0, got " + detail::format_number(value));
   };
   positive(sample_time, "sample_time");
   positive(cutoff_hz, "cutoff_hz");
@@ -180,16 +179,16 @@ void TrackingOptions::validate() const {
   positive(bulk_modulus_factor, "bulk_modulus_factor");
   detail::require(std::isfinite(ramp) && ramp >= 0.0 && ramp < period,
                   "tracking: ramp must be in [0, period), got " + detail::format_number(ramp));
-  detail::require(whole_multiple(period, sample_time) && whole_multiple(duration, period) &&
-                      whole_multiple(change_time, period),
-                  "tracking: period must be a whole number of samples, and duration and change_time whole numbers "
-                  "of periods");
+  detail::require(
+      whole_multiple(period, sample_time) && whole_multiple(duration, period) && whole_multiple(change_time, period),
+      "tracking: period must be a whole number of samples, and duration and change_time whole numbers "
+      "of periods");
   detail::require(change_time >= period && change_time + 2.0 * period <= duration + 1e-9 * duration,
                   "tracking: change_time must leave a period before it and two after it (period before, and the "
                   "recovery window [change_time + period, change_time + 2 period]) within duration");
-  detail::require(std::isfinite(backlash_band_per_c) && backlash_band_per_c >= 0.0,
-                  "tracking: backlash_band_per_c must be finite and >= 0, got " +
-                      detail::format_number(backlash_band_per_c));
+  detail::require(
+      std::isfinite(backlash_band_per_c) && backlash_band_per_c >= 0.0,
+      "tracking: backlash_band_per_c must be finite and >= 0, got " + detail::format_number(backlash_band_per_c));
   adaptive.validate();
 }
 
@@ -279,7 +278,8 @@ TrackingResult run_tracking_experiment(const plant::Parameters& parameters, cons
   TrackingRun run = track(parameters, result, reference, true, adaptive, std::string(Adaptive::kName) + " (adaptive)");
   const control::AdaptiveInverseHealth& health = adaptive.adaptive.health();
   run.rederivations = health.rederivations;
-  run.refused = health.refused_diverged + health.refused_covariance + health.refused_unstable + health.refused_no_inverse;
+  run.refused =
+      health.refused_diverged + health.refused_covariance + health.refused_unstable + health.refused_no_inverse;
   result.runs.push_back(std::move(run));
   return result;
 }

@@ -28,7 +28,8 @@ void require(bool condition, const char* function, const std::string& message) {
 }
 
 void require_finite(double value, const char* function, const char* name) {
-  require(std::isfinite(value), function, std::string(name) + " must be finite, got " + bonl::detail::format_number(value));
+  require(std::isfinite(value), function,
+          std::string(name) + " must be finite, got " + bonl::detail::format_number(value));
 }
 
 void require_positive(double value, const char* function, const char* name) {
@@ -46,13 +47,13 @@ std::vector<double> schroeder_phases(std::size_t n) {
 }
 
 /// The multisine after validation; `function` names the public entry point in messages.
-Command make_multisine(const char* function, const std::vector<double>& frequencies_hz, double amplitude,
-                       double offset, std::vector<double> phases) {
+Command make_multisine(const char* function, const std::vector<double>& frequencies_hz, double amplitude, double offset,
+                       std::vector<double> phases) {
   require(!frequencies_hz.empty(), function, "frequencies_hz must not be empty");
   for (std::size_t i = 0; i < frequencies_hz.size(); ++i) {
     require(std::isfinite(frequencies_hz[i]) && frequencies_hz[i] >= 0.0, function,
-            "frequencies_hz must be finite and >= 0, got " + bonl::detail::format_number(frequencies_hz[i]) + " at index " +
-                std::to_string(i));
+            "frequencies_hz must be finite and >= 0, got " + bonl::detail::format_number(frequencies_hz[i]) +
+                " at index " + std::to_string(i));
   }
   require_finite(amplitude, function, "amplitude");
   require_finite(offset, function, "offset");
@@ -60,8 +61,8 @@ Command make_multisine(const char* function, const std::vector<double>& frequenc
     phases = schroeder_phases(frequencies_hz.size());
   } else {
     require(phases.size() == frequencies_hz.size(), function,
-            "phases must be empty or have as many entries as frequencies_hz (" +
-                std::to_string(frequencies_hz.size()) + "), got " + std::to_string(phases.size()));
+            "phases must be empty or have as many entries as frequencies_hz (" + std::to_string(frequencies_hz.size()) +
+                "), got " + std::to_string(phases.size()));
     for (std::size_t i = 0; i < phases.size(); ++i) {
       require(std::isfinite(phases[i]), function, "phases has a non-finite value at index " + std::to_string(i));
     }
@@ -102,7 +103,8 @@ Command paper_multisine(double amplitude, double offset) {
 Command smooth_random(double bandwidth_hz, double rms, double duration, std::uint64_t seed, double offset) {
   const char* function = "smooth_random";
   require_positive(bandwidth_hz, function, "bandwidth_hz");
-  require(std::isfinite(rms) && rms >= 0.0, function, "rms must be finite and >= 0, got " + bonl::detail::format_number(rms));
+  require(std::isfinite(rms) && rms >= 0.0, function,
+          "rms must be finite and >= 0, got " + bonl::detail::format_number(rms));
   require_positive(duration, function, "duration");
   require_finite(offset, function, "offset");
   // Tones k / duration, k = 1..floor(bandwidth * duration); a product that rounding left just short
@@ -112,8 +114,8 @@ Command smooth_random(double bandwidth_hz, double rms, double duration, std::uin
   const double tones = floor_with_snap(product, 1e-9 * std::max(1.0, product));
   require(tones >= 1.0, function,
           "bandwidth_hz * duration must be >= 1 so that at least one tone k / duration fits under the "
-          "bandwidth, got bandwidth_hz = " + bonl::detail::format_number(bandwidth_hz) + " and duration = " +
-              bonl::detail::format_number(duration));
+          "bandwidth, got bandwidth_hz = " +
+              bonl::detail::format_number(bandwidth_hz) + " and duration = " + bonl::detail::format_number(duration));
   // Each call of the command costs one sine per tone: a limit far above any use (10 Hz over 10^5 s
   // is 10^6 tones) that turns an absurd product into an error rather than std::bad_alloc or a
   // simulation that never ends.

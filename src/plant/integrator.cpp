@@ -26,7 +26,8 @@ namespace {
 
 /// std::invalid_argument("bonl: <where>: <name> <requirement>, got <value>").
 [[noreturn]] void bad_option(const char* where, const char* name, const std::string& requirement, double value) {
-  bonl::detail::fail(std::string(where) + ": " + name + ' ' + requirement + ", got " + bonl::detail::format_number(value));
+  bonl::detail::fail(std::string(where) + ": " + name + ' ' + requirement + ", got " +
+                     bonl::detail::format_number(value));
 }
 
 void require_positive(const char* where, const char* name, double value) {
@@ -116,22 +117,27 @@ void validate_options(const SimulationOptions& options, const Parameters& parame
   const double whole = std::round(per_sample);
   if (!(whole >= 1.0 && std::abs(per_sample - whole) <= 1e-9 * whole))
     bad_option(where, "sample_time",
-               "must be an integer multiple of 1 / command_rate (" + bonl::detail::format_number(1.0 / options.command_rate) + " s)",
+               "must be an integer multiple of 1 / command_rate (" +
+                   bonl::detail::format_number(1.0 / options.command_rate) + " s)",
                options.sample_time);
   if (!duration && whole > kMaxIntervals)  // simulate's duration bounds it below
     bad_option(where, "sample_time",
-               "gives " + bonl::detail::format_number(whole) + " command intervals per sample (sample_time * command_rate); at most " +
+               "gives " + bonl::detail::format_number(whole) +
+                   " command intervals per sample (sample_time * command_rate); at most " +
                    bonl::detail::format_number(kMaxIntervals),
                options.sample_time);
   if (duration) {
     const double samples = options.duration / options.sample_time;
     const double whole_samples = std::round(samples);
     if (!(whole_samples >= 1.0 && std::abs(samples - whole_samples) <= 1e-9 * whole_samples))
-      bad_option(where, "duration", "must be an integer multiple of sample_time (" + bonl::detail::format_number(options.sample_time) + " s)",
-                 options.duration);
+      bad_option(
+          where, "duration",
+          "must be an integer multiple of sample_time (" + bonl::detail::format_number(options.sample_time) + " s)",
+          options.duration);
     if (whole_samples * whole > kMaxIntervals)
       bad_option(where, "duration",
-                 "gives " + bonl::detail::format_number(whole_samples * whole) + " command intervals (duration * command_rate); at most " +
+                 "gives " + bonl::detail::format_number(whole_samples * whole) +
+                     " command intervals (duration * command_rate); at most " +
                      bonl::detail::format_number(kMaxIntervals) + " per run (simulate a long record in pieces)",
                  options.duration);
   }
@@ -143,10 +149,12 @@ void validate_options(const SimulationOptions& options, const Parameters& parame
   require_positive(where, "tolerances.absolute_pressure", tol.absolute_pressure);
   require_positive(where, "tolerances.absolute_spool", tol.absolute_spool);
   if (tol.max_steps_per_interval < 1)
-    bad_option(where, "tolerances.max_steps_per_interval", "must be >= 1", static_cast<double>(tol.max_steps_per_interval));
+    bad_option(where, "tolerances.max_steps_per_interval", "must be >= 1",
+               static_cast<double>(tol.max_steps_per_interval));
   if (!std::isfinite(options.initial_position) || options.initial_position > parameters.stroke)
     bad_option(where, "initial_position",
-               "must be finite and <= stroke (" + bonl::detail::format_number(parameters.stroke) + " m); negative means mid-stroke",
+               "must be finite and <= stroke (" + bonl::detail::format_number(parameters.stroke) +
+                   " m); negative means mid-stroke",
                options.initial_position);
 }
 
@@ -160,17 +168,11 @@ double UserData::spool_at(double t) const noexcept {
 }
 
 Integrator::Integrator(const Parameters& parameters, const SimulationOptions& options, std::string where)
-    : m_parameters(parameters),
-      m_load(options.load),
-      m_where(std::move(where)),
-      m_data(parameters, options.command_rate),
-      m_per_sample(std::lround(options.sample_time * options.command_rate)),
-      m_sample_time(options.sample_time),
-      m_decay(spool_decay(parameters, options.command_rate)),
-      m_phi0(parameters.angle_offset()),
-      m_noise_requested(options.sensor_noise),
-      m_noise(m_noise_requested && parameters.sensor_noise > 0.0),
-      m_engine(options.noise_seed) {
+    : m_parameters(parameters), m_load(options.load), m_where(std::move(where)),
+      m_data(parameters, options.command_rate), m_per_sample(std::lround(options.sample_time * options.command_rate)),
+      m_sample_time(options.sample_time), m_decay(spool_decay(parameters, options.command_rate)),
+      m_phi0(parameters.angle_offset()), m_noise_requested(options.sensor_noise),
+      m_noise(m_noise_requested && parameters.sensor_noise > 0.0), m_engine(options.noise_seed) {
   const double h0 = options.initial_position >= 0.0 ? options.initial_position : 0.5 * parameters.stroke;
   const State s0 = initial_state(parameters, h0);
 
@@ -226,8 +228,8 @@ void Integrator::fail_cvode(const std::string& what) const {
 /// Throws CvodeError when a CVODE call returned a negative flag.
 void Integrator::check(int flag, const char* call, double time) const {
   if (flag >= 0) return;
-  std::string message = "bonl: " + m_where + ": " + call + " failed with " + flag_name(flag) + " at t = " +
-                        bonl::detail::format_number(time) + " s";
+  std::string message = "bonl: " + m_where + ": " + call + " failed with " + flag_name(flag) +
+                        " at t = " + bonl::detail::format_number(time) + " s";
   if (!m_data.last_error.empty()) message += " (" + m_data.last_error + ")";
   throw CvodeError(message, flag, time);
 }
@@ -321,7 +323,9 @@ void Integrator::integrate_chunk(long intervals) {
     // CVODE stops at the chunk's end (the sample's, at most kMaxChunk intervals on) and where the
     // load changes; the pilot enters only through the exact, continuous spool opening.
     long stop = i + 1;
-    while (stop < intervals && m_data.loads[static_cast<std::size_t>(stop)] == m_data.loads[static_cast<std::size_t>(i)]) ++stop;
+    while (stop < intervals &&
+           m_data.loads[static_cast<std::size_t>(stop)] == m_data.loads[static_cast<std::size_t>(i)])
+      ++stop;
     m_data.load = m_data.loads[static_cast<std::size_t>(i)];
     check(CVodeSetStopTime(mem, m_data.grid_time(m_data.first + stop)), "CVodeSetStopTime", t);
     for (; i < stop; ++i) {
@@ -336,8 +340,10 @@ void Integrator::record(long j) {
   const double* x = N_VGetArrayPointer_Serial(m_y.get());
   const double h = x[kPosition];
   const double tj = m_data.grid_time(j);
-  if (!std::isfinite(h) || !std::isfinite(x[kVelocity]) || !std::isfinite(x[kHeadPressure]) || !std::isfinite(x[kRodPressure]))
-    throw CvodeError("bonl: " + m_where + ": the state became non-finite at t = " + bonl::detail::format_number(tj) + " s", 0, tj);
+  if (!std::isfinite(h) || !std::isfinite(x[kVelocity]) || !std::isfinite(x[kHeadPressure]) ||
+      !std::isfinite(x[kRodPressure]))
+    throw CvodeError(
+        "bonl: " + m_where + ": the state became non-finite at t = " + bonl::detail::format_number(tj) + " s", 0, tj);
   m_theta = m_parameters.linkage_angle(h) - m_phi0;
   m_pin = j == 0 ? m_theta : bonl::Backlash<double>::map(m_theta, m_pin, 0.5 * m_parameters.joint_backlash);
   m_min_position = std::min(m_min_position, h);

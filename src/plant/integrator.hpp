@@ -25,8 +25,7 @@ namespace bonl::plant::detail {
 /// also the duration (a positive multiple of sample_time, at most 1e8 command intervals in all),
 /// without it (SteppingPlant) at most 1e8 command intervals per sample. The parameters are
 /// Parameters::validate's.
-void validate_options(const SimulationOptions& options, const Parameters& parameters, const char* where,
-                      bool duration);
+void validate_options(const SimulationOptions& options, const Parameters& parameters, const char* where, bool duration);
 
 /// One command-grid point's inputs, held over [t_j, t_{j+1}): the command, the pilot stage's output
 /// after it (the play operator) and the load.
@@ -49,12 +48,12 @@ struct UserData {
   Model model;
   double rate;
   double inv_tau;
-  double load = 0.0;         ///< F_L over the stretch CVODE integrates now
-  long first = 0;            ///< command-grid index of the chunk's start
-  std::vector<double> pilot; ///< pilot[i]: xc held on [t_{first+i}, t_{first+i+1})
-  std::vector<double> spool; ///< spool[i]: xv(t_{first+i}), exact (one more entry than pilot)
-  std::vector<double> loads; ///< loads[i]: F_L held on [t_{first+i}, t_{first+i+1})
-  std::string last_error;    ///< CVODE's last error message, for the exception
+  double load = 0.0;          ///< F_L over the stretch CVODE integrates now
+  long first = 0;             ///< command-grid index of the chunk's start
+  std::vector<double> pilot;  ///< pilot[i]: xc held on [t_{first+i}, t_{first+i+1})
+  std::vector<double> spool;  ///< spool[i]: xv(t_{first+i}), exact (one more entry than pilot)
+  std::vector<double> loads;  ///< loads[i]: F_L held on [t_{first+i}, t_{first+i+1})
+  std::string last_error;     ///< CVODE's last error message, for the exception
 
   double grid_time(long j) const noexcept { return static_cast<double>(j) / rate; }
 
@@ -119,7 +118,7 @@ class Integrator {
   GridInputs inputs_now(const Command& command);
 
   const Measurement& measurement() const noexcept { return m_measurement; }
-  long steps() const;                    ///< CVODE's internal steps
+  long steps() const;  ///< CVODE's internal steps
   double min_position() const noexcept { return m_min_position; }
   double max_position() const noexcept { return m_max_position; }
   bool reached_end_stop() const noexcept { return m_reached_end_stop; }

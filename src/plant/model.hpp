@@ -22,31 +22,13 @@ struct Flows {
 class Model {
  public:
   explicit Model(const Parameters& p)
-      : m_A1(p.head_area()),
-        m_A2(p.annulus_area()),
-        m_L(p.stroke),
-        m_V01(p.dead_volume_head),
-        m_V02(p.dead_volume_rod),
-        m_ps(p.supply_pressure),
-        m_pt(p.return_pressure),
-        m_beta(p.bulk_modulus),
-        m_Kq(p.flow_gain()),
-        m_Ci(p.internal_leakage),
-        m_Ce(p.external_leakage),
-        m_dp_reg(p.orifice_smoothing),
-        m_inv_tau(1.0 / p.valve_time_constant),
-        m_inv_M(1.0 / p.mass),
-        m_mg(p.gravity_moment * p.gravity),
-        m_Fc(p.coulomb_friction),
-        m_Fst(p.static_friction),
-        m_inv_vs(1.0 / p.stribeck_velocity),
-        m_sigma(p.viscous_friction),
-        m_inv_eps(1.0 / p.friction_smoothing),
-        m_k_end(p.end_stop_stiffness),
-        m_c_end(p.end_stop_damping),
-        m_a(p.pivot_to_rod_pin),
-        m_b(p.pivot_to_base_pin),
-        m_lmin(p.retracted_length) {
+      : m_A1(p.head_area()), m_A2(p.annulus_area()), m_L(p.stroke), m_V01(p.dead_volume_head), m_V02(p.dead_volume_rod),
+        m_ps(p.supply_pressure), m_pt(p.return_pressure), m_beta(p.bulk_modulus), m_Kq(p.flow_gain()),
+        m_Ci(p.internal_leakage), m_Ce(p.external_leakage), m_dp_reg(p.orifice_smoothing),
+        m_inv_tau(1.0 / p.valve_time_constant), m_inv_M(1.0 / p.mass), m_mg(p.gravity_moment * p.gravity),
+        m_Fc(p.coulomb_friction), m_Fst(p.static_friction), m_inv_vs(1.0 / p.stribeck_velocity),
+        m_sigma(p.viscous_friction), m_inv_eps(1.0 / p.friction_smoothing), m_k_end(p.end_stop_stiffness),
+        m_c_end(p.end_stop_damping), m_a(p.pivot_to_rod_pin), m_b(p.pivot_to_base_pin), m_lmin(p.retracted_length) {
     // cos(theta + theta_g) = cos(phi + gamma) with gamma = theta_g - phi0.
     const double gamma = p.gravity_angle_offset - p.angle_offset();
     m_cos_gamma = std::cos(gamma);
@@ -191,15 +173,15 @@ class Model {
     const double ratio = v * m_inv_vs;
     const double e = std::exp(-ratio * ratio);
     const double th = std::tanh(v * m_inv_eps);
-    return (m_Fst - m_Fc) * e * (-2.0 * ratio * m_inv_vs) * th + (m_Fc + (m_Fst - m_Fc) * e) * (1.0 - th * th) * m_inv_eps +
-           m_sigma;
+    return (m_Fst - m_Fc) * e * (-2.0 * ratio * m_inv_vs) * th +
+           (m_Fc + (m_Fst - m_Fc) * e) * (1.0 - th * th) * m_inv_eps + m_sigma;
   }
 
   double inverse_time_constant() const noexcept { return m_inv_tau; }
 
  private:
-  double m_A1, m_A2, m_L, m_V01, m_V02, m_ps, m_pt, m_beta, m_Kq, m_Ci, m_Ce, m_dp_reg, m_inv_tau, m_inv_M, m_mg,
-      m_Fc, m_Fst, m_inv_vs, m_sigma, m_inv_eps, m_k_end, m_c_end, m_a, m_b, m_lmin;
+  double m_A1, m_A2, m_L, m_V01, m_V02, m_ps, m_pt, m_beta, m_Kq, m_Ci, m_Ce, m_dp_reg, m_inv_tau, m_inv_M, m_mg, m_Fc,
+      m_Fst, m_inv_vs, m_sigma, m_inv_eps, m_k_end, m_c_end, m_a, m_b, m_lmin;
   double m_cos_gamma = 1.0;
   double m_sin_gamma = 0.0;
 };

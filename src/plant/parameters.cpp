@@ -77,17 +77,20 @@ void Parameters::validate() const {
   require_positive("pivot_to_base_pin", pivot_to_base_pin);
   require_positive("retracted_length", retracted_length);
 
-  if (!(rod_diameter < bore_diameter)) fail("rod_diameter", "must be < bore_diameter (" + bonl::detail::format_number(bore_diameter) + ")", rod_diameter);
+  if (!(rod_diameter < bore_diameter))
+    fail("rod_diameter", "must be < bore_diameter (" + bonl::detail::format_number(bore_diameter) + ")", rod_diameter);
   require_non_negative("stroke", stroke);
 
   require_non_negative("return_pressure", return_pressure);
   require_finite("supply_pressure", supply_pressure);
   if (!(supply_pressure > return_pressure))
-    fail("supply_pressure", "must be > return_pressure (" + bonl::detail::format_number(return_pressure) + ")", supply_pressure);
+    fail("supply_pressure", "must be > return_pressure (" + bonl::detail::format_number(return_pressure) + ")",
+         supply_pressure);
 
   require_positive("neutral_voltage", neutral_voltage);
   if (!(neutral_voltage < max_voltage))
-    fail("neutral_voltage", "must be < max_voltage (" + bonl::detail::format_number(max_voltage) + ")", neutral_voltage);
+    fail("neutral_voltage", "must be < max_voltage (" + bonl::detail::format_number(max_voltage) + ")",
+         neutral_voltage);
   require_non_negative("dead_band", dead_band);
   if (!(dead_band < neutral_voltage))
     fail("dead_band", "must be < neutral_voltage (" + bonl::detail::format_number(neutral_voltage) + ")", dead_band);
@@ -127,14 +130,17 @@ void Parameters::validate() const {
   if (!(arm_retracted > 0.0 && std::isfinite(arm_retracted) && arm_extended > 0.0 && std::isfinite(arm_extended)))
     fail("retracted_length",
          "must leave the linkage a moment arm > 0 over the whole stroke in floating point (at h = 0 it is " +
-             bonl::detail::format_number(arm_retracted) + " m, at h = stroke " + bonl::detail::format_number(arm_extended) + " m)",
+             bonl::detail::format_number(arm_retracted) + " m, at h = stroke " +
+             bonl::detail::format_number(arm_extended) + " m)",
          retracted_length);
   // Piston areas that underflow to 0 or overflow (the pressures are forces divided by them).
   if (!(head_area() > 0.0 && std::isfinite(head_area())))
     fail("bore_diameter", "must give a head area > 0 and finite in floating point", bore_diameter);
   if (!(annulus_area() > 0.0 && std::isfinite(annulus_area())))
-    fail("rod_diameter", "must give an annulus area > 0 and finite in floating point (bore_diameter " +
-                             bonl::detail::format_number(bore_diameter) + ")", rod_diameter);
+    fail("rod_diameter",
+         "must give an annulus area > 0 and finite in floating point (bore_diameter " +
+             bonl::detail::format_number(bore_diameter) + ")",
+         rod_diameter);
 }
 
 double Parameters::head_area() const { return 0.25 * kPi * bore_diameter * bore_diameter; }

@@ -24,8 +24,8 @@ State initial_state(const Parameters& parameters, double position) {
   s.position = position;
   s.velocity = 0.0;
   s.rod_pressure = 0.25 * parameters.supply_pressure;
-  s.head_pressure = (parameters.annulus_area() * s.rod_pressure + gravity_force(parameters, position)) /
-                    parameters.head_area();
+  s.head_pressure =
+      (parameters.annulus_area() * s.rod_pressure + gravity_force(parameters, position)) / parameters.head_area();
   s.spool = 0.0;
   return s;
 }

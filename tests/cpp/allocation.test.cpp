@@ -43,7 +43,9 @@ void check_updates_allocate_nothing(const Model& structure, const std::optional<
   const Eigen::VectorXd y = structure.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 4);
   // The output-error method twice: the recursion alone and with the window refinement.
   for (int run = 0; run < 4; ++run) {
-    const bonl::Method method = run < 2 ? bonl::Method::OutputError : run == 2 ? bonl::Method::EquationError : bonl::Method::Paper;
+    const bonl::Method method = run < 2    ? bonl::Method::OutputError
+                                : run == 2 ? bonl::Method::EquationError
+                                           : bonl::Method::Paper;
     bonl::EstimatorOptions options;
     options.method = method;
     options.forgetting = forgetting;
@@ -106,7 +108,7 @@ TEST_CASE("updates with recording on, the trace ceiling acting and automatic rec
   const Eigen::VectorXd y = structure.simulate(u);
   CHECK(heap_allocations_in([&] {
           for (Eigen::Index k = 0; k < u.size(); ++k) estimator.update(u[k], y[k]);
-          for (int k = 0; k < 500; ++k) estimator.update(0.0, 0.0);  // wind-up: the ceiling acts
+          for (int k = 0; k < 500; ++k) estimator.update(0.0, 0.0);   // wind-up: the ceiling acts
           for (int k = 0; k < 20; ++k) estimator.update(1e150, 0.0);  // failures and automatic recoveries
         }) == 0);
   CHECK(estimator.health().forgetting_limited > 0);

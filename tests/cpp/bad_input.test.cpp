@@ -41,10 +41,10 @@ bonl::ForgettingSchedule steps(double initial, Eigen::Index initial_samples, dou
   return schedule;
 }
 
-using bonl_test::vec;
 using bonl_test::Case;
 using bonl_test::check_cases;
 using bonl_test::quoted_model_names;
+using bonl_test::vec;
 
 const Eigen::VectorXd kF = vec({0.01, 0.8, 0.1});  // an input polynomial for the block tests
 
@@ -87,8 +87,10 @@ TEST_CASE("M1 an order below its minimum is rejected, naming the order", "[bad_i
       {"Hammerstein r = 0", [] { bonl::Hammersteind(1, 1, 1, 0); }, "r must be >= 1, got 0"},
       {"H-W na = 0", [] { bonl::HammersteinWienerd(0, 1, 1, 2, 2); }, "na must be >= 1, got 0"},
       {"H-W r = -1", [] { bonl::HammersteinWienerd(1, 1, 1, -1, 2); }, "r must be >= 1, got -1"},
-      {"H-W r1 = 1", [] { bonl::HammersteinWienerd(1, 1, 1, 2, 1); }, "r1 (output polynomial degree) must be >= 2, got 1"},
-      {"H-W r1 = 0", [] { bonl::HammersteinWienerd(1, 1, 1, 2, 0); }, "r1 (output polynomial degree) must be >= 2, got 0"},
+      {"H-W r1 = 1", [] { bonl::HammersteinWienerd(1, 1, 1, 2, 1); },
+       "r1 (output polynomial degree) must be >= 2, got 1"},
+      {"H-W r1 = 0", [] { bonl::HammersteinWienerd(1, 1, 1, 2, 0); },
+       "r1 (output polynomial degree) must be >= 2, got 0"},
       {"P-H-W na = -1", [] { bonl::PseudoHammersteinWienerd(-1, 1, 1, 2); }, "na must be >= 1, got -1"},
       {"P-H-W nk = -5", [] { bonl::PseudoHammersteinWienerd(1, 1, -5, 2); }, "nk must be >= 0, got -5"},
       {"P-H-W r = 0", [] { bonl::PseudoHammersteinWienerd(1, 1, 1, 0); }, "r must be >= 1, got 0"},
@@ -135,12 +137,24 @@ TEST_CASE("M6 a parameter vector of the wrong length is rejected, naming it and 
   bonl::PseudoHammersteinWienerd p = known<bonl::PseudoHammersteinWienerd>();
   check_cases<std::invalid_argument>({
       {"ARX b", [&] { a.set_b(vec({1.0})); }, "b must have 2 entries, got 1"},
-      {"ARX a", [&] { a.set_a(vec({0.1, 0.2, 0.3})); }, "a must have 2 entries, got 3"},
+      {"ARX a",
+       [&] {
+         a.set_a(vec({0.1, 0.2, 0.3}));
+       },
+       "a must have 2 entries, got 3"},
       {"ARX theta", [&] { a.set_theta(Eigen::VectorXd::Zero(0)); }, "theta must have 4 entries, got 0"},
-      {"Hammerstein f", [&] { h.set_f(vec({1.0, 2.0})); }, "f must have 3 entries, got 2"},
+      {"Hammerstein f",
+       [&] {
+         h.set_f(vec({1.0, 2.0}));
+       },
+       "f must have 3 entries, got 2"},
       {"Hammerstein p", [&] { h.set_p(Eigen::VectorXd::Zero(4)); }, "p must have 3 entries, got 4"},
       {"Hammerstein b", [&] { h.set_b(vec({1.0})); }, "b must have 2 entries, got 1"},
-      {"H-W q", [&] { hw.set_q(vec({1.0, 0.1})); }, "q must have 3 entries, got 2"},
+      {"H-W q",
+       [&] {
+         hw.set_q(vec({1.0, 0.1}));
+       },
+       "q must have 3 entries, got 2"},
       {"H-W theta", [&] { hw.set_theta(Eigen::VectorXd::Zero(3)); }, "theta must have 11 entries, got 3"},
       {"P-H-W a", [&] { p.set_a(vec({0.1})); }, "a must have 2 entries, got 1"},
       {"P-H-W theta", [&] { p.set_theta(Eigen::VectorXd::Zero(11)); }, "theta must have 10 entries, got 11"},
@@ -160,12 +174,36 @@ TEST_CASE("M7 a NaN or infinite parameter is rejected with its index", "[bad_inp
   Eigen::VectorXd theta = p.theta();
   theta[9] = kInf;
   check_cases<std::invalid_argument>({
-      {"ARX a NaN", [&] { a.set_a(vec({0.1, kNaN})); }, "a has a non-finite value at index 1"},
-      {"ARX b inf", [&] { a.set_b(vec({-kInf, 0.0})); }, "b has a non-finite value at index 0"},
-      {"Hammerstein f NaN", [&] { h.set_f(vec({0.0, kNaN, 0.0})); }, "f has a non-finite value at index 1"},
-      {"Hammerstein p inf", [&] { h.set_p(vec({0.0, 0.0, kInf})); }, "p has a non-finite value at index 2"},
-      {"Hammerstein b NaN", [&] { h.set_b(vec({1.0, kNaN})); }, "b has a non-finite value at index 1"},
-      {"H-W q NaN", [&] { hw.set_q(vec({1.0, kNaN, 0.0})); }, "q has a non-finite value at index 1"},
+      {"ARX a NaN",
+       [&] {
+         a.set_a(vec({0.1, kNaN}));
+       },
+       "a has a non-finite value at index 1"},
+      {"ARX b inf",
+       [&] {
+         a.set_b(vec({-kInf, 0.0}));
+       },
+       "b has a non-finite value at index 0"},
+      {"Hammerstein f NaN",
+       [&] {
+         h.set_f(vec({0.0, kNaN, 0.0}));
+       },
+       "f has a non-finite value at index 1"},
+      {"Hammerstein p inf",
+       [&] {
+         h.set_p(vec({0.0, 0.0, kInf}));
+       },
+       "p has a non-finite value at index 2"},
+      {"Hammerstein b NaN",
+       [&] {
+         h.set_b(vec({1.0, kNaN}));
+       },
+       "b has a non-finite value at index 1"},
+      {"H-W q NaN",
+       [&] {
+         hw.set_q(vec({1.0, kNaN, 0.0}));
+       },
+       "q has a non-finite value at index 1"},
       {"P-H-W theta inf", [&] { p.set_theta(theta); }, "theta has a non-finite value at index 9"},
   });
   CHECK(p.theta() == known<bonl::PseudoHammersteinWienerd>().theta());
@@ -177,9 +215,21 @@ TEST_CASE("M8 b_0 and q_1 other than 1 are rejected (the normalisation)", "[bad_
   bonl::HammersteinWienerd hw = known<bonl::HammersteinWienerd>();
   bonl::PseudoHammersteinWienerd p = known<bonl::PseudoHammersteinWienerd>();
   check_cases<std::invalid_argument>({
-      {"Hammerstein b_0 = 0.5", [&] { h.set_b(vec({0.5, 0.1})); }, "b[0] (b_0) must be 1"},
-      {"P-H-W b_0 = 0", [&] { p.set_b(vec({0.0, 0.1})); }, "b[0] (b_0) must be 1"},
-      {"H-W q_1 = 2", [&] { hw.set_q(vec({2.0, 0.0, 0.0})); }, "q[0] (q_1) must be 1"},
+      {"Hammerstein b_0 = 0.5",
+       [&] {
+         h.set_b(vec({0.5, 0.1}));
+       },
+       "b[0] (b_0) must be 1"},
+      {"P-H-W b_0 = 0",
+       [&] {
+         p.set_b(vec({0.0, 0.1}));
+       },
+       "b[0] (b_0) must be 1"},
+      {"H-W q_1 = 2",
+       [&] {
+         hw.set_q(vec({2.0, 0.0, 0.0}));
+       },
+       "q[0] (q_1) must be 1"},
   });
   // ARX keeps b_0 free.
   bonl::ARXd a = known<bonl::ARXd>();
@@ -191,7 +241,8 @@ TEST_CASE("M9 a negative or non-finite backlash half-width c is rejected", "[bad
   bonl::PseudoHammersteinWienerd p = known<bonl::PseudoHammersteinWienerd>();
   std::vector<Case> cases;
   for (double c : {-0.1, -kInf, kNaN, kInf}) {
-    cases.push_back({"c = " + std::to_string(c), [&p, c] { p.set_c(c); }, "c (backlash half-width) must be finite and >= 0"});
+    cases.push_back(
+        {"c = " + std::to_string(c), [&p, c] { p.set_c(c); }, "c (backlash half-width) must be finite and >= 0"});
   }
   check_cases<std::invalid_argument>(cases);
   CHECK(p.c() == 0.05);
@@ -202,9 +253,8 @@ TEST_CASE("M9 a negative or non-finite backlash half-width c is rejected", "[bad
   // then wrote JSON that the reader rejects).
   Eigen::VectorXd theta = known<bonl::PseudoHammersteinWienerd>().theta();
   theta[theta.size() - 1] = -0.1;
-  check_cases<std::invalid_argument>(
-      {{"set_theta with c = -0.1", [&p, &theta] { p.set_theta(theta); },
-        "theta: c (the last entry, the backlash half-width) must be >= 0, got -0.1"}});
+  check_cases<std::invalid_argument>({{"set_theta with c = -0.1", [&p, &theta] { p.set_theta(theta); },
+                                       "theta: c (the last entry, the backlash half-width) must be >= 0, got -0.1"}});
   CHECK(p.c() == 0.0);  // untouched
   // An estimate with c < 0 (the paper method's can have one) becomes a model with c = 0, which is
   // how it simulates.
@@ -221,21 +271,39 @@ TEST_CASE("M11 blocks reject bad orders and parameters", "[bad_input][blocks]") 
   check_cases<std::invalid_argument>({
       {"Backlash c < 0", [] { bonl::Backlash<double>(-1.0); }, "backlash half-width c must be finite and >= 0, got -1"},
       {"Backlash set_c NaN", [&] { play.set_c(kNaN); }, "backlash half-width c must be finite and >= 0, got nan"},
-      {"GeneralBacklash c_left < 0", [] { bonl::GeneralBacklash<double>(-1.0, 0.0); }, "c_left must be finite and >= 0"},
-      {"GeneralBacklash c_right NaN", [] { bonl::GeneralBacklash<double>(0.0, kNaN); }, "c_right must be finite and >= 0"},
-      {"GeneralBacklash slope 0", [] { bonl::GeneralBacklash<double>(0.1, 0.1, 0.0); }, "slope m must be finite and > 0"},
-      {"GeneralBacklash y0 inf", [] { bonl::GeneralBacklash<double>(0.1, 0.1, 1.0, kInf); }, "initial output y0 must be finite"},
-      {"TwoSegmentPolynomial r = 0", [] { bonl::TwoSegmentPolynomial<double>(0); }, "r (input polynomial degree) must be >= 1, got 0"},
+      {"GeneralBacklash c_left < 0", [] { bonl::GeneralBacklash<double>(-1.0, 0.0); },
+       "c_left must be finite and >= 0"},
+      {"GeneralBacklash c_right NaN", [] { bonl::GeneralBacklash<double>(0.0, kNaN); },
+       "c_right must be finite and >= 0"},
+      {"GeneralBacklash slope 0", [] { bonl::GeneralBacklash<double>(0.1, 0.1, 0.0); },
+       "slope m must be finite and > 0"},
+      {"GeneralBacklash y0 inf", [] { bonl::GeneralBacklash<double>(0.1, 0.1, 1.0, kInf); },
+       "initial output y0 must be finite"},
+      {"TwoSegmentPolynomial r = 0", [] { bonl::TwoSegmentPolynomial<double>(0); },
+       "r (input polynomial degree) must be >= 1, got 0"},
       // Before: "r (input polynomial degree) must be >= 1, got -1", for an r the caller never gave.
-      {"TwoSegmentPolynomial empty f", [] { bonl::TwoSegmentPolynomial<double>(Eigen::VectorXd(0), Eigen::VectorXd(0)); },
+      {"TwoSegmentPolynomial empty f",
+       [] { bonl::TwoSegmentPolynomial<double>(Eigen::VectorXd(0), Eigen::VectorXd(0)); },
        "f must have at least 2 entries (f_0..f_r, degree r >= 1), got 0"},
-      {"TwoSegmentPolynomial f, p lengths", [] { bonl::TwoSegmentPolynomial<double>(kF, vec({0.0, 0.0})); },
+      {"TwoSegmentPolynomial f, p lengths",
+       [] {
+         bonl::TwoSegmentPolynomial<double>(kF, vec({0.0, 0.0}));
+       },
        "p must have 3 entries, got 2"},
-      {"OutputPolynomial r1 = 0", [] { bonl::OutputPolynomial<double>(0); }, "r1 (output polynomial degree) must be >= 1, got 0"},
-      {"OutputPolynomial q NaN", [&] { output.set_q(vec({1.0, kNaN})); }, "q has a non-finite value at index 1"},
+      {"OutputPolynomial r1 = 0", [] { bonl::OutputPolynomial<double>(0); },
+       "r1 (output polynomial degree) must be >= 1, got 0"},
+      {"OutputPolynomial q NaN",
+       [&] {
+         output.set_q(vec({1.0, kNaN}));
+       },
+       "q has a non-finite value at index 1"},
       {"LinearBlock na = 0", [] { bonl::LinearBlock<double>(0, 0, 0); }, "na must be >= 1, got 0"},
       {"LinearBlock nk = INT64_MAX", [] { bonl::LinearBlock<double>(1, 0, kHuge); }, "nk must be <= 1000000"},
-      {"LinearBlock a length", [&] { linear.set_a(vec({0.1, 0.2})); }, "a must have 1 entries, got 2"},
+      {"LinearBlock a length",
+       [&] {
+         linear.set_a(vec({0.1, 0.2}));
+       },
+       "a must have 1 entries, got 2"},
   });
   CHECK(play.c() == 0.1);
 }
@@ -307,8 +375,10 @@ TEST_CASE("E1-E3 identify rejects mismatched, too short and non-finite records",
     Eigen::VectorXd bad_y = y;
     bad_y[17] = kInf;
     check_cases<std::invalid_argument>({
-        {"E1 y shorter", [&] { bonl::identify(model, u, y.head(199)); }, "u and y must have the same length, got 200 and 199"},
-        {"E1 u empty", [&] { bonl::identify(model, u.head(0), y); }, "u and y must have the same length, got 0 and 200"},
+        {"E1 y shorter", [&] { bonl::identify(model, u, y.head(199)); },
+         "u and y must have the same length, got 200 and 199"},
+        {"E1 u empty", [&] { bonl::identify(model, u.head(0), y); },
+         "u and y must have the same length, got 0 and 200"},
         {"E2 n samples", [&] { bonl::identify(model, u.head(n), y.head(n)); },
          too_short + ", got " + std::to_string(n) + " samples"},
         {"E2 empty", [&] { bonl::identify(model, u.head(0), y.head(0)); }, too_short + ", got 0 samples"},
@@ -330,8 +400,10 @@ TEST_CASE("E4-E11 identify and Estimator reject settings out of range", "[bad_in
     return options;
   };
   std::vector<Case> cases = {
-      {"E4 passes 0", [&] { bonl::identify(model, u, y, with([](auto& o) { o.passes = 0; })); }, "passes must be >= 1, got 0"},
-      {"E4 passes -1", [&] { bonl::identify(model, u, y, with([](auto& o) { o.passes = -1; })); }, "passes must be >= 1, got -1"},
+      {"E4 passes 0", [&] { bonl::identify(model, u, y, with([](auto& o) { o.passes = 0; })); },
+       "passes must be >= 1, got 0"},
+      {"E4 passes -1", [&] { bonl::identify(model, u, y, with([](auto& o) { o.passes = -1; })); },
+       "passes must be >= 1, got -1"},
       {"E5 refine_iterations -1", [&] { bonl::identify(model, u, y, with([](auto& o) { o.refine_iterations = -1; })); },
        "refine_iterations must be >= 0"},
       {"E7 initial_samples -1",
@@ -344,12 +416,15 @@ TEST_CASE("E4-E11 identify and Estimator reject settings out of range", "[bad_in
     const std::string what = "E6 lambda " + std::to_string(lambda);
     cases.push_back({what + " constant",
                      [&, lambda] {
-                       bonl::identify(model, u, y,
-                                      with([lambda](auto& o) { o.forgetting = bonl::ForgettingSchedule::constant(lambda); }));
+                       bonl::identify(model, u, y, with([lambda](auto& o) {
+                                        o.forgetting = bonl::ForgettingSchedule::constant(lambda);
+                                      }));
                      },
                      "forgetting factor must be in (0, 1]"});
     cases.push_back({what + " initial",
-                     [&, lambda] { bonl::identify(model, u, y, with([lambda](auto& o) { o.forgetting = steps(lambda, 200, 1.0); })); },
+                     [&, lambda] {
+                       bonl::identify(model, u, y, with([lambda](auto& o) { o.forgetting = steps(lambda, 200, 1.0); }));
+                     },
                      "forgetting factor must be in (0, 1]"});
     cases.push_back({what + " final, Estimator",
                      [&, lambda] {
@@ -382,11 +457,10 @@ TEST_CASE("E4-E11 identify and Estimator reject settings out of range", "[bad_in
     cases.push_back({"E10 c0 " + std::to_string(c0),
                      [&, c0] { bonl::identify(model, u, y, bonl::IdentifyOptions{}, settings_with(c0, 200)); },
                      "c0 (initial backlash half-width) must be finite and >= 0"});
-    cases.push_back({"E10 c0 " + std::to_string(c0) + ", Estimator",
-                     [&, c0] {
-                       bonl::Estimator<bonl::PseudoHammersteinWienerd> estimator(model, {}, settings_with(c0, 200));
-                     },
-                     "c0 (initial backlash half-width) must be finite and >= 0"});
+    cases.push_back(
+        {"E10 c0 " + std::to_string(c0) + ", Estimator",
+         [&, c0] { bonl::Estimator<bonl::PseudoHammersteinWienerd> estimator(model, {}, settings_with(c0, 200)); },
+         "c0 (initial backlash half-width) must be finite and >= 0"});
   }
   cases.push_back({"E10 backlash_hold -1",
                    [&] { bonl::identify(model, u, y, bonl::IdentifyOptions{}, settings_with(0.01, -1)); },
@@ -394,12 +468,16 @@ TEST_CASE("E4-E11 identify and Estimator reject settings out of range", "[bad_in
   check_cases<std::invalid_argument>(cases);
   // The boundaries are accepted: lambda = 1, c0 = 0, backlash_hold = 0, initial_samples = 0.
   CHECK(bonl::identify(model, u, y, with([](auto& o) {
-          o.forgetting = bonl::ForgettingSchedule::constant(1.0);
-          o.refine_iterations = 0;
-        }), settings_with(0.0, 0)).theta().allFinite());
+                         o.forgetting = bonl::ForgettingSchedule::constant(1.0);
+                         o.refine_iterations = 0;
+                       }),
+                       settings_with(0.0, 0))
+            .theta()
+            .allFinite());
 }
 
-TEST_CASE("E17 estimate_recursively and refine_output_error check their record and settings", "[bad_input][estimator]") {
+TEST_CASE("E17 estimate_recursively and refine_output_error check their record and settings",
+          "[bad_input][estimator]") {
   const bonl::Hammersteind model = known<bonl::Hammersteind>();
   const Eigen::VectorXd u = bonl::signals::random_levels(200, 5, 1.0, 7);
   const Eigen::VectorXd y = model.simulate(u);
@@ -439,7 +517,8 @@ TEST_CASE("E18 the safeguard options and the recording capacity are checked", "[
   check_cases<std::invalid_argument>({
       {"trace_ceiling 0.5", [&] { bonl::Estimator<bonl::ARXd>(known<bonl::ARXd>(), low_ceiling); },
        "trace_ceiling must be >= 1 (a multiple of trace(P(0))) or infinity, got 0.5"},
-      {"trace_ceiling NaN", [&] { bonl::Estimator<bonl::ARXd>(known<bonl::ARXd>(), nan_ceiling); }, "trace_ceiling must be >= 1"},
+      {"trace_ceiling NaN", [&] { bonl::Estimator<bonl::ARXd>(known<bonl::ARXd>(), nan_ceiling); },
+       "trace_ceiling must be >= 1"},
       {"recover_after -1", [&] { bonl::Estimator<bonl::ARXd>(known<bonl::ARXd>(), negative_recover); },
        "recover_after must be >= 0"},
       {"start_recording(0)", [&] { estimator.start_recording(0); }, "recording capacity must be >= 1"},
@@ -450,7 +529,8 @@ TEST_CASE("E12 a model with more than 10^6 parameters cannot get an estimator", 
   // na = 10^6 is a valid order, but its estimator would need a 10^6 x 10^6 covariance.
   const bonl::Hammersteind big(bonl::detail::kMaxOrder, 0, 0, 1);
   CHECK_THROWS_AS(bonl::Estimator<bonl::Hammersteind>(big), std::invalid_argument);
-  CHECK_THROWS_WITH(bonl::Estimator<bonl::Hammersteind>(big), Contains("number of parameters must be <= 1000000, got 1000004"));
+  CHECK_THROWS_WITH(bonl::Estimator<bonl::Hammersteind>(big),
+                    Contains("number of parameters must be <= 1000000, got 1000004"));
 }
 
 TEST_CASE("E14 a non-finite sample in Estimator::update is refused and leaves no trace", "[bad_input][estimator]") {
@@ -514,10 +594,22 @@ TEST_CASE("S1-S3 metrics reject mismatched, empty and non-finite data", "[bad_in
   for (const auto& [name, metric] : metrics) {
     INFO(name);
     check_cases<std::invalid_argument>({
-        {"S1 lengths", [&, metric = metric] { metric(y, vec({1.0, 2.0, 3.0, 4.0})); }, "y and yhat must have the same length, got 3 and 4"},
+        {"S1 lengths",
+         [&, metric = metric] {
+           metric(y, vec({1.0, 2.0, 3.0, 4.0}));
+         },
+         "y and yhat must have the same length, got 3 and 4"},
         {"S2 empty", [&, metric = metric] { metric(empty, empty); }, "y must not be empty"},
-        {"S3 yhat NaN", [&, metric = metric] { metric(y, vec({1.0, kNaN, 3.0})); }, "yhat has a non-finite value at index 1"},
-        {"S3 y inf", [&, metric = metric] { metric(vec({1.0, 2.0, kInf}), y); }, "y has a non-finite value at index 2"},
+        {"S3 yhat NaN",
+         [&, metric = metric] {
+           metric(y, vec({1.0, kNaN, 3.0}));
+         },
+         "yhat has a non-finite value at index 1"},
+        {"S3 y inf",
+         [&, metric = metric] {
+           metric(vec({1.0, 2.0, kInf}), y);
+         },
+         "y has a non-finite value at index 2"},
     });
   }
   check_cases<std::invalid_argument>({
@@ -529,10 +621,12 @@ TEST_CASE("S4 the normalised error of a constant y is an error, even when its me
   // Before: for y = (0.1, 0.1, 0.1) the mean rounds to 0.10000000000000002, and nrmse returned 7.2e15.
   const Eigen::VectorXd yhat = Eigen::VectorXd::Zero(3);
   check_cases<std::invalid_argument>({
-      {"ones", [&] { bonl::metrics::nrmse(Eigen::VectorXd::Ones(3), yhat); }, "y is constant: the normalised error is undefined"},
+      {"ones", [&] { bonl::metrics::nrmse(Eigen::VectorXd::Ones(3), yhat); },
+       "y is constant: the normalised error is undefined"},
       {"0.1", [&] { bonl::metrics::nrmse(Eigen::VectorXd::Constant(3, 0.1), yhat); }, "y is constant"},
       {"0.1 fit", [&] { bonl::metrics::fit_percent(Eigen::VectorXd::Constant(3, 0.1), yhat); }, "y is constant"},
-      {"scores", [&] { bonl::metrics::scores(Eigen::VectorXd::Constant(7, -0.3), Eigen::VectorXd::Zero(7)); }, "y is constant"},
+      {"scores", [&] { bonl::metrics::scores(Eigen::VectorXd::Constant(7, -0.3), Eigen::VectorXd::Zero(7)); },
+       "y is constant"},
   });
 }
 
@@ -577,19 +671,26 @@ TEST_CASE("S8-S11 signal generators reject bad arguments and overflowing signals
       // Before: every level was infinite (the range 2 amplitude overflows).
       {"S8 amplitude 1e308", [] { bonl::signals::random_levels(10, 1, 1e308, 1); }, "amplitude must be <= 8.9e307"},
       {"S9 n < 0", [&] { bonl::signals::multisine(-1, 0.01, tones, 1.0, phases); }, "n must be >= 0"},
-      {"S9 ts 0", [&] { bonl::signals::multisine(10, 0.0, tones, 1.0, phases); }, "ts (sample time) must be finite and > 0"},
-      {"S9 ts NaN", [&] { bonl::signals::multisine(10, kNaN, tones, 1.0, phases); }, "ts (sample time) must be finite and > 0"},
+      {"S9 ts 0", [&] { bonl::signals::multisine(10, 0.0, tones, 1.0, phases); },
+       "ts (sample time) must be finite and > 0"},
+      {"S9 ts NaN", [&] { bonl::signals::multisine(10, kNaN, tones, 1.0, phases); },
+       "ts (sample time) must be finite and > 0"},
       {"S9 lengths", [&] { bonl::signals::multisine(10, 0.01, tones, 1.0, phases.head(3)); },
        "frequencies_hz and phases must have the same length, got 5 and 3"},
       {"S9 frequency NaN", [&] { bonl::signals::multisine(10, 0.01, vec({kNaN}), 1.0, vec({0.0})); },
        "frequencies_hz has a non-finite value at index 0"},
       {"S9 phase inf", [&] { bonl::signals::multisine(10, 0.01, vec({1.0}), 1.0, vec({kInf})); },
        "phases has a non-finite value at index 0"},
-      {"S9 amplitude NaN", [&] { bonl::signals::multisine(10, 0.01, tones, kNaN, phases); }, "amplitude must be finite"},
+      {"S9 amplitude NaN", [&] { bonl::signals::multisine(10, 0.01, tones, kNaN, phases); },
+       "amplitude must be finite"},
       // Before: infinite samples (amplitude times a sum of five tones overflows), or NaN (sin(inf)).
-      {"S9 amplitude 1e308", [] { bonl::signals::multisine(3, 0.01, vec({0.0, 0.0}), 1e308, vec({1.5707963267948966, 1.5707963267948966})); },
+      {"S9 amplitude 1e308",
+       [] {
+         bonl::signals::multisine(3, 0.01, vec({0.0, 0.0}), 1e308, vec({1.5707963267948966, 1.5707963267948966}));
+       },
        "the multi-sine is not finite"},
-      {"S9 frequency 1e308", [] { bonl::signals::multisine(3, 1.0, vec({1e308}), 1.0, vec({0.0})); }, "the multi-sine is not finite"},
+      {"S9 frequency 1e308", [] { bonl::signals::multisine(3, 1.0, vec({1e308}), 1.0, vec({0.0})); },
+       "the multi-sine is not finite"},
       {"S10 n < 0", [] { bonl::signals::white_noise(-1, 1.0, 1); }, "n must be >= 0"},
       {"S10 sigma < 0", [] { bonl::signals::white_noise(10, -1.0, 1); }, "sigma must be finite and >= 0"},
       {"S10 sigma inf", [] { bonl::signals::white_noise(10, kInf, 1); }, "sigma must be finite and >= 0"},
@@ -644,12 +745,14 @@ TEST_CASE("J1-J5 the reader rejects what is not a bonl model file of this versio
       {"J2 array", [] { bonl::io::load_model("[]"); }, "the document must be a JSON object, got array"},
       {"J2 number", [] { bonl::io::load_model("3"); }, "the document must be a JSON object, got number"},
       {"J2 null", [] { bonl::io::load_model("null"); }, "the document must be a JSON object, got null"},
-      {"J3 no format", [] { bonl::io::load_model(phw_with([](Json& d) { d.erase("format"); })); }, "missing key format"},
+      {"J3 no format", [] { bonl::io::load_model(phw_with([](Json& d) { d.erase("format"); })); },
+       "missing key format"},
       {"J3 other format", [] { bonl::io::load_model(phw_with([](Json& d) { d["format"] = "bonl-modl"; })); },
        "format must be \"bonl-model\", got \"bonl-modl\""},
       {"J3 format number", [] { bonl::io::load_model(phw_with([](Json& d) { d["format"] = 1; })); },
        "format must be \"bonl-model\", got 1"},
-      {"J4 no version", [] { bonl::io::load_model(phw_with([](Json& d) { d.erase("version"); })); }, "missing key version"},
+      {"J4 no version", [] { bonl::io::load_model(phw_with([](Json& d) { d.erase("version"); })); },
+       "missing key version"},
       {"J4 version 1.0", [] { bonl::io::load_model(phw_with([](Json& d) { d["version"] = 1.0; })); },
        "version must be an integer, got 1.0"},
       {"J4 version \"1\"", [] { bonl::io::load_model(phw_with([](Json& d) { d["version"] = "1"; })); },
@@ -657,7 +760,9 @@ TEST_CASE("J1-J5 the reader rejects what is not a bonl model file of this versio
       {"J4 version 3", [] { bonl::io::load_model(phw_with([](Json& d) { d["version"] = 3; })); },
        "version 3 is newer than this bonl reads: it reads version 2"},
       {"J4 version 2^64 - 1",
-       [] { bonl::io::load_model(phw_with([](Json& d) { d["version"] = std::numeric_limits<std::uint64_t>::max(); })); },
+       [] {
+         bonl::io::load_model(phw_with([](Json& d) { d["version"] = std::numeric_limits<std::uint64_t>::max(); }));
+       },
        "version 18446744073709551615 is newer than this bonl reads"},
       {"J4 version 0", [] { bonl::io::load_model(phw_with([](Json& d) { d["version"] = 0; })); },
        "version must be between 1 and 2, got 0"},
@@ -671,7 +776,8 @@ TEST_CASE("J1-J5 the reader rejects what is not a bonl model file of this versio
        "operating_point.u0 must be a number"},
       {"J5 unknown model", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = "Volterra"; })); },
        "model must be one of " + quoted_model_names() + ", got \"Volterra\""},
-      {"J5 model with a hyphen", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = "Pseudo-Hammerstein-Wiener"; })); },
+      {"J5 model with a hyphen",
+       [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = "Pseudo-Hammerstein-Wiener"; })); },
        "model must be one of"},
       {"J5 model null", [] { bonl::io::load_model(phw_with([](Json& d) { d["model"] = nullptr; })); },
        "model must be one of " + quoted_model_names() + ", got null"},
@@ -717,9 +823,12 @@ TEST_CASE("J7-J15 the reader names the key at fault", "[bad_input][io]") {
   Json hw_r1 = document(hw_text());
   hw_r1["orders"]["r1"] = 33;
   check_cases<std::invalid_argument>({
-      {"J7 no params.c", [] { bonl::io::load_model(phw_with([](Json& d) { d["params"].erase("c"); })); }, "missing key params.c"},
-      {"J7 no orders", [] { bonl::io::load_model(phw_with([](Json& d) { d.erase("orders"); })); }, "missing key orders"},
-      {"J7 no orders.nk", [] { bonl::io::load_model(phw_with([](Json& d) { d["orders"].erase("nk"); })); }, "missing key orders.nk"},
+      {"J7 no params.c", [] { bonl::io::load_model(phw_with([](Json& d) { d["params"].erase("c"); })); },
+       "missing key params.c"},
+      {"J7 no orders", [] { bonl::io::load_model(phw_with([](Json& d) { d.erase("orders"); })); },
+       "missing key orders"},
+      {"J7 no orders.nk", [] { bonl::io::load_model(phw_with([](Json& d) { d["orders"].erase("nk"); })); },
+       "missing key orders.nk"},
       {"J7 unknown top-level key", [] { bonl::io::load_model(phw_with([](Json& d) { d["comment"] = "x"; })); },
        "unknown key comment"},
       {"J7 r in an ARX file", [&] { bonl::io::load_model(arx_with_r.dump()); },
@@ -730,16 +839,21 @@ TEST_CASE("J7-J15 the reader names the key at fault", "[bad_input][io]") {
       {"J9 nb true", [&] { bonl::io::load_model(orders("nb", true)); }, "orders.nb must be an integer, got true"},
       {"J9 nk \"2\"", [&] { bonl::io::load_model(orders("nk", "2")); }, "orders.nk must be an integer, got \"2\""},
       {"J9 r null", [&] { bonl::io::load_model(orders("r", nullptr)); }, "orders.r must be an integer, got null"},
-      {"J9 orders array", [] { bonl::io::load_model(phw_with([](Json& d) { d["orders"] = Json::array({2, 1, 2, 2}); })); },
+      {"J9 orders array",
+       [] { bonl::io::load_model(phw_with([](Json& d) {
+              d["orders"] = Json::array({2, 1, 2, 2});
+            })); },
        "orders must be an object, got [2,1,2,2]"},
       {"J10 na 0", [&] { bonl::io::load_model(orders("na", 0)); }, "orders.na must be between 1 and 1000000, got 0"},
       {"J10 nb -1", [&] { bonl::io::load_model(orders("nb", -1)); }, "orders.nb must be between 0 and 1000000, got -1"},
-      {"J10 nk 10^6 + 1", [&] { bonl::io::load_model(orders("nk", 1000001)); }, "orders.nk must be between 0 and 1000000"},
+      {"J10 nk 10^6 + 1", [&] { bonl::io::load_model(orders("nk", 1000001)); },
+       "orders.nk must be between 0 and 1000000"},
       {"J10 r 2^64 - 1", [&] { bonl::io::load_model(orders("r", std::numeric_limits<std::uint64_t>::max())); },
        "orders.r must be between 1 and 1000000, got 18446744073709551615"},
       {"J10 r1 33", [&] { bonl::io::load_model(hw_r1.dump()); }, "orders.r1 must be between 2 and 32, got 33"},
       // Before: "must be an integer", for an integer literal too large for 64 bits (read as a double).
-      {"J10 nb 2^64", [] { bonl::io::load_model(phw_with([](Json& d) { d["orders"]["nb"] = 18446744073709551616.0; })); },
+      {"J10 nb 2^64",
+       [] { bonl::io::load_model(phw_with([](Json& d) { d["orders"]["nb"] = 18446744073709551616.0; })); },
        "orders.nb must be between 0 and 1000000, got 1.8446744073709552e+19"},
       {"J10 na 1e300", [] { bonl::io::load_model(phw_with([](Json& d) { d["orders"]["na"] = -1e300; })); },
        "orders.na must be between 1 and 1000000, got -1e+300"},
@@ -748,23 +862,34 @@ TEST_CASE("J7-J15 the reader names the key at fault", "[bad_input][io]") {
       {"J12 params array", [] { bonl::io::load_model(phw_with([](Json& d) { d["params"] = Json::array(); })); },
        "params must be an object, got []"},
       {"J12 f a number", [&] { bonl::io::load_model(param("f", 1)); }, "params.f must be an array of numbers, got 1"},
-      {"J12 f too short", [&] { bonl::io::load_model(param("f", Json::array({0.0, 1.0}))); },
+      {"J12 f too short",
+       [&] {
+         bonl::io::load_model(param("f", Json::array({0.0, 1.0})));
+       },
        "params.f must have 3 entries, got 2"},
-      {"J12 a too long", [&] { bonl::io::load_model(param("a", Json::array({0.1, 0.2, 0.3}))); },
+      {"J12 a too long",
+       [&] {
+         bonl::io::load_model(param("a", Json::array({0.1, 0.2, 0.3})));
+       },
        "params.a must have 2 entries, got 3"},
-      {"J13 a[1] a string", [&] { bonl::io::load_model(entry("a", 1, "x")); }, "params.a[1] must be a number, got \"x\""},
-      {"J13 p[0] null", [&] { bonl::io::load_model(entry("p", 0, nullptr)); }, "params.p[0] must be a number, got null"},
+      {"J13 a[1] a string", [&] { bonl::io::load_model(entry("a", 1, "x")); },
+       "params.a[1] must be a number, got \"x\""},
+      {"J13 p[0] null", [&] { bonl::io::load_model(entry("p", 0, nullptr)); },
+       "params.p[0] must be a number, got null"},
       {"J13 b[1] true", [&] { bonl::io::load_model(entry("b", 1, true)); }, "params.b[1] must be a number, got true"},
       {"J13 c a string", [&] { bonl::io::load_model(param("c", "0.1")); }, "params.c must be a number, got \"0.1\""},
       {"J14 1e400", [&] { bonl::io::load_model(beyond_double); }, "a number is out of double's range"},
       {"J14 1e300 for float", [&] { bonl::io::model_from_json<bonl::ARX<float>>(beyond_float); },
        "params.b[0] = 1e+300 is out of the model's Scalar range"},
-      {"J15 b_0 = 0.5", [&] { bonl::io::load_model(entry("b", 0, 0.5)); }, "params.b[0] must be 1 (block models are normalised"},
+      {"J15 b_0 = 0.5", [&] { bonl::io::load_model(entry("b", 0, 0.5)); },
+       "params.b[0] must be 1 (block models are normalised"},
       {"J15 q_1 = 2", [&] { bonl::io::load_model(hw_q.dump()); }, "params.q[0] must be 1 (the H-W model is normalised"},
-      {"J15 c < 0", [&] { bonl::io::load_model(param("c", -0.1)); }, "params.c (backlash half-width) must be >= 0, got -0.1"},
+      {"J15 c < 0", [&] { bonl::io::load_model(param("c", -0.1)); },
+       "params.c (backlash half-width) must be >= 0, got -0.1"},
   });
   // Controls: the unchanged files load, as the kind they name.
-  CHECK(std::get<bonl::PseudoHammersteinWienerd>(bonl::io::load_model(phw_text())).theta() == known<bonl::PseudoHammersteinWienerd>().theta());
+  CHECK(std::get<bonl::PseudoHammersteinWienerd>(bonl::io::load_model(phw_text())).theta() ==
+        known<bonl::PseudoHammersteinWienerd>().theta());
   CHECK(std::get<bonl::ARXd>(bonl::io::load_model(arx_text())).theta() == known<bonl::ARXd>().theta());
 }
 
@@ -801,7 +926,8 @@ TEST_CASE("A1 no entry point modifies the caller's arrays, contiguous or strided
     // (Reductions over a strided view are not vectorised: the same numbers up to rounding.)
     CHECK(bonl::metrics::mse(y, u) == Approx(bonl::metrics::mse(y_plain, u_plain)).epsilon(1e-14));
     CHECK(bonl::metrics::nrmse(y, u) == bonl::metrics::nrmse(y_plain, u_plain));
-    CHECK(bonl::metrics::simulation_scores(model, u, y).nrmse == bonl::metrics::simulation_scores(model, u_plain, y_plain).nrmse);
+    CHECK(bonl::metrics::simulation_scores(model, u, y).nrmse ==
+          bonl::metrics::simulation_scores(model, u_plain, y_plain).nrmse);
     CHECK(bonl::metrics::prediction_scores(model, u, y).mse ==
           Approx(bonl::metrics::prediction_scores(model, u_plain, y_plain).mse).epsilon(1e-14));
     bonl::Estimator<Model> estimator(model);

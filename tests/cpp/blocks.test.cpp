@@ -91,7 +91,7 @@ TEST_CASE("Backlash: triangle wave traces the hysteresis loop", "[blocks][backla
       REQUIRE(near(s.y, top, 1e-12));  // exactly at the edge both branches meet
     }
   }
-  REQUIRE(held == 7);  // x = 0.95 .. 0.65: 2c / 0.05 - 1 samples strictly inside the gap
+  REQUIRE(held == 7);                       // x = 0.95 .. 0.65: 2c / 0.05 - 1 samples strictly inside the gap
   const double bottom = run.fall.back().y;  // reached at x = -1
   REQUIRE(near(bottom, -1.0 + c, 1e-12));
 
@@ -234,7 +234,7 @@ TEST_CASE("backlash_g3 / backlash_g4: eqs. (11)-(12) reproduce Backlash::map", "
     const double g3 = bonl::backlash_g3(x, y_prev, c);
     const double g4 = bonl::backlash_g4(x, y_prev, c);
     const double y1 = x - 0.5 * c * (sgn_dx + 1.0) * g3 + 0.5 * c * (1.0 - sgn_dx) * g4;  // eq. (11)
-    return y1 + (y_prev - y1) * (g3 - 1.0) * (g4 - 1.0);                                 // eq. (12)
+    return y1 + (y_prev - y1) * (g3 - 1.0) * (g4 - 1.0);                                  // eq. (12)
   };
   int up = 0, down = 0, gap = 0;
   for (double y_prev : {-0.7, 0.0, 0.35}) {
@@ -415,8 +415,7 @@ TEST_CASE("TwoSegmentPolynomial: invalid coefficients and degree throw", "[block
   REQUIRE(n1.f() == Eigen::VectorXd::Zero(4));  // nothing was stored
   REQUIRE_THROWS_AS(bonl::TwoSegmentPolynomial<double>(0), std::invalid_argument);
   REQUIRE_THROWS_AS(bonl::TwoSegmentPolynomial<double>(vec({1.0}), vec({1.0})), std::invalid_argument);
-  REQUIRE_THROWS_AS(bonl::TwoSegmentPolynomial<double>(vec({1.0, 2.0}), vec({1.0, 2.0, 3.0})),
-                    std::invalid_argument);
+  REQUIRE_THROWS_AS(bonl::TwoSegmentPolynomial<double>(vec({1.0, 2.0}), vec({1.0, 2.0, 3.0})), std::invalid_argument);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -434,11 +433,11 @@ TEST_CASE("OutputPolynomial: value and derivative", "[blocks][output]") {
     REQUIRE(near(n2(x), x + 0.5 * x * x + 0.2 * x * x * x, 1e-14));
     REQUIRE(near(n2.derivative(x), 1.0 + x + 0.6 * x * x, 1e-14));
   }
-  REQUIRE(near(n2(2.0), 5.6, 1e-14));  // 2 + 2 + 1.6
-  REQUIRE(near(n2.derivative(2.0), 5.4, 1e-14));  // 1 + 2 + 2.4
-  REQUIRE(near(n2(-1.0), -0.7, 1e-14));  // -1 + 0.5 - 0.2
+  REQUIRE(near(n2(2.0), 5.6, 1e-14));              // 2 + 2 + 1.6
+  REQUIRE(near(n2.derivative(2.0), 5.4, 1e-14));   // 1 + 2 + 2.4
+  REQUIRE(near(n2(-1.0), -0.7, 1e-14));            // -1 + 0.5 - 0.2
   REQUIRE(near(n2.derivative(-1.0), 0.6, 1e-14));  // 1 - 1 + 0.6
-  REQUIRE(n2(0.0) == 0.0);  // no constant term
+  REQUIRE(n2(0.0) == 0.0);                         // no constant term
   REQUIRE_THROWS_AS(n2.set_q(vec({1.0, 0.5})), std::invalid_argument);
   REQUIRE_THROWS_AS(n2.set_q(vec({1.0, kNaN, 0.2})), std::invalid_argument);
   REQUIRE_THROWS_AS(bonl::OutputPolynomial<double>(0), std::invalid_argument);

@@ -37,18 +37,18 @@ using PaperModelAt = bonl::WithOrders<ModelAt<I>, bonl::PaperOrders>;
 
 #define BONL_TEST_KNOWN_SYSTEM(M) BONL_TEST_EXTERN template M bonl_test::known_system<M>(const char*);
 
-#define BONL_TEST_IDENTIFICATION(M)                                                                              \
-  BONL_TEST_EXTERN template M bonl::identify(const M&, const bonl::Records<double>&, const bonl::IdentifyOptions&,   \
-                                             const bonl::ModelSettings<M>&);                                       \
-  BONL_TEST_EXTERN template bonl::Selection<M> bonl::select(const std::vector<M>&, const bonl::Records<double>&,   \
-                                                            const bonl::SelectOptions&);                          \
-  BONL_TEST_EXTERN template bonl::Selection<M> bonl::select(const std::vector<M>&,                                \
-                                                            const bonl::SelectionData<double>&);                  \
-  BONL_TEST_EXTERN template bonl::SelectionCandidate<M> bonl::score_candidate(const M&,                           \
-                                                                              const bonl::SelectionData<double>&); \
-  BONL_TEST_EXTERN template M bonl::refine_output_error(const std::vector<M>&, const bonl::Records<double>&, int,   \
-                                                        bonl::RefinementReport*);                                  \
-  BONL_TEST_EXTERN template M bonl::estimate_recursively(const M&, const bonl::Records<double>&,                    \
+#define BONL_TEST_IDENTIFICATION(M)                                                                                    \
+  BONL_TEST_EXTERN template M bonl::identify(const M&, const bonl::Records<double>&, const bonl::IdentifyOptions&,     \
+                                             const bonl::ModelSettings<M>&);                                           \
+  BONL_TEST_EXTERN template bonl::Selection<M> bonl::select(const std::vector<M>&, const bonl::Records<double>&,       \
+                                                            const bonl::SelectOptions&);                               \
+  BONL_TEST_EXTERN template bonl::Selection<M> bonl::select(const std::vector<M>&,                                     \
+                                                            const bonl::SelectionData<double>&);                       \
+  BONL_TEST_EXTERN template bonl::SelectionCandidate<M> bonl::score_candidate(const M&,                                \
+                                                                              const bonl::SelectionData<double>&);     \
+  BONL_TEST_EXTERN template M bonl::refine_output_error(const std::vector<M>&, const bonl::Records<double>&, int,      \
+                                                        bonl::RefinementReport*);                                      \
+  BONL_TEST_EXTERN template M bonl::estimate_recursively(const M&, const bonl::Records<double>&,                       \
                                                          const bonl::IdentifyOptions&, const bonl::ModelSettings<M>&); \
   BONL_TEST_KNOWN_SYSTEM(M)
 

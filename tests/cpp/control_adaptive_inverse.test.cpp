@@ -173,13 +173,16 @@ TEST_CASE("a non-finite sample changes nothing, and bad options are refused") {
 
   AdaptiveInverseOptions bad = adaptive_options();
   bad.rederive_every = 0;
-  CHECK_THROWS_WITH(AdaptiveInverse<Model>(truth, bad), Catch::Matchers::Contains("rederive_every must be >= 1, got 0"));
+  CHECK_THROWS_WITH(AdaptiveInverse<Model>(truth, bad),
+                    Catch::Matchers::Contains("rederive_every must be >= 1, got 0"));
   bad = adaptive_options();
   bad.max_covariance_trace = 0.5;
-  CHECK_THROWS_WITH(AdaptiveInverse<Model>(truth, bad), Catch::Matchers::Contains("max_covariance_trace must be finite and >= 1"));
+  CHECK_THROWS_WITH(AdaptiveInverse<Model>(truth, bad),
+                    Catch::Matchers::Contains("max_covariance_trace must be finite and >= 1"));
   bad = adaptive_options();
   bad.stability_radius = 1.5;
-  CHECK_THROWS_WITH(AdaptiveInverse<Model>(truth, bad), Catch::Matchers::Contains("stability_radius must be in (0, 1]"));
+  CHECK_THROWS_WITH(AdaptiveInverse<Model>(truth, bad),
+                    Catch::Matchers::Contains("stability_radius must be in (0, 1]"));
   bad = adaptive_options();
   bad.inverse.command_min = bad.inverse.command_max = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_WITH(AdaptiveInverse<Model>(truth, bad), Catch::Matchers::Contains("needs a finite command range"));

@@ -56,7 +56,8 @@ TEST_CASE("the inverse models step without allocating") {
   check_steps_allocate_nothing(known_hammerstein_wiener());
   check_steps_allocate_nothing(known_phw());
   check_steps_allocate_nothing(known_system<bonl::PaperWiener>());
-  check_steps_allocate_nothing(known_system<bonl::WithOrders<bonl::PrandtlIshlinskiiHammersteind, bonl::PaperOrders>>());
+  check_steps_allocate_nothing(
+      known_system<bonl::WithOrders<bonl::PrandtlIshlinskiiHammersteind, bonl::PaperOrders>>());
   // ZPETC: a zero of B outside the unit circle.
   auto nonminimum = known_system<bonl::PseudoHammersteinWienerd>("small");
   nonminimum.set_b(vec({1.0, 1.5}));

@@ -229,14 +229,13 @@ TEST_CASE("the Prandtl-Ishlinskii input's inverse keeps to where w is monotone f
   CHECK(inverse(1.0).status == InverseStatus::Saturated);
   CHECK(inverse(1.0).value == inverse.upper());
   // A negative weight larger than f' near 0 leaves a slope of either sign: no inverse.
-  CHECK_THROWS_WITH(PrandtlIshlinskiiInverse<double>(
-                        bonl::PrandtlIshlinskiiInput<double>(vec({0.0, 0.1}), vec({0.2, 0.5}), vec({0.3, -0.2})),
-                        -1.0, 1.0),
-                    Catch::Contains("not monotone in u near the operating point for every state of the plays"));
+  CHECK_THROWS_WITH(
+      PrandtlIshlinskiiInverse<double>(
+          bonl::PrandtlIshlinskiiInput<double>(vec({0.0, 0.1}), vec({0.2, 0.5}), vec({0.3, -0.2})), -1.0, 1.0),
+      Catch::Contains("not monotone in u near the operating point for every state of the plays"));
   // w = u^2 + 0.1 play: rises on one side of 0 and falls on the other.
   CHECK_THROWS_WITH(PrandtlIshlinskiiInverse<double>(
-                        bonl::PrandtlIshlinskiiInput<double>(vec({0.0, 0.0, 1.0}), vec({0.2}), vec({0.1})), -1.0,
-                        1.0),
+                        bonl::PrandtlIshlinskiiInput<double>(vec({0.0, 0.0, 1.0}), vec({0.2}), vec({0.1})), -1.0, 1.0),
                     Catch::Contains("not monotone in u"));
   CHECK_THROWS_WITH(PrandtlIshlinskiiInverse<double>(
                         bonl::PrandtlIshlinskiiInput<double>(vec({0.5, 0.0}), vec({0.2}), vec({0.0})), -1.0, 1.0),

@@ -70,7 +70,8 @@ void check_exact(const Model& model, const Eigen::VectorXd& u_true, const Invers
   CHECK(inverse.minimum_phase());
   CHECK(inverse.preview() == model.nk());
   const auto run = inverse.commands(reference);
-  CHECK(count_not_exact(run.status, static_cast<std::size_t>(settle), effective(reference.size(), inverse.preview())) == 0);
+  CHECK(count_not_exact(run.status, static_cast<std::size_t>(settle), effective(reference.size(), inverse.preview())) ==
+        0);
   const double error = tracking_error(model, run.command, reference, model.nk() + settle);
   INFO("max |model(inverse(r)) - r| = " << error);
   CHECK(error <= 1e-9);
@@ -345,7 +346,8 @@ TEST_CASE("the Prandtl-Ishlinskii Hammerstein inverse follows a reference that r
     const auto model = hysteretic_valve(sign);
     check_exact(model, u_true, range(-1.0, 1.0));
     // The map is strictly monotone, so the inverse recovers the command that made the reference.
-    const auto run = InverseModel<bonl::PrandtlIshlinskiiHammersteind>(model, range(-1.0, 1.0)).commands(model.simulate(u_true));
+    const auto run =
+        InverseModel<bonl::PrandtlIshlinskiiHammersteind>(model, range(-1.0, 1.0)).commands(model.simulate(u_true));
     const Eigen::Index n = u_true.size() - model.nk();
     const double worst = (run.command.head(n) - u_true.head(n)).cwiseAbs().maxCoeff();
     INFO("max |u - u_true| = " << worst);

@@ -32,7 +32,8 @@ TEST_CASE("input_levels_needed is r + 1 per polynomial segment and two for every
 TEMPLATE_LIST_TEST_CASE("a constant input cannot excite any model, random levels excite every one", "[excitation]",
                         bonl::Models) {
   const TestType structure = bonl_test::known_system<TestType>("small");
-  const Eigen::VectorXd constant = Eigen::VectorXd::Constant(400, 0.5), levels = bonl::signals::random_levels(400, 5, 1.0, 7);
+  const Eigen::VectorXd constant = Eigen::VectorXd::Constant(400, 0.5),
+                        levels = bonl::signals::random_levels(400, 5, 1.0, 7);
   const Eigen::VectorXd y = Eigen::VectorXd::Zero(400);
   const std::string shortfall = bonl::excitation_shortfall(structure, bonl::CheckedRecords<double>(constant, y, 0));
   CHECK(shortfall == std::string("the input takes 1 value (it is constant) but a ") + TestType::kName +

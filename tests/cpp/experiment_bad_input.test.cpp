@@ -51,12 +51,15 @@ TEST_CASE("P16-P17 the experiment's processing and options reject bad input", "[
       {"P16 differentiate ts 0", [] { experiment::differentiate(Eigen::Vector2d(1.0, 2.0), 0.0); },
        "differentiate: ts must be finite and > 0"},
       // Before: NaN derivatives, silently.
-      {"P16 differentiate NaN sample", [&] { experiment::differentiate(x, 0.01); }, "x has a non-finite value at index 2"},
+      {"P16 differentiate NaN sample", [&] { experiment::differentiate(x, 0.01); },
+       "x has a non-finite value at index 2"},
       {"P17 duration 0", [&] { measure_with([](auto& o) { o.duration = 0.0; }); }, "experiment: duration must be > 0"},
       {"P17 sample_time NaN", [&] { measure_with([](auto& o) { o.sample_time = kNaN; }); },
        "experiment: sample_time must be > 0"},
-      {"P17 repeats 0", [&] { measure_with([](auto& o) { o.repeats = 0; }); }, "experiment: repeats must be >= 1, got 0"},
-      {"P17 cutoff -1", [&] { measure_with([](auto& o) { o.cutoff_hz = -1.0; }); }, "experiment: cutoff_hz must be > 0"},
+      {"P17 repeats 0", [&] { measure_with([](auto& o) { o.repeats = 0; }); },
+       "experiment: repeats must be >= 1, got 0"},
+      {"P17 cutoff -1", [&] { measure_with([](auto& o) { o.cutoff_hz = -1.0; }); },
+       "experiment: cutoff_hz must be > 0"},
       {"P17 tolerances", [&] { measure_with([](auto& o) { o.tolerances.relative = -1.0; }); },
        "tolerances.relative must be > 0 and finite"},
   });

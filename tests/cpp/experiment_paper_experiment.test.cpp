@@ -33,8 +33,8 @@ TEST_CASE("the paper's models, orders and labels come from the models' descripti
   CHECK(proposed.orders() == std::array<Eigen::Index, 5>{3, 2, 8, 3, 0});
   const auto with_q = experiment::paper_model<bonl::HammersteinWienerd>();  // run-time orders: the same values
   CHECK(with_q.orders() == std::array<Eigen::Index, 6>{3, 2, 8, 3, 3, 0});
-  CHECK_THROWS_WITH(experiment::paper_order("nx"), Catch::Matchers::StartsWith("bonl: ") &&
-                                                       Catch::Matchers::Contains("no order 'nx'"));
+  CHECK_THROWS_WITH(experiment::paper_order("nx"),
+                    Catch::Matchers::StartsWith("bonl: ") && Catch::Matchers::Contains("no order 'nx'"));
   // The model beside P-H-W: np as the polynomial's r, the thresholds its default until the data place them.
   const auto plays = experiment::paper_model<bonl::PrandtlIshlinskiiHammersteind>();
   CHECK(plays.orders() == std::array<Eigen::Index, 6>{3, 2, 8, 3, experiment::paper_order("r"), 0});
@@ -48,8 +48,8 @@ TEST_CASE("the paper's models, orders and labels come from the models' descripti
   // Table 1's rows: a and q are numbered from 1, b, f and p from 0, c is one number.
   std::set<std::string> labels;
   for (const auto& [label, value] : experiment::labelled_parameters(proposed)) labels.insert(label);
-  CHECK(labels == std::set<std::string>{"b0", "b1", "b2", "a1", "a2", "a3", "f0", "f1", "f2", "f3",
-                                        "p0", "p1", "p2", "p3", "c"});
+  CHECK(labels ==
+        std::set<std::string>{"b0", "b1", "b2", "a1", "a2", "a3", "f0", "f1", "f2", "f3", "p0", "p1", "p2", "p3", "c"});
   const auto with_q_rows = experiment::labelled_parameters(with_q);
   CHECK(with_q_rows.back().first == "q3");
   CHECK(with_q_rows.back().second == with_q.q()[2]);
@@ -85,11 +85,13 @@ TEST_CASE("the default experiment: records, end stops, and the paper's ranking",
   // The Prandtl-Ishlinskii Hammerstein model's thresholds are the data rule's on the identification
   // input, for both methods and the online estimate alike (the paper method's recursion and the
   // online one never see identify's extra start).
-  const double half_range = (result.records.identification.input.maxCoeff() -
-                             result.records.identification.input.minCoeff()) / 2.0;
-  const Eigen::VectorXd ruled = bonl::PlayOperators<double>::spread_thresholds(experiment::paper_order("np"), half_range);
+  const double half_range =
+      (result.records.identification.input.maxCoeff() - result.records.identification.input.minCoeff()) / 2.0;
+  const Eigen::VectorXd ruled =
+      bonl::PlayOperators<double>::spread_thresholds(experiment::paper_order("np"), half_range);
   // The smallest is wider than the plant's pilot play, in volts beyond the dead band (README).
-  CHECK(ruled[0] > parameters.dead_band + parameters.pilot_hysteresis * (parameters.neutral_voltage - parameters.dead_band));
+  CHECK(ruled[0] >
+        parameters.dead_band + parameters.pilot_hysteresis * (parameters.neutral_voltage - parameters.dead_band));
   for (const experiment::MethodResult& m : result.methods) {
     INFO(bonl::to_string(m.method));
     CHECK(m.get<bonl::PrandtlIshlinskiiHammersteind>().model.thresholds() == ruled);
@@ -124,7 +126,8 @@ TEST_CASE("without pilot hysteresis and pin backlash the identified c is near ze
   parameters.joint_backlash = 0.0;
   const auto records = experiment::acquire(parameters);
   const auto ours = experiment::identify_paper_models(records, Method::OutputError);
-  CHECK(ours.get<bonl::PaperPseudoHammersteinWiener>().model.c() <= 0.01 * standard_deviation(records.validation.velocity));
+  CHECK(ours.get<bonl::PaperPseudoHammersteinWiener>().model.c() <=
+        0.01 * standard_deviation(records.validation.velocity));
 }
 
 TEST_CASE("P-H-W's advantage grows with the pilot hysteresis, and P-I-H's less", "[experiment][slow]") {

@@ -25,7 +25,8 @@ TEST_CASE("P-H-W feedforward tracks with an RMS 40% below PI alone, and below th
   const auto& r = result();
   const double pi = r.run("PI").rms;
   const double phw = r.run("PseudoHammersteinWiener").rms;
-  INFO("PI " << pi << ", P-H-W " << phw << ", Hammerstein " << r.run("Hammerstein").rms << ", ARX " << r.run("ARX").rms);
+  INFO("PI " << pi << ", P-H-W " << phw << ", Hammerstein " << r.run("Hammerstein").rms << ", ARX "
+             << r.run("ARX").rms);
   CHECK(phw <= 0.6 * pi);
   CHECK(phw < r.run("Hammerstein").rms);
   CHECK(phw < r.run("ARX").rms);

@@ -57,7 +57,9 @@ TEST_CASE("the fixed-order and float lists hold every model of bonl::Models, in 
   using FixedFloat = bonl::ModelsWithScalar<bonl::PaperOrderModels, float>::type;
   static_assert(Float::size == bonl::Models::size && FixedFloat::size == bonl::Models::size);
   std::string names, fixed, floats, fixed_floats;
-  const auto append = [](std::string& to) { return [&to](auto tag) { to += decltype(tag)::type::kName + std::string(" "); }; };
+  const auto append = [](std::string& to) {
+    return [&to](auto tag) { to += decltype(tag)::type::kName + std::string(" "); };
+  };
   bonl::for_each_model(bonl::Models{}, append(names));
   bonl::for_each_model(bonl::PaperOrderModels{}, append(fixed));
   bonl::for_each_model(Float{}, append(floats));
@@ -65,9 +67,8 @@ TEST_CASE("the fixed-order and float lists hold every model of bonl::Models, in 
   CHECK(fixed == names);
   CHECK(floats == names);
   CHECK(fixed_floats == names);
-  bonl::for_each_model(FixedFloat{}, [](auto tag) {
-    static_assert(std::is_same_v<typename decltype(tag)::type::Scalar, float>);
-  });
+  bonl::for_each_model(FixedFloat{},
+                       [](auto tag) { static_assert(std::is_same_v<typename decltype(tag)::type::Scalar, float>); });
 }
 
 TEMPLATE_LIST_TEST_CASE("a fixed-order model takes the table's orders, and its other orders stay run-time",
@@ -80,13 +81,13 @@ TEMPLATE_LIST_TEST_CASE("a fixed-order model takes the table's orders, and its o
     // the plays at their minimum (np is not in the table: none in the nonlinear-feedback model, one in
     // the Prandtl-Ishlinskii Hammerstein model).
     const std::string name = orders[i].name;
-    const Eigen::Index expected = name == "na" || name == "na1" || name == "na2" ? 3
+    const Eigen::Index expected = name == "na" || name == "na1" || name == "na2"   ? 3
                                   : name == "nb" || name == "nb1" || name == "nb2" ? 2
-                                  : name == "r" || name == "r1"                   ? 3
-                                  : name == "nh"                                  ? 0
-                                  : name == "nd"                                  ? 2
-                                  : name == "np"                                  ? orders[i].minimum
-                                                                                  : -1;
+                                  : name == "r" || name == "r1"                    ? 3
+                                  : name == "nh"                                   ? 0
+                                  : name == "nd"                                   ? 2
+                                  : name == "np"                                   ? orders[i].minimum
+                                                                                   : -1;
     // The others (the delay nk, ...) never are template parameters.
     CHECK(orders[i].fixed == (expected < 0 ? Eigen::Dynamic : expected));
     values[i] = expected < 0 ? orders[i].minimum : expected;

@@ -40,9 +40,8 @@ TEST_CASE("the trace ceiling holds with a tiny forgetting factor", "[fuzz]") {
   bonl::EstimatorOptions options;  // the default ceiling: trace(P) <= trace_ceiling * 6 * p0
   options.forgetting = bonl::ForgettingSchedule::constant(1e-20);
   bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1), options);
-  const double samples[][2] = {{0.75, 2},      {-1.25, 0.25}, {0.25, 0.75},   {-0.75, -2},
-                               {1, -1.75},     {-1, -1.75},   {-1.75, 1.25},  {0.25, -0.75},
-                               {-1.25, -1.5},  {0.75, -1.5},  {1.25, -1.75},  {0.75, 0}};
+  const double samples[][2] = {{0.75, 2},     {-1.25, 0.25}, {0.25, 0.75},  {-0.75, -2},  {1, -1.75},    {-1, -1.75},
+                               {-1.75, 1.25}, {0.25, -0.75}, {-1.25, -1.5}, {0.75, -1.5}, {1.25, -1.75}, {0.75, 0}};
   const double ceiling = options.resolved_trace_ceiling() * 6.0 * options.resolved_p0();
   for (const auto& sample : samples) {
     const bonl::UpdateStatus status = estimator.update(sample[0], sample[1]);
@@ -64,10 +63,10 @@ TEST_CASE("a denormal forgetting factor without a ceiling never makes P non-fini
   options.trace_ceiling = std::numeric_limits<double>::infinity();
   options.p0 = 1e-3;
   bonl::Estimator<bonl::PaperARX> estimator(bonl::PaperARX(3, 2, 1), options);
-  estimator.update(0.5, 0.25);  // phi = 0: refused, since 1 / (lambda + 0) overflows
+  estimator.update(0.5, 0.25);                                    // phi = 0: refused, since 1 / (lambda + 0) overflows
   const bonl::UpdateStatus status = estimator.update(0.5, 0.25);  // phi = (0.5, 0, 0, -0.25, 0, 0)
-  INFO("status " << static_cast<int>(status) << ", P(0, 0) = " << estimator.covariance()(0, 0) << ", P(0, 1) = "
-                 << estimator.covariance()(0, 1));
+  INFO("status " << static_cast<int>(status) << ", P(0, 0) = " << estimator.covariance()(0, 0)
+                 << ", P(0, 1) = " << estimator.covariance()(0, 1));
   CHECK(estimator.covariance().allFinite());
   CHECK(status == bonl::UpdateStatus::NumericalFailure);
 }

@@ -66,7 +66,8 @@ Outcome identify_known(const Model& truth, Input input, double eta, bonl::Method
 
 }  // namespace
 
-TEMPLATE_LIST_TEST_CASE("output-error and equation-error identification recover a noise-free known system", "[identify]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("output-error and equation-error identification recover a noise-free known system",
+                        "[identify]", bonl::Models) {
   const TestType truth = known<TestType>();
   for (bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError}) {
     for (Input input : {Input::RandomLevels, Input::MultiSine}) {
@@ -78,7 +79,9 @@ TEMPLATE_LIST_TEST_CASE("output-error and equation-error identification recover 
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("with output noise output-error and equation-error identification stay within their bounds and beat the paper's", "[identify]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE(
+    "with output noise output-error and equation-error identification stay within their bounds and beat the paper's",
+    "[identify]", bonl::Models) {
   const TestType truth = known<TestType>();
   for (Input input : {Input::RandomLevels, Input::MultiSine}) {
     for (double eta : {0.01, 0.05}) {
@@ -128,7 +131,8 @@ TEST_CASE("run-time sizes identify the same model as compile-time sizes", "[iden
   // started from P(0) = 1e6 I, amplified it to 1.2e-9).
   bonl::IdentifyOptions recursive;
   recursive.refine_iterations = 0;
-  CHECK(near(bonl::identify(dynamic_truth, u, y, recursive).theta(), bonl::identify(truth, u, y, recursive).theta(), 1e-10));
+  CHECK(near(bonl::identify(dynamic_truth, u, y, recursive).theta(), bonl::identify(truth, u, y, recursive).theta(),
+             1e-10));
   // The refinement stops when a step improves the cost by less than a relative 1e-10, which the two
   // paths can reach one iteration apart: measured 4.9e-7 in theta and 9.5e-9 in the outputs (of a
   // spread of about 0.5).
@@ -148,7 +152,8 @@ TEST_CASE("more passes of the recursive stage still recover the noise-free syste
   CHECK(near(fitted.theta(), truth.theta(), 1e-6));
 }
 
-TEMPLATE_LIST_TEST_CASE("the output-error and equation-error recursions started at the truth stay there", "[identify]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("the output-error and equation-error recursions started at the truth stay there", "[identify]",
+                        bonl::Models) {
   // Equation error: with p0 = 1e6 the first updates have huge gains; internal variables computed
   // from the running estimate would feed round-off back into the regressor (it drifted 0.08 from the
   // truth within 50 samples). The method computes them from a copy refreshed every 100 samples.
@@ -171,7 +176,8 @@ TEMPLATE_LIST_TEST_CASE("the output-error and equation-error recursions started 
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("several records identify one model, each record from rest", "[identify][records]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("several records identify one model, each record from rest", "[identify][records]",
+                        bonl::Models) {
   // Two records of a known system, each simulated from rest: identification over both recovers it
   // (fresh validation input), and the identified model simulates each record from rest. The same
   // samples joined into one record would carry the first record's end into the second's start,
@@ -192,7 +198,8 @@ TEMPLATE_LIST_TEST_CASE("several records identify one model, each record from re
   CHECK(bonl::metrics::nrmse(y2, fitted.simulate(u2)) <= 1e-6);
 }
 
-TEMPLATE_LIST_TEST_CASE("one record given as records identifies exactly as (u, y)", "[identify][records]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("one record given as records identifies exactly as (u, y)", "[identify][records]",
+                        bonl::Models) {
   const TestType truth = known<TestType>();
   const Eigen::VectorXd u = identification_input(Input::RandomLevels);
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 5);

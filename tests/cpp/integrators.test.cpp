@@ -57,7 +57,8 @@ Model rebuilt(const Model& model, Change&& change, const Eigen::VectorXd& denomi
 template <class Model>
 Model with_integrators(const Model& model, Eigen::Index ni) {
   const std::size_t a = last_starting_with(Model::kDescription.parameters, "a");
-  return rebuilt(model, [ni](auto& orders) { orders.back() = ni; }, model.parameter(a));
+  return rebuilt(
+      model, [ni](auto& orders) { orders.back() = ni; }, model.parameter(a));
 }
 
 /// The oracle: no integrators, the denominator A (1 - q^-1)^ni multiplied out by convolution.
@@ -199,10 +200,12 @@ TEMPLATE_LIST_TEST_CASE("a model file keeps the integrators, and a file without 
 
   auto orders = model.orders();
   orders.back() = 3;
-  CHECK_THROWS_WITH(bonl::make_model<Model>(orders), Catch::Matchers::Contains("ni (integrators, poles fixed at 1) must be 0, 1 or 2, got 3"));
+  CHECK_THROWS_WITH(bonl::make_model<Model>(orders),
+                    Catch::Matchers::Contains("ni (integrators, poles fixed at 1) must be 0, 1 or 2, got 3"));
   std::string bad = text;
   bad.replace(bad.find("\"ni\":1"), 6, "\"ni\":3");
-  CHECK_THROWS_WITH(bonl::io::model_from_json<Model>(bad), Catch::Matchers::Contains("orders.ni must be between 0 and 2"));
+  CHECK_THROWS_WITH(bonl::io::model_from_json<Model>(bad),
+                    Catch::Matchers::Contains("orders.ni must be between 0 and 2"));
 }
 
 TEST_CASE("an integrating model follows its reference through the control inverse", "[integrators][control]") {
@@ -224,8 +227,8 @@ TEST_CASE("an integrating model follows its reference through the control invers
   check(integrating_system<bonl::Wienerd>(1), {});
 }
 
-TEMPLATE_LIST_TEST_CASE("identify recovers the models with an integrator from noise-free data", "[integrators][identify]",
-                        bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("identify recovers the models with an integrator from noise-free data",
+                        "[integrators][identify]", bonl::Models) {
   using Model = TestType;
   const Model truth = integrating_system<Model>(1);
   INFO(Model::kName);

@@ -5,8 +5,8 @@
 using namespace bonl_test;
 
 TEST_CASE("mse, rmse, nrmse and fit on a hand-computed example", "[metrics]") {
-  const Eigen::VectorXd y = vec({1.0, 2.0, 3.0, 4.0});       // mean 2.5, ||y - mean|| = sqrt(5)
-  const Eigen::VectorXd yhat = vec({1.0, 2.5, 2.0, 4.0});    // errors 0, -0.5, 1, 0: sum sq 1.25
+  const Eigen::VectorXd y = vec({1.0, 2.0, 3.0, 4.0});     // mean 2.5, ||y - mean|| = sqrt(5)
+  const Eigen::VectorXd yhat = vec({1.0, 2.5, 2.0, 4.0});  // errors 0, -0.5, 1, 0: sum sq 1.25
   CHECK(bonl::metrics::mse(y, yhat) == Approx(1.25 / 4.0));
   CHECK(bonl::metrics::rmse(y, yhat) == Approx(std::sqrt(1.25 / 4.0)));
   CHECK(bonl::metrics::nrmse(y, yhat) == Approx(std::sqrt(1.25) / std::sqrt(5.0)));

@@ -168,11 +168,10 @@ TEST_CASE("the format, pinned: exact text of small models", "[io]") {
   hw.set_b(vec({1.0, 0.5}));
   hw.set_a(vec({-0.5}));
   hw.set_q(vec({1.0, 0.1}));
-  CHECK(bonl::io::to_json(hw) ==
-        R"({"format":"bonl-model","version":2,"model":"HammersteinWiener",)"
-        R"("orders":{"na":1,"nb":1,"nk":0,"r":1,"r1":2},)"
-        R"("params":{"b":[1.0,0.5],"a":[-0.5],"f":[0.5,-0.25],"p":[0.0,0.125],"q":[1.0,0.1]},)"
-        R"("operating_point":{"u0":0.0,"y0":0.0},"input_range":[null,null]})");
+  CHECK(bonl::io::to_json(hw) == R"({"format":"bonl-model","version":2,"model":"HammersteinWiener",)"
+                                 R"("orders":{"na":1,"nb":1,"nk":0,"r":1,"r1":2},)"
+                                 R"("params":{"b":[1.0,0.5],"a":[-0.5],"f":[0.5,-0.25],"p":[0.0,0.125],"q":[1.0,0.1]},)"
+                                 R"("operating_point":{"u0":0.0,"y0":0.0},"input_range":[null,null]})");
 
   bonl::ARX<double, 1, 0> arx(1, 0, 3);
   arx.set_b(vec({0.2}));
@@ -212,11 +211,10 @@ TEST_CASE("the format, pinned: exact text of small models", "[io]") {
   phw.set_p(vec({0.0, -1.0}));
   phw.set_a(vec({-0.5}));
   phw.set_c(0.25);
-  CHECK(bonl::io::to_json(phw) ==
-        R"({"format":"bonl-model","version":2,"model":"PseudoHammersteinWiener",)"
-        R"("orders":{"na":1,"nb":0,"nk":1,"r":1},)"
-        R"("params":{"b":[1.0],"a":[-0.5],"f":[0.0,2.0],"p":[0.0,-1.0],"c":0.25},)"
-        R"("operating_point":{"u0":0.0,"y0":0.0},"input_range":[null,null]})");
+  CHECK(bonl::io::to_json(phw) == R"({"format":"bonl-model","version":2,"model":"PseudoHammersteinWiener",)"
+                                  R"("orders":{"na":1,"nb":0,"nk":1,"r":1},)"
+                                  R"("params":{"b":[1.0],"a":[-0.5],"f":[0.0,2.0],"p":[0.0,-1.0],"c":0.25},)"
+                                  R"("operating_point":{"u0":0.0,"y0":0.0},"input_range":[null,null]})");
 
   bonl::Hammersteind h(1, 0, 0, 1);
   h.set_f(vec({0.0, 1.0}));
@@ -236,8 +234,8 @@ TEST_CASE("version 1 files, written before the operating point, still load, at t
   CHECK(model.y0() == 0.0);
   CHECK(model.f() == vec({0.0, 1.0}));
   // A version 1 file with an operating point is not a version 1 file.
-  CHECK_THROWS_WITH(bonl::io::model_from_json<bonl::Hammersteind>(
-                        version_1.substr(0, version_1.size() - 1) + R"(,"operating_point":{"u0":0.0,"y0":0.0}})"),
+  CHECK_THROWS_WITH(bonl::io::model_from_json<bonl::Hammersteind>(version_1.substr(0, version_1.size() - 1) +
+                                                                  R"(,"operating_point":{"u0":0.0,"y0":0.0}})"),
                     Catch::Matchers::Contains("unknown key operating_point"));
 }
 
@@ -249,9 +247,10 @@ TEST_CASE("the operating point is written and read back bit for bit", "[io]") {
   CHECK(back.y0() == model.y0());
   const Eigen::VectorXd u = bonl::signals::random_levels(300, 5, 1.0, 3);
   CHECK(back.simulate(u) == model.simulate(u));
-  CHECK_THROWS_WITH(bonl::io::model_from_json<bonl::Wienerd>(
-                        std::string(bonl::io::to_json(model)).replace(bonl::io::to_json(model).find("\"y0\""), 4, "\"y1\"")),
-                    Catch::Matchers::Contains("operating_point"));
+  CHECK_THROWS_WITH(
+      bonl::io::model_from_json<bonl::Wienerd>(
+          std::string(bonl::io::to_json(model)).replace(bonl::io::to_json(model).find("\"y0\""), 4, "\"y1\"")),
+      Catch::Matchers::Contains("operating_point"));
 }
 
 TEST_CASE("the shared fixture tests/data/phw_model.json loads", "[io]") {
@@ -323,14 +322,16 @@ TEST_CASE("bad files are rejected with a message naming the problem", "[io]") {
                                        "model is \"PseudoHammersteinWiener\", but the model type asked for is "
                                        "\"Hammerstein\"",
                                        false);
-    check_rejected<bonl::PaperARX>(bonl::io::to_json(known_hammerstein_wiener()), "but the model type asked for is \"ARX\"",
-                                   false);
+    check_rejected<bonl::PaperARX>(bonl::io::to_json(known_hammerstein_wiener()),
+                                   "but the model type asked for is \"ARX\"", false);
     check_rejected(R"({"format": "bonl-model", "version": 1, "version": 1})", "key \"version\" appears more than once");
-    check_rejected(std::string(good).insert(1, "\"x\": {\"a\": 1, \"a\": 2}, "),
-                   "key \"a\" appears more than once");
+    check_rejected(std::string(good).insert(1, "\"x\": {\"a\": 1, \"a\": 2}, "), "key \"a\" appears more than once");
   }
   SECTION("orders") {
-    check_rejected(edited(good, [](Json& d) { d["orders"] = Json::array({3, 2, 8, 3}); }),
+    check_rejected(edited(good,
+                          [](Json& d) {
+                            d["orders"] = Json::array({3, 2, 8, 3});
+                          }),
                    "orders must be an object, got [3,2,8,3]");
     check_rejected(edited(good, [](Json& d) { d["orders"].erase("r"); }), "missing key orders.r");
     check_rejected(edited(good, [](Json& d) { d["orders"]["r1"] = 3; }), "unknown key orders.r1");
@@ -357,14 +358,14 @@ TEST_CASE("bad files are rejected with a message naming the problem", "[io]") {
         "orders.r1 must be between 2 and 32, got 1");
     // Orders that disagree with the type's compile-time orders.
     check_rejected<bonl::PaperPseudoHammersteinWiener>(
-        edited(good, [](Json& d) {
-          d["orders"]["na"] = 2;
-          d["params"]["a"] = Json::array({-1.0, 0.3});
-        }),
+        edited(good,
+               [](Json& d) {
+                 d["orders"]["na"] = 2;
+                 d["params"]["a"] = Json::array({-1.0, 0.3});
+               }),
         "orders.na = 2 does not match the model type's compile-time order 3", false);
-    check_rejected<bonl::ARX<double, 3, 1>>(bonl::io::to_json(known_arx()),
-                                            "orders.nb = 2 does not match the model type's compile-time order 1",
-                                            false);
+    check_rejected<bonl::ARX<double, 3, 1>>(
+        bonl::io::to_json(known_arx()), "orders.nb = 2 does not match the model type's compile-time order 1", false);
     check_rejected<bonl::PseudoHammersteinWiener<double, 3, 2, 2>>(
         good, "orders.r = 3 does not match the model type's compile-time order 2", false);
     check_rejected<bonl::HammersteinWiener<double, 3, 2, 3, 4>>(
@@ -379,19 +380,25 @@ TEST_CASE("bad files are rejected with a message naming the problem", "[io]") {
     check_rejected(edited(good, [](Json& d) { d["params"]["f"].erase(3); }), "params.f must have 4 entries, got 3");
     check_rejected(edited(good, [](Json& d) { d["params"]["p"].push_back(0.0); }),
                    "params.p must have 4 entries, got 5");
-    check_rejected(edited(good, [](Json& d) { d["params"]["b"] = Json::array({1.0, 0.5}); }),
+    check_rejected(edited(good,
+                          [](Json& d) {
+                            d["params"]["b"] = Json::array({1.0, 0.5});
+                          }),
                    "params.b must have 3 entries, got 2");
     check_rejected(edited(good, [](Json& d) { d["params"]["a"] = Json::array(); }),
                    "params.a must have 3 entries, got 0");
-    check_rejected(edited(good, [](Json& d) { d["params"]["a"] = 0.5; }), "params.a must be an array of numbers, got 0.5");
+    check_rejected(edited(good, [](Json& d) { d["params"]["a"] = 0.5; }),
+                   "params.a must be an array of numbers, got 0.5");
     check_rejected(edited(good, [](Json& d) { d["params"]["a"][1] = "1.04"; }),
                    "params.a[1] must be a number, got \"1.04\"");
-    check_rejected(edited(good, [](Json& d) { d["params"]["f"][2] = nullptr; }), "params.f[2] must be a number, got null");
+    check_rejected(edited(good, [](Json& d) { d["params"]["f"][2] = nullptr; }),
+                   "params.f[2] must be a number, got null");
     check_rejected(edited(good, [](Json& d) { d["params"]["f"][2] = true; }), "params.f[2] must be a number, got true");
     std::string overflow = good;
     overflow.replace(overflow.find("-0.238"), 6, "-1e400");
-    check_rejected(overflow, "a number is out of double's range: [json.exception.out_of_range.406] number overflow "
-                             "parsing '-1e400'");
+    check_rejected(overflow,
+                   "a number is out of double's range: [json.exception.out_of_range.406] number overflow "
+                   "parsing '-1e400'");
     check_rejected(edited(good, [](Json& d) { d["params"]["c"] = -0.1; }),
                    "params.c (backlash half-width) must be >= 0, got -0.1");
     check_rejected(edited(good, [](Json& d) { d["params"]["c"] = "0.1"; }), "params.c must be a number, got \"0.1\"");
@@ -413,12 +420,13 @@ TEST_CASE("bad files are rejected with a message naming the problem", "[io]") {
     check_rejected<bonl::HammersteinWienerd>(edited(hw, [](Json& d) { d["params"]["q"].erase(2); }),
                                              "params.q must have 3 entries, got 2");
     // Integers are numbers too: b_0 written as 1 reads as 1.0.
-    CHECK_NOTHROW(bonl::io::model_from_json<bonl::HammersteinWienerd>(
-        edited(hw, [](Json& d) { d["params"]["b"][0] = 1; })));
+    CHECK_NOTHROW(
+        bonl::io::model_from_json<bonl::HammersteinWienerd>(edited(hw, [](Json& d) { d["params"]["b"][0] = 1; })));
     CHECK(bonl::io::model_from_json<bonl::ARXd>(bonl::io::to_json(known_arx())).b()[0] == 0.05);
   }
   SECTION("a float model rejects a value beyond float's range") {
     check_rejected<bonl::PseudoHammersteinWiener<float>>(edited(good, [](Json& d) { d["params"]["a"][0] = 1e300; }),
-                                                         "params.a[0] = 1e+300 is out of the model's Scalar range", false);
+                                                         "params.a[0] = 1e+300 is out of the model's Scalar range",
+                                                         false);
   }
 }

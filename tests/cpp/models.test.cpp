@@ -7,8 +7,8 @@ using namespace bonl_test;
 
 TEST_CASE("theta follows eq. (19): f, p, b_1..b_nb, a, then q_2.. or c", "[models]") {
   const bonl::PaperPseudoHammersteinWiener phw = known_phw();
-  const Eigen::VectorXd expected = vec({0.002, 0.06, 0.02, -0.01, -0.003, -0.02, -0.03, 0.015, 0.5, 0.2, -1.7, 1.04,
-                                        -0.238, 0.1});
+  const Eigen::VectorXd expected =
+      vec({0.002, 0.06, 0.02, -0.01, -0.003, -0.02, -0.03, 0.015, 0.5, 0.2, -1.7, 1.04, -0.238, 0.1});
   CHECK(phw.theta() == expected);
   CHECK(phw.f() == expected.head(4));
   CHECK(phw.p() == expected.segment(4, 4));

@@ -89,8 +89,8 @@ Model structure_of(const Model& truth) {
 }  // namespace
 
 TEST_CASE("the nonlinear-feedback free run is the difference equation written out", "[nonlinear_feedback]") {
-  for (const Model& m : {known_system<Model>(), known_system<Model>("small"), friction_feedback(), friction_drive_position(),
-                         hysteretic_feedback()}) {
+  for (const Model& m : {known_system<Model>(), known_system<Model>("small"), friction_feedback(),
+                         friction_drive_position(), hysteretic_feedback()}) {
     INFO("nv = " << m.nv() << ", nh = " << m.nh());
     const Eigen::VectorXd u = bonl::signals::random_levels(500, 5, 1.0, 5);
     const Eigen::VectorXd expected = by_hand(m, u);
@@ -161,7 +161,8 @@ TEST_CASE("identify recovers the nonlinear-feedback known systems, noise-free an
     const Model noisy = bonl::identify(structure_of(truth), u, Eigen::VectorXd(y + noise));
     const Eigen::VectorXd fresh_noise = bonl::signals::white_noise(fresh.size(), sigma, 12);
     const Eigen::VectorXd simulated = noisy.simulate(fresh);
-    const double error_to_measured = std::sqrt((y_fresh + fresh_noise - simulated).squaredNorm() / double(fresh.size()));
+    const double error_to_measured =
+        std::sqrt((y_fresh + fresh_noise - simulated).squaredNorm() / double(fresh.size()));
     const double error_to_truth = std::sqrt((y_fresh - simulated).squaredNorm() / double(fresh.size()));
     const double noise_rms = std::sqrt(fresh_noise.squaredNorm() / double(fresh.size()));
     INFO("noise RMS " << noise_rms << ", error to the measured " << error_to_measured << ", to the truth "
@@ -217,10 +218,15 @@ TEST_CASE("identify's open-loop start is the records' best linear approximation 
     REQUIRE(starts.size() == (truth.ni() == 1 ? 2U : 1U));
     const Model& open = starts.front();
     // The oracle: an output-error ARX identified with the same orders, delay and integrators.
-    const bonl::ARXd linear = bonl::refine_output_error(
-        bonl::identify(bonl::ARXd(truth.na(), truth.nb(), truth.nk(), truth.ni()), u, y,
-                       [] { bonl::IdentifyOptions o; o.method = bonl::Method::EquationError; o.refine_iterations = 0; return o; }()),
-        u, y);
+    const bonl::ARXd linear =
+        bonl::refine_output_error(bonl::identify(bonl::ARXd(truth.na(), truth.nb(), truth.nk(), truth.ni()), u, y,
+                                                 [] {
+                                                   bonl::IdentifyOptions o;
+                                                   o.method = bonl::Method::EquationError;
+                                                   o.refine_iterations = 0;
+                                                   return o;
+                                                 }()),
+                                  u, y);
     CHECK(open.b().isApprox(linear.b(), 1e-12));
     CHECK(open.a().isApprox(linear.a(), 1e-12));
     CHECK(open.f().isZero(0.0));

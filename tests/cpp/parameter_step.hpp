@@ -2,7 +2,8 @@
 // The parameter step of the tracking tests (issue 16): the input gain +30% and the backlash
 // half-width doubled. Chosen by the parameter blocks' names (models/model_description.hpp), so it
 // works for every model: the input polynomial f, p where the model has one, else the numerator b (b1);
-// c where there is a backlash. The Wiener-Hammerstein model's gain is b1. Used by tests/cpp and examples/online_accuracy.
+// c where there is a backlash. The Wiener-Hammerstein model's gain is b1. Used by tests/cpp and
+// examples/online_accuracy.
 
 #include <cstddef>
 #include <string>

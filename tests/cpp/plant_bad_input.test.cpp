@@ -106,26 +106,33 @@ TEST_CASE("P5-P11 simulate rejects bad options and commands, naming them", "[bad
   check_cases<std::invalid_argument>({
       {"P5 duration 0", [] { simulate_with_options([](auto& o) { o.duration = 0.0; }); },
        "bonl: simulate: duration must be > 0 and finite, got 0"},
-      {"P5 duration -1", [] { simulate_with_options([](auto& o) { o.duration = -1.0; }); }, "duration must be > 0 and finite"},
-      {"P5 duration NaN", [] { simulate_with_options([](auto& o) { o.duration = kNaN; }); }, "duration must be > 0 and finite"},
-      {"P5 duration inf", [] { simulate_with_options([](auto& o) { o.duration = kInf; }); }, "duration must be > 0 and finite"},
+      {"P5 duration -1", [] { simulate_with_options([](auto& o) { o.duration = -1.0; }); },
+       "duration must be > 0 and finite"},
+      {"P5 duration NaN", [] { simulate_with_options([](auto& o) { o.duration = kNaN; }); },
+       "duration must be > 0 and finite"},
+      {"P5 duration inf", [] { simulate_with_options([](auto& o) { o.duration = kInf; }); },
+       "duration must be > 0 and finite"},
       {"P5 duration 0.015", [] { simulate_with_options([](auto& o) { o.duration = 0.015; }); },
        "duration must be an integer multiple of sample_time"},
-      {"P6 sample_time 0", [] { simulate_with_options([](auto& o) { o.sample_time = 0.0; }); }, "sample_time must be > 0 and finite"},
+      {"P6 sample_time 0", [] { simulate_with_options([](auto& o) { o.sample_time = 0.0; }); },
+       "sample_time must be > 0 and finite"},
       {"P6 sample_time NaN", [] { simulate_with_options([](auto& o) { o.sample_time = kNaN; }); },
        "sample_time must be > 0 and finite"},
       {"P6 sample_time off the command grid", [] { simulate_with_options([](auto& o) { o.sample_time = 0.0015; }); },
        "sample_time must be an integer multiple of 1 / command_rate"},
       {"P6 sample_time > duration", [] { simulate_with_options([](auto& o) { o.sample_time = 0.1; }); },
        "duration must be an integer multiple of sample_time"},
-      {"P7 command_rate 0", [] { simulate_with_options([](auto& o) { o.command_rate = 0.0; }); }, "command_rate must be > 0 and finite"},
+      {"P7 command_rate 0", [] { simulate_with_options([](auto& o) { o.command_rate = 0.0; }); },
+       "command_rate must be > 0 and finite"},
       {"P7 command_rate -inf", [] { simulate_with_options([](auto& o) { o.command_rate = -kInf; }); },
        "command_rate must be > 0 and finite"},
       {"P8 relative tolerance 0", [] { simulate_with_options([](auto& o) { o.tolerances.relative = 0.0; }); },
        "tolerances.relative must be > 0 and finite"},
-      {"P8 position tolerance NaN", [] { simulate_with_options([](auto& o) { o.tolerances.absolute_position = kNaN; }); },
+      {"P8 position tolerance NaN",
+       [] { simulate_with_options([](auto& o) { o.tolerances.absolute_position = kNaN; }); },
        "tolerances.absolute_position must be > 0 and finite"},
-      {"P8 pressure tolerance -1", [] { simulate_with_options([](auto& o) { o.tolerances.absolute_pressure = -1.0; }); },
+      {"P8 pressure tolerance -1",
+       [] { simulate_with_options([](auto& o) { o.tolerances.absolute_pressure = -1.0; }); },
        "tolerances.absolute_pressure must be > 0 and finite"},
       {"P8 relative tolerance 1", [] { simulate_with_options([](auto& o) { o.tolerances.relative = 1.0; }); },
        "tolerances.relative must be < 1, got 1"},
@@ -142,16 +149,21 @@ TEST_CASE("P5-P11 simulate rejects bad options and commands, naming them", "[bad
          });
        },
        "command intervals (duration * command_rate); at most"},
-      {"P8 max_steps_per_interval 0", [] { simulate_with_options([](auto& o) { o.tolerances.max_steps_per_interval = 0; }); },
+      {"P8 max_steps_per_interval 0",
+       [] { simulate_with_options([](auto& o) { o.tolerances.max_steps_per_interval = 0; }); },
        "tolerances.max_steps_per_interval must be >= 1"},
       {"P9 initial_position NaN", [] { simulate_with_options([](auto& o) { o.initial_position = kNaN; }); },
        "initial_position must be finite and <= stroke"},
-      {"P9 initial_position beyond the stroke", [] { simulate_with_options([](auto& o) { o.initial_position = 1.6; }); },
+      {"P9 initial_position beyond the stroke",
+       [] { simulate_with_options([](auto& o) { o.initial_position = 1.6; }); },
        "initial_position must be finite and <= stroke (1.5 m)"},
       {"P10 empty command", [] { plant::simulate(plant::Parameters{}, plant::Command{}, short_run()); },
        "bonl: simulate: command must not be empty"},
       {"P11 command NaN after 0.02 s",
-       [] { plant::simulate(plant::Parameters{}, [](double t) { return t < 0.02 ? 2.5 : kNaN; }, short_run()); },
+       [] {
+         plant::simulate(
+             plant::Parameters{}, [](double t) { return t < 0.02 ? 2.5 : kNaN; }, short_run());
+       },
        "the command is not finite at t = 0.02"},
       {"P11 load inf", [] { simulate_with_options([](auto& o) { o.load = [](double) { return kInf; }; }); },
        "the load is not finite at t = 0 s, got inf"},
@@ -203,7 +215,8 @@ TEST_CASE("P22 SteppingPlant rejects what simulate rejects, with simulate's mess
          options.sample_time = 1e6;
          plant::SteppingPlant(plant::Parameters{}, options);
        },
-       "bonl: SteppingPlant: sample_time gives 1e+09 command intervals per sample (sample_time * command_rate); at most 1e+08"},
+       "bonl: SteppingPlant: sample_time gives 1e+09 command intervals per sample (sample_time * command_rate); at "
+       "most 1e+08"},
   });
   // The duration is not the stepping plant's: any value is ignored.
   plant::SimulationOptions options;
@@ -228,8 +241,10 @@ TEST_CASE("P23-P26 SteppingPlant refuses bad commands, loads and positions and s
          loaded.step(3.0);
        },
        "bonl: SteppingPlant: the load is not finite at t = 0.015 s, got inf"},
-      {"P26 reset to NaN", [&] { stepping.reset(kNaN, 1); }, "bonl: SteppingPlant: initial_position must be finite and <= stroke"},
-      {"P26 reset beyond the stroke", [&] { stepping.reset(2.0, 1); }, "initial_position must be finite and <= stroke (1.5 m)"},
+      {"P26 reset to NaN", [&] { stepping.reset(kNaN, 1); },
+       "bonl: SteppingPlant: initial_position must be finite and <= stroke"},
+      {"P26 reset beyond the stroke", [&] { stepping.reset(2.0, 1); },
+       "initial_position must be finite and <= stroke (1.5 m)"},
   });
   CHECK(stepping.time() == 0.01);
   plant::SimulationOptions options;
@@ -251,13 +266,22 @@ TEST_CASE("P13-P15 excitation generators reject bad arguments, naming them", "[b
       {"P13 step level NaN", [] { excitation::step(kNaN); }, "bonl: excitation::step: level must be finite"},
       {"P13 step t_step inf", [] { excitation::step(3.0, kInf); }, "step: t_step must be finite"},
       {"P13 multisine no tones", [] { excitation::multisine({}, 0.4); }, "multisine: frequencies_hz must not be empty"},
-      {"P13 multisine negative tone", [] { excitation::multisine({0.1, -1.0}, 0.4); },
+      {"P13 multisine negative tone",
+       [] {
+         excitation::multisine({0.1, -1.0}, 0.4);
+       },
        "frequencies_hz must be finite and >= 0, got -1 at index 1"},
-      {"P13 multisine phases length", [] { excitation::multisine({0.1, 0.2}, 0.4, 2.5, {0.0}); },
+      {"P13 multisine phases length",
+       [] {
+         excitation::multisine({0.1, 0.2}, 0.4, 2.5, {0.0});
+       },
        "phases must be empty or have as many entries as frequencies_hz (2), got 1"},
-      {"P13 multisine phase NaN", [] { excitation::multisine({0.1}, 0.4, 2.5, {kNaN}); }, "phases has a non-finite value at index 0"},
-      {"P13 multisine amplitude inf", [] { excitation::multisine({0.1}, kInf); }, "multisine: amplitude must be finite"},
-      {"P13 paper_multisine offset NaN", [] { excitation::paper_multisine(0.4, kNaN); }, "paper_multisine: offset must be finite"},
+      {"P13 multisine phase NaN", [] { excitation::multisine({0.1}, 0.4, 2.5, {kNaN}); },
+       "phases has a non-finite value at index 0"},
+      {"P13 multisine amplitude inf", [] { excitation::multisine({0.1}, kInf); },
+       "multisine: amplitude must be finite"},
+      {"P13 paper_multisine offset NaN", [] { excitation::paper_multisine(0.4, kNaN); },
+       "paper_multisine: offset must be finite"},
       {"P13 chirp duration 0", [] { excitation::chirp(0.1, 1.0, 0.0, 0.4); }, "chirp: duration must be finite and > 0"},
       {"P13 chirp f1 < 0", [] { excitation::chirp(0.1, -1.0, 10.0, 0.4); }, "chirp: f1_hz must be finite and >= 0"},
       {"P14 smooth_random below one tone", [] { excitation::smooth_random(0.1, 0.5, 1.0, 1); },
@@ -265,13 +289,15 @@ TEST_CASE("P13-P15 excitation generators reject bad arguments, naming them", "[b
       // Before: std::bad_alloc (10^18 tones), or a command too slow to ever finish a simulation.
       {"P14 smooth_random 10^18 tones", [] { excitation::smooth_random(1e9, 0.5, 1e9, 1); },
        "smooth_random: bandwidth_hz * duration must be <= 1000000 (one sine per tone and call)"},
-      {"P14 smooth_random rms < 0", [] { excitation::smooth_random(1.0, -0.5, 10.0, 1); }, "rms must be finite and >= 0"},
+      {"P14 smooth_random rms < 0", [] { excitation::smooth_random(1.0, -0.5, 10.0, 1); },
+       "rms must be finite and >= 0"},
       {"P14 smooth_random duration NaN", [] { excitation::smooth_random(1.0, 0.5, kNaN, 1); },
        "duration must be finite and > 0"},
       {"P15 sampled empty", [] { excitation::sampled(Eigen::VectorXd(0), 0.01); }, "sampled: values must not be empty"},
       {"P15 sampled NaN", [] { excitation::sampled(Eigen::Vector3d(2.5, kNaN, 2.5), 0.01); },
        "sampled: values has a non-finite value at index 1"},
-      {"P15 sampled ts 0", [] { excitation::sampled(Eigen::Vector3d(2.5, 3.0, 2.5), 0.0); }, "sampled: ts must be finite and > 0"},
+      {"P15 sampled ts 0", [] { excitation::sampled(Eigen::Vector3d(2.5, 3.0, 2.5), 0.0); },
+       "sampled: ts must be finite and > 0"},
       {"P15 sampled t0 inf", [] { excitation::sampled(Eigen::Vector3d(2.5, 3.0, 2.5), 0.01, kInf); },
        "sampled: t0 must be finite"},
   });

@@ -13,7 +13,6 @@
 #include <stdexcept>
 #include <vector>
 
-
 using namespace bonl_test;
 namespace excitation = bonl::plant::excitation;
 using Catch::Matchers::Contains;
@@ -54,8 +53,10 @@ std::vector<double> crossings(const bonl::plant::Command& command, double level,
       double hi = t;
       for (int i = 0; i < 60; ++i) {
         const double mid = 0.5 * (lo + hi);
-        if (((command(mid) - level) < 0.0) == (v_prev < 0.0)) lo = mid;
-        else hi = mid;
+        if (((command(mid) - level) < 0.0) == (v_prev < 0.0))
+          lo = mid;
+        else
+          hi = mid;
       }
       times.push_back(0.5 * (lo + hi));
     }
@@ -273,10 +274,10 @@ TEST_CASE("calling a command allocates nothing", "[plant][excitation]") {
   CHECK(std::isfinite(sink));
 }
 
-#define CHECK_INVALID(expression, fragment)                \
-  do {                                                     \
-    CHECK_THROWS_AS(expression, std::invalid_argument);    \
-    CHECK_THROWS_WITH(expression, Contains(fragment));     \
+#define CHECK_INVALID(expression, fragment)             \
+  do {                                                  \
+    CHECK_THROWS_AS(expression, std::invalid_argument); \
+    CHECK_THROWS_WITH(expression, Contains(fragment));  \
   } while (false)
 
 TEST_CASE("bad arguments throw std::invalid_argument naming the argument", "[plant][excitation]") {

@@ -36,7 +36,8 @@ TEST_CASE("joint rate stays finite when the piston leaves the linkage's closing 
   options.duration = 1.0;
   options.initial_position = 0.0;
   const double closes_from = std::abs(p.pivot_to_rod_pin - p.pivot_to_base_pin) - p.retracted_length;  // -0.08 m
-  const auto run = bonl::plant::simulate(p, [](double) { return 0.0; }, options);
+  const auto run = bonl::plant::simulate(
+      p, [](double) { return 0.0; }, options);
   REQUIRE(run.position.minCoeff() < closes_from);  // the case in question happened
   CHECK(run.joint_rate.allFinite());
   // Inside the stroke nothing changed: r(h) = a b sin(phi) / l.

@@ -55,20 +55,13 @@ std::vector<Mutation> invalid_cases() {
   }
   // Quantities that may be zero but not negative or non-finite.
   const std::vector<std::pair<std::string, double Parameters::*>> non_negative = {
-      {"internal_leakage", &Parameters::internal_leakage},
-      {"external_leakage", &Parameters::external_leakage},
-      {"coulomb_friction", &Parameters::coulomb_friction},
-      {"static_friction", &Parameters::static_friction},
-      {"viscous_friction", &Parameters::viscous_friction},
-      {"end_stop_stiffness", &Parameters::end_stop_stiffness},
-      {"end_stop_damping", &Parameters::end_stop_damping},
-      {"gravity_moment", &Parameters::gravity_moment},
-      {"joint_backlash", &Parameters::joint_backlash},
-      {"sensor_noise", &Parameters::sensor_noise},
-      {"pilot_hysteresis", &Parameters::pilot_hysteresis},
-      {"dead_band", &Parameters::dead_band},
-      {"return_pressure", &Parameters::return_pressure},
-      {"stroke", &Parameters::stroke},
+      {"internal_leakage", &Parameters::internal_leakage}, {"external_leakage", &Parameters::external_leakage},
+      {"coulomb_friction", &Parameters::coulomb_friction}, {"static_friction", &Parameters::static_friction},
+      {"viscous_friction", &Parameters::viscous_friction}, {"end_stop_stiffness", &Parameters::end_stop_stiffness},
+      {"end_stop_damping", &Parameters::end_stop_damping}, {"gravity_moment", &Parameters::gravity_moment},
+      {"joint_backlash", &Parameters::joint_backlash},     {"sensor_noise", &Parameters::sensor_noise},
+      {"pilot_hysteresis", &Parameters::pilot_hysteresis}, {"dead_band", &Parameters::dead_band},
+      {"return_pressure", &Parameters::return_pressure},   {"stroke", &Parameters::stroke},
   };
   for (const auto& [name, member] : non_negative) {
     for (double bad : {-1e-9, kNaN, kInf}) {
@@ -89,12 +82,10 @@ std::vector<Mutation> invalid_cases() {
   });
   cases.emplace_back("retracted_length",
                      [](Parameters& p) { p.pivot_to_base_pin = p.pivot_to_rod_pin + p.retracted_length + 0.01; });
-  cases.emplace_back("stroke", [](Parameters& p) {
-    p.stroke = p.pivot_to_rod_pin + p.pivot_to_base_pin - p.retracted_length + 0.01;
-  });
-  cases.emplace_back("stroke", [](Parameters& p) {
-    p.pivot_to_rod_pin = p.retracted_length + p.stroke - p.pivot_to_base_pin - 0.01;
-  });
+  cases.emplace_back(
+      "stroke", [](Parameters& p) { p.stroke = p.pivot_to_rod_pin + p.pivot_to_base_pin - p.retracted_length + 0.01; });
+  cases.emplace_back(
+      "stroke", [](Parameters& p) { p.pivot_to_rod_pin = p.retracted_length + p.stroke - p.pivot_to_base_pin - 0.01; });
   return cases;
 }
 

@@ -39,9 +39,9 @@ const Trajectory& default_run() {
 }
 
 bool all_finite(const Trajectory& r) {
-  for (const Eigen::VectorXd* v : {&r.time, &r.command, &r.input, &r.position, &r.velocity, &r.head_pressure,
-                                   &r.rod_pressure, &r.spool, &r.pilot, &r.head_flow, &r.rod_flow, &r.joint_angle,
-                                   &r.joint_rate, &r.pin_angle, &r.measured_angle}) {
+  for (const Eigen::VectorXd* v :
+       {&r.time, &r.command, &r.input, &r.position, &r.velocity, &r.head_pressure, &r.rod_pressure, &r.spool, &r.pilot,
+        &r.head_flow, &r.rod_flow, &r.joint_angle, &r.joint_rate, &r.pin_angle, &r.measured_angle}) {
     if (!v->allFinite()) return false;
   }
   return true;
@@ -59,7 +59,8 @@ Trajectory constant_command(double voltage, double duration, double sample_time 
   options.duration = duration;
   options.sample_time = sample_time;
   options.sensor_noise = false;
-  return bonl::plant::simulate(Parameters{}, [voltage](double) { return voltage; }, options);
+  return bonl::plant::simulate(
+      Parameters{}, [voltage](double) { return voltage; }, options);
 }
 
 /// Worst differences between CVODE's trajectory `r` (1 ms output grid, no sensor noise) and RK4 on
@@ -279,7 +280,8 @@ TEST_CASE("the pin angle lags the joint angle on a reversal") {
   options.sensor_noise = false;
   const Parameters p;
   const double half = 0.5 * p.joint_backlash;
-  const Trajectory r = bonl::plant::simulate(p, [](double t) { return t < 1.0 ? 3.5 : 1.5; }, options);
+  const Trajectory r = bonl::plant::simulate(
+      p, [](double t) { return t < 1.0 ? 3.5 : 1.5; }, options);
   const Eigen::VectorXd& theta = r.joint_angle;
   const Eigen::VectorXd& pin = r.pin_angle;
   CHECK(pin[0] == theta[0]);  // starts engaged at theta(0)
@@ -318,7 +320,8 @@ TEST_CASE("the plant agrees with an independent fixed-step integrator") {
   options.sensor_noise = false;
   const auto command = [](double t) { return 2.5 + 1.2 * std::sin(2.0 * kPi * 2.0 * t); };
   const Trajectory r = bonl::plant::simulate(p, command, options);
-  const Rk4Differences worst = rk4_differences(p, command, [](double) { return 0.0; }, r, 1000);
+  const Rk4Differences worst = rk4_differences(
+      p, command, [](double) { return 0.0; }, r, 1000);
   INFO("worst differences: h " << worst.position << " m, v " << worst.velocity << " m/s, p1 " << worst.head_pressure
                                << " Pa");
   // Measured: h 2.2e-6 m, v 4.9e-5 m/s, p1 1.0e3 Pa, i.e. ~1e-4 relative: CVODE at rtol 1e-6 over
@@ -359,7 +362,8 @@ TEST_CASE("a CVODE failure becomes CvodeError") {
   options.tolerances.absolute_pressure = 1e-9;
   options.tolerances.max_steps_per_interval = 1;
   try {
-    bonl::plant::simulate(Parameters{}, [](double t) { return t < 0.05 ? 2.5 : 5.0; }, options);
+    bonl::plant::simulate(
+        Parameters{}, [](double t) { return t < 0.05 ? 2.5 : 5.0; }, options);
     FAIL("expected CvodeError");
   } catch (const bonl::plant::CvodeError& e) {
     INFO(e.what());
@@ -370,7 +374,9 @@ TEST_CASE("a CVODE failure becomes CvodeError") {
     CHECK(e.time() <= 0.1);
   }
   // It is a bonl::NumericalError.
-  CHECK_THROWS_AS(bonl::plant::simulate(Parameters{}, [](double) { return 5.0; }, options), bonl::NumericalError);
+  CHECK_THROWS_AS(bonl::plant::simulate(
+                      Parameters{}, [](double) { return 5.0; }, options),
+                  bonl::NumericalError);
 }
 
 TEST_CASE("a non-finite command is invalid input that names the time") {
@@ -383,7 +389,8 @@ TEST_CASE("a non-finite command is invalid input that names the time") {
 
 TEST_CASE("invalid options and parameters throw invalid_argument naming them") {
   const auto run = [](const SimulationOptions& options) {
-    return bonl::plant::simulate(Parameters{}, [](double) { return 2.5; }, options);
+    return bonl::plant::simulate(
+        Parameters{}, [](double) { return 2.5; }, options);
   };
   const auto expect = [&](SimulationOptions options, const std::string& name) {
     INFO(name);
@@ -443,7 +450,8 @@ TEST_CASE("a chosen initial position, the 5 t machine and the load") {
   options.duration = 1.0;
   options.initial_position = 0.3;
   options.sensor_noise = false;
-  const Trajectory r = bonl::plant::simulate(Parameters{}, [](double) { return 2.5; }, options);
+  const Trajectory r = bonl::plant::simulate(
+      Parameters{}, [](double) { return 2.5; }, options);
   CHECK(r.position[0] == 0.3);
   CHECK(r.joint_angle[0] == Parameters{}.joint_angle(0.3));
   // A load opposing extension slows an extension run: 2e4 N is ~ a fifth of the available force.
@@ -583,8 +591,10 @@ TEST_CASE("the Jacobian handed to CVODE matches finite differences of the right-
   for (const Parameters& p : {Parameters{}, Parameters::excavator_5t()}) {
     const bonl::plant::detail::Model model(p);
     std::mt19937_64 engine(11);
-    const auto uniform = [&engine](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine); };
-    const auto check_at = [&](const double (&x)[kMechanicalSize], double xv) {
+    const auto uniform = [&engine](double lo, double hi) {
+      return std::uniform_real_distribution<double>(lo, hi)(engine);
+    };
+    const auto check_at = [&](const double(&x)[kMechanicalSize], double xv) {
       double jac[kMechanicalSize][kMechanicalSize];
       model.mechanical_jacobian(x, xv, jac);
       for (int k = 0; k < kMechanicalSize; ++k) {

@@ -244,7 +244,8 @@ TEST_CASE("a CVODE failure leaves the plant failed until reset") {
       plant.step(4.0);
     } catch (const bonl::plant::CvodeError& e) {
       failed = true;
-      CHECK_THAT(std::string(e.what()), Catch::Matchers::Contains("bonl: SteppingPlant: CVode failed with CV_TOO_MUCH_WORK"));
+      CHECK_THAT(std::string(e.what()),
+                 Catch::Matchers::Contains("bonl: SteppingPlant: CVode failed with CV_TOO_MUCH_WORK"));
     }
   }
   REQUIRE(failed);
@@ -327,7 +328,8 @@ TEST_CASE("parameters changed mid-run keep the state and change the dynamics fro
   double change_difference = 0.0;
   for (Eigen::Index k = 100; k < 200; ++k) {
     const double reference = unchanged.step(short_commands()[k]).joint_angle;
-    restart_difference = std::max(restart_difference, std::abs(restarted.step(short_commands()[k]).joint_angle - reference));
+    restart_difference =
+        std::max(restart_difference, std::abs(restarted.step(short_commands()[k]).joint_angle - reference));
     change_difference = std::max(change_difference, std::abs(plant.step(short_commands()[k]).joint_angle - reference));
   }
   INFO("restart " << restart_difference << ", change " << change_difference);

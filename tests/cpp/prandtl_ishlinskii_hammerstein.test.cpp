@@ -183,8 +183,10 @@ TEST_CASE("the online output_error estimator converges on the Prandtl-Ishlinskii
   }
   CHECK_FALSE(estimator.diverged());
   const double after_five = bonl::metrics::nrmse(y_fresh, estimator.model().simulate(fresh));
-  std::printf("PrandtlIshlinskiiHammerstein online output_error: fresh NRMSE %.3e after 500 samples, %.3e after "
-              "one pass, %.3e after five\n", early, after_one, after_five);
+  std::printf(
+      "PrandtlIshlinskiiHammerstein online output_error: fresh NRMSE %.3e after 500 samples, %.3e after "
+      "one pass, %.3e after five\n",
+      early, after_one, after_five);
   CHECK(after_one <= 1e-8);
   CHECK(after_five <= 1e-8);
   CHECK(near(estimator.theta(), truth.theta(), 1e-8));

@@ -53,10 +53,10 @@ struct ReferenceRls {
 
   void update(const Eigen::VectorXd& phi, double target, double lambda) {
     const Eigen::VectorXd P_phi = P * phi;
-    const Eigen::VectorXd K = P_phi / (lambda + phi.dot(P_phi));                                 // eq. (22)
-    theta += K * (target - phi.dot(theta));                                                      // eq. (21)
+    const Eigen::VectorXd K = P_phi / (lambda + phi.dot(P_phi));  // eq. (22)
+    theta += K * (target - phi.dot(theta));                       // eq. (21)
     const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(theta.size(), theta.size());
-    P = (I - K * phi.transpose()) * P / lambda;                                                 // eq. (23)
+    P = (I - K * phi.transpose()) * P / lambda;  // eq. (23)
   }
 };
 
@@ -91,9 +91,9 @@ struct PaperPhwReference {
     const double g4 = y_prev - c > x ? 1.0 : 0.0;  // eq. (31)
     const double sgn = sign(x - x_stored);
     const double y1 = x - 0.5 * c * (sgn + 1.0) * g3 + 0.5 * c * (1.0 - sgn) * g4;  // eq. (26)
-    const double yc = y - (y_prev - y1) * (g3 - 1.0) * (g4 - 1.0);                   // eq. (27)
+    const double yc = y - (y_prev - y1) * (g3 - 1.0) * (g4 - 1.0);                  // eq. (27)
     Eigen::VectorXd phi(7);
-    phi << front, 0.5 * ((1.0 - sgn) * g4 - (1.0 + sgn) * g3);                        // eq. (29)
+    phi << front, 0.5 * ((1.0 - sgn) * g4 - (1.0 + sgn) * g3);  // eq. (29)
     rls.update(phi, yc, lambda);
     x_stored = front.dot(rls.theta.head(6));  // a posteriori, with theta(k)
     w_stored = input_block(rls.theta, u);     // eq. (24) with theta(k)
@@ -239,8 +239,7 @@ TEST_CASE("Paper method, Hammerstein: first steps reproduce eqs. (21)-(25)", "[e
 //          theta and P exactly unchanged.
 //   k = 2: x = f0 + f1 above y(1) + c: upper edge, last entry -1, regressor written out by hand.
 //   k = 3: negative input; x below y(2) - c: lower edge, last entry +1.
-TEST_CASE("Default method, P-H-W: gap samples are skipped, edges give s = -1 / +1",
-          "[estimator][default][phw]") {
+TEST_CASE("Default method, P-H-W: gap samples are skipped, edges give s = -1 / +1", "[estimator][default][phw]") {
   bonl::PseudoHammersteinWiener<double> model(1, 1, 0, 1);
   bonl::EstimatorOptions options = options_for(bonl::Method::EquationError);
   options.internal_refresh = 1;  // internal variables from the current estimate
@@ -342,7 +341,8 @@ TEST_CASE("compile-time and run-time orders run the same recursion", "[estimator
   // Not the paper method for H-W and P-H-W: their internals, from the running estimate while P is
   // still large, amplify the round-off itself (fixed and run-time sizes measured 5e-3 and 98 apart
   // within the first 200 predictions of an SSE2 build).
-  check_same_recursion(bonl_test::known_hammerstein_wiener(), bonl::HammersteinWienerd(3, 2, kNk, 3, 3), Method::EquationError);
+  check_same_recursion(bonl_test::known_hammerstein_wiener(), bonl::HammersteinWienerd(3, 2, kNk, 3, 3),
+                       Method::EquationError);
   check_same_recursion(bonl_test::known_phw(), bonl::PseudoHammersteinWienerd(3, 2, kNk, 3), Method::EquationError);
 }
 
@@ -354,8 +354,8 @@ void check_record_equals_loop(const Model& structure, bonl::Method method) {
   INFO(Model::kName << ", method " << static_cast<int>(method));
   Eigen::VectorXd u = bonl::signals::random_levels(1500, 5, 1.0, 8);
   Eigen::VectorXd y = structure.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 9);
-  u[300] = std::nan("");                                   // rejected inside the record,
-  y[700] = std::numeric_limits<double>::infinity();        // exactly as in the loop
+  u[300] = std::nan("");                             // rejected inside the record,
+  y[700] = std::numeric_limits<double>::infinity();  // exactly as in the loop
   bonl::EstimatorOptions options;
   options.method = method;
   bonl::Estimator<Model> looped(structure, options);

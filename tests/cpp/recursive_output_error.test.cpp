@@ -100,8 +100,8 @@ TEMPLATE_LIST_TEST_CASE("the output-error terms simulate like simulate() and the
   check_sensitivities<TestType>();
 }
 
-TEMPLATE_LIST_TEST_CASE("fixed orders: the output-error sensitivities are the simulation's derivatives", "[output_error]",
-                        bonl::PaperOrderModels) {
+TEMPLATE_LIST_TEST_CASE("fixed orders: the output-error sensitivities are the simulation's derivatives",
+                        "[output_error]", bonl::PaperOrderModels) {
   check_sensitivities<TestType>();
 }
 
@@ -128,7 +128,8 @@ TEST_CASE("noise-free records of the known online systems are recovered exactly"
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("under white output noise the online error shrinks like 1 / sqrt(N)", "[output_error]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("under white output noise the online error shrinks like 1 / sqrt(N)", "[output_error]",
+                        bonl::Models) {
   // A consistent estimator's simulation error falls by sqrt(4) = 2 when the record grows four-fold.
   // Median over 5 seeds of 2% white noise; measured ratios 0.43 (Hammerstein) to 0.62 (ARX), bound 0.65.
   const TestType truth = known<TestType>();
@@ -139,7 +140,8 @@ TEMPLATE_LIST_TEST_CASE("under white output noise the online error shrinks like 
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
       const Eigen::VectorXd u = bonl::signals::random_levels(samples, 5, 1.0, 500 + seed);
       const Eigen::VectorXd clean = truth.simulate(u);
-      const Eigen::VectorXd y = clean + bonl::signals::white_noise(samples, 0.02 * standard_deviation(clean), 600 + seed);
+      const Eigen::VectorXd y =
+          clean + bonl::signals::white_noise(samples, 0.02 * standard_deviation(clean), 600 + seed);
       errors.push_back(bonl::metrics::nrmse(y_validation, online_estimate(truth, u, y).simulate(u_validation)));
     }
     std::sort(errors.begin(), errors.end());
@@ -151,7 +153,8 @@ TEMPLATE_LIST_TEST_CASE("under white output noise the online error shrinks like 
   CHECK(long_record >= 0.3 * short_record);  // not faster either: that would be an error, not noise
 }
 
-TEMPLATE_LIST_TEST_CASE("with constant forgetting a step in the parameters is tracked", "[output_error]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("with constant forgetting a step in the parameters is tracked", "[output_error]",
+                        bonl::Models) {
   // Noise-free, forgetting 0.995; at sample 4000 the input gain grows by 30% (and c doubles).
   // Measured: on the suite's known systems here 1150 (ARX), 2000 (Hammerstein), 2500 (H-W) and
   // 1950 (P-H-W) samples to get back under 1% NRMSE; on the online systems 700 to 2800
@@ -187,7 +190,8 @@ TEMPLATE_LIST_TEST_CASE("with constant forgetting a step in the parameters is tr
   CHECK(recovered <= 3000);
 }
 
-TEMPLATE_LIST_TEST_CASE("started at the truth, the output-error update predicts by simulation and stays there", "[output_error]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("started at the truth, the output-error update predicts by simulation and stays there",
+                        "[output_error]", bonl::Models) {
   const TestType truth = known<TestType>();
   const Eigen::VectorXd u = bonl::signals::random_levels(2000, 5, 1.0, 51);
   const Eigen::VectorXd y = truth.simulate(u);

@@ -227,7 +227,7 @@ TEMPLATE_TEST_CASE("an update whose new theta would overflow is refused", "[rls]
   CHECK_FALSE(rls.update(phi, 1e308, 1.0));
   CHECK(rls.theta() == theta);
   CHECK(rls.covariance() == p);
-  CHECK(rls.update(phi, 1.0, 1.0));  // and a sane update still goes through
+  CHECK(rls.update(phi, 1.0, 1.0));                       // and a sane update still goes through
   CHECK(rls.theta()[3] == Approx(500.0).epsilon(1e-12));  // 1e6 * 1e-3 / (1 + 1e6 * 1e-6) * error 1
 }
 

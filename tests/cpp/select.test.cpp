@@ -38,8 +38,8 @@ TEST_CASE("select finds the delay of a known system and ranks the others behind 
   const Eigen::VectorXd u = bonl::signals::random_levels(2000, 5, 1.0, 71);
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 72);
   const bonl::Records<double> records{{u, y}};
-  for (auto criterion : {bonl::SelectionCriterion::Validation, bonl::SelectionCriterion::AIC,
-                         bonl::SelectionCriterion::BIC}) {
+  for (auto criterion :
+       {bonl::SelectionCriterion::Validation, bonl::SelectionCriterion::AIC, bonl::SelectionCriterion::BIC}) {
     bonl::SelectOptions options;
     options.criterion = criterion;
     const auto selection = bonl::select(delay_grid(), records, options);
@@ -134,13 +134,15 @@ TEST_CASE("with a window the held-out part is scored after its first samples", "
   bonl::SelectOptions options;
   options.window = 7;
   const auto row = bonl::score_candidate(bonl::Hammersteind(2, 1, 2, 2), bonl::SelectionData<double>(records, options));
-  const bonl::Hammersteind fitted = bonl::identify(bonl::Hammersteind(2, 1, 2, 2), bonl::Records<double>{records[0].head(600)});
+  const bonl::Hammersteind fitted =
+      bonl::identify(bonl::Hammersteind(2, 1, 2, 2), bonl::Records<double>{records[0].head(600)});
   const Eigen::VectorXd after = fitted.simulate(u.tail(193), u.segment(600, 7), y.segment(600, 7));
   CHECK(near(row.validation_mse, (y.tail(193) - after).squaredNorm() / 193.0, 1e-12));
 
   options.window = 200;  // the held-out part is 200 samples
-  CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
-                    Catch::Matchers::Contains("records[0]'s held-out part (200 samples) must be longer than the window (200)"));
+  CHECK_THROWS_WITH(
+      bonl::SelectionData<double>(records, options),
+      Catch::Matchers::Contains("records[0]'s held-out part (200 samples) must be longer than the window (200)"));
   options.window = -1;
   CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
                     Catch::Matchers::Contains("window must be an integer >= 0, got -1"));

@@ -33,8 +33,9 @@ TEST_CASE("structure_from_data places the plays' thresholds as identify's extra 
   // an offset moves nothing (the half-range is that of the deviations).
   const Eigen::VectorXd u4 = 4.0 * u, shifted = (u.array() - 2.5).matrix();
   CHECK(bonl::structure_from_data(truth, bonl::Records<double>{{u4, y}}).thresholds() == 4.0 * placed.thresholds());
-  CHECK(bonl::structure_from_data(truth, bonl::Records<double>{{shifted, y}}).thresholds().isApprox(
-      placed.thresholds(), 1e-15));
+  CHECK(bonl::structure_from_data(truth, bonl::Records<double>{{shifted, y}})
+            .thresholds()
+            .isApprox(placed.thresholds(), 1e-15));
 }
 
 TEST_CASE("structure_from_data returns any other model as it is", "[structure_from_data]") {

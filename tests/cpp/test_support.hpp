@@ -5,8 +5,8 @@
 
 #include <bonl/bonl.hpp>
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
@@ -71,9 +71,7 @@ double worst_key_term_error(const Model& model, const Eigen::VectorXd& u, const 
   return worst;
 }
 
-inline double standard_deviation(const Eigen::VectorXd& y) {
-  return std::sqrt((y.array() - y.mean()).square().mean());
-}
+inline double standard_deviation(const Eigen::VectorXd& y) { return std::sqrt((y.array() - y.mean()).square().mean()); }
 
 /// Central differences of model.simulate(u), one parameter at a time (step 1e-6 max(1, |theta_i|)):
 /// row k is d y(k) / d theta, the oracle of the output-error sensitivities.

@@ -57,7 +57,8 @@ std::vector<bonl::WienerHammersteinSplit<bonl::WienerHammersteind>> checked_spli
     const bonl::WienerHammersteind& truth, const bonl::WienerHammersteind& structure, double sigma) {
   const Eigen::VectorXd u = split_input();
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), sigma, 4);
-  const auto splits = bonl::wiener_hammerstein_splits(structure, bonl::CheckedRecords<double>(u, y, structure.num_params()));
+  const auto splits =
+      bonl::wiener_hammerstein_splits(structure, bonl::CheckedRecords<double>(u, y, structure.num_params()));
   REQUIRE_FALSE(splits.empty());
   for (std::size_t i = 0; i < splits.size(); ++i) {
     INFO("split " << i);

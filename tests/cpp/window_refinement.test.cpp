@@ -47,7 +47,8 @@ void check_under_noise(const Model& truth) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const Eigen::VectorXd u = bonl::signals::random_levels(4000, 5, 1.0, 700 + seed);
     const Eigen::VectorXd clean = truth.simulate(u);
-    const Eigen::VectorXd y = clean + bonl::signals::white_noise(u.size(), 0.02 * standard_deviation(clean), 800 + seed);
+    const Eigen::VectorXd y =
+        clean + bonl::signals::white_noise(u.size(), 0.02 * standard_deviation(clean), 800 + seed);
     window.push_back(validation_nrmse(truth, online(truth, u, y, with_window(), &health)));
     recursion.push_back(validation_nrmse(truth, online(truth, u, y, bonl::EstimatorOptions{})));
     offline.push_back(validation_nrmse(truth, bonl::identify(truth, u, y)));
@@ -56,9 +57,9 @@ void check_under_noise(const Model& truth) {
     std::sort(v.begin(), v.end());
     return v[1];
   };
-  INFO(Model::kName << ": median NRMSE with the window " << median(window) << ", recursion alone "
-                    << median(recursion) << ", identify() " << median(offline) << "; swaps " << health.window.swaps
-                    << ", iterations " << health.window.iterations);
+  INFO(Model::kName << ": median NRMSE with the window " << median(window) << ", recursion alone " << median(recursion)
+                    << ", identify() " << median(offline) << "; swaps " << health.window.swaps << ", iterations "
+                    << health.window.iterations);
   // Measured ratios to identify(): 1.05 (P-H-W) to 1.82 (H-W) at both run-time and fixed orders.
   // The Wiener-Hammerstein model's window ends worse than its recursion alone (6.5 and 3.5 times
   // identify()), and so does the Bouc-Wen feedback model's (4.5 and 2.2 times: its recursion has not
@@ -87,7 +88,8 @@ TEST_CASE("window refinement: settings out of range are refused at construction,
                     Catch::Contains("window work_per_sample must be >= 2 model steps, got 1"));
 }
 
-TEMPLATE_LIST_TEST_CASE("window refinement: under 2% noise close to identify(), run-time orders", "[window]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("window refinement: under 2% noise close to identify(), run-time orders", "[window]",
+                        bonl::Models) {
   check_under_noise(known_system<TestType>());
 }
 
@@ -96,7 +98,8 @@ TEMPLATE_LIST_TEST_CASE("window refinement: under 2% noise close to identify(), 
   check_under_noise(known_system<TestType>());
 }
 
-TEMPLATE_LIST_TEST_CASE("window refinement: noise-free, it keeps what the recursion reaches", "[window]", bonl::Models) {
+TEMPLATE_LIST_TEST_CASE("window refinement: noise-free, it keeps what the recursion reaches", "[window]",
+                        bonl::Models) {
   const TestType truth = known_system<TestType>();
   const Eigen::VectorXd u = bonl::signals::random_levels(4000, 5, 1.0, 91);
   const Eigen::VectorXd y = truth.simulate(u);

@@ -51,9 +51,10 @@ struct Settings {
 };
 
 [[noreturn]] void usage(const std::string& problem) {
-  std::cerr << "bonl_soak: " << problem
-            << "\nusage: bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X]"
-               " [--seed S] [--method output_error|equation_error|paper] [--json FILE]\n";
+  std::cerr
+      << "bonl_soak: " << problem
+      << "\nusage: bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X]"
+         " [--seed S] [--method output_error|equation_error|paper] [--json FILE]\n";
   std::exit(2);
 }
 
@@ -76,12 +77,18 @@ Settings parse(int argc, char** argv) {
       if (i + 1 >= argc) usage(arg + " needs a value");
       return argv[++i];
     };
-    if (arg == "--samples") s.samples = parse_count(value(), "--samples");
-    else if (arg == "--phase-length") s.phase_length = parse_count(value(), "--phase-length");
-    else if (arg == "--check-every") s.check_every = parse_count(value(), "--check-every");
-    else if (arg == "--seed") s.seed = static_cast<unsigned>(parse_count(value(), "--seed"));
-    else if (arg == "--json") s.json = value();
-    else if (arg == "--no-ceiling") s.trace_ceiling = std::numeric_limits<double>::infinity();
+    if (arg == "--samples")
+      s.samples = parse_count(value(), "--samples");
+    else if (arg == "--phase-length")
+      s.phase_length = parse_count(value(), "--phase-length");
+    else if (arg == "--check-every")
+      s.check_every = parse_count(value(), "--check-every");
+    else if (arg == "--seed")
+      s.seed = static_cast<unsigned>(parse_count(value(), "--seed"));
+    else if (arg == "--json")
+      s.json = value();
+    else if (arg == "--no-ceiling")
+      s.trace_ceiling = std::numeric_limits<double>::infinity();
     else if (arg == "--trace-ceiling") {
       const std::string text = value();
       try {
@@ -89,15 +96,14 @@ Settings parse(int argc, char** argv) {
       } catch (const std::exception&) {
         usage("--trace-ceiling must be a number, got '" + text + "'");
       }
-    }
-    else if (arg == "--method") {
+    } else if (arg == "--method") {
       try {
         s.method = bonl::method_from_string(value());
       } catch (const std::invalid_argument& error) {
         usage(std::string("--method: ") + error.what());
       }
-    }
-    else usage("unknown argument '" + arg + "'");
+    } else
+      usage("unknown argument '" + arg + "'");
   }
   if (s.phase_length < 4000) usage("--phase-length must be >= 4000 (recovery is measured within the first half)");
   return s;
@@ -286,9 +292,8 @@ int main(int argc, char** argv) {
         continue;
       }
       if (p != p.transpose()) report_problem(k, "P is not exactly symmetric");
-      const double min_eigenvalue = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(p, Eigen::EigenvaluesOnly)
-                                        .eigenvalues()
-                                        .minCoeff();
+      const double min_eigenvalue =
+          Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(p, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
       if (!(min_eigenvalue > 0.0)) report_problem(k, "P is not positive definite: " + std::to_string(min_eigenvalue));
       if (ceiling && p.trace() > trace_limit * (1.0 + 1e-12)) report_problem(k, "trace(P) above the ceiling");
       largest_p = std::max(largest_p, p.cwiseAbs().maxCoeff());
@@ -330,8 +335,8 @@ int main(int argc, char** argv) {
 
   std::printf("bonl_soak: %lld samples of P-H-W online identification, %s method, lambda = 0.98, trace ceiling %g\n",
               settings.samples, bonl::to_string(settings.method), options.resolved_trace_ceiling());
-  std::printf("  phases of %lld samples: rich, constant, rich, zero; %lld outliers of +-%.2f\n",
-              settings.phase_length, outliers, outlier_size);
+  std::printf("  phases of %lld samples: rich, constant, rich, zero; %lld outliers of +-%.2f\n", settings.phase_length,
+              outliers, outlier_size);
   std::printf("  wall time %.1f s (%.0f ns per sample, data generation and checks included)\n", seconds,
               1e9 * seconds / double(settings.samples));
   std::printf("  statuses: updated %lld, no information %lld, rejected non-finite %lld, numerical failure %lld\n",
@@ -339,8 +344,9 @@ int main(int argc, char** argv) {
   std::printf("  health: forgetting limited on %lld updates, %lld failures, %lld internal restarts\n",
               static_cast<long long>(health.forgetting_limited), static_cast<long long>(health.failures),
               static_cast<long long>(health.internal_restarts));
-  std::printf("  %lld covariance checks: largest |P| %.3e, largest trace %.3e (ceiling %.3e), smallest eigenvalue %.3e\n",
-              checks, largest_p, largest_trace, trace_limit, smallest_eigenvalue);
+  std::printf(
+      "  %lld covariance checks: largest |P| %.3e, largest trace %.3e (ceiling %.3e), smallest eigenvalue %.3e\n",
+      checks, largest_p, largest_trace, trace_limit, smallest_eigenvalue);
   std::printf("  largest |theta| %.3e\n", largest_theta);
   std::printf("  recovery after constant input: %s\n", stats(after_constant).c_str());
   std::printf("  recovery after zero input:     %s\n", stats(after_zero).c_str());
@@ -353,8 +359,8 @@ int main(int argc, char** argv) {
     out.precision(6);
     out << "{\"samples\": " << settings.samples << ", \"method\": \"" << bonl::to_string(settings.method)
         << "\", \"phase_length\": " << settings.phase_length
-        << ", \"trace_ceiling\": " << (ceiling ? std::to_string(options.resolved_trace_ceiling()) : std::string("null")) << ", \"seconds\": " << seconds
-        << ", \"outliers\": " << outliers << ", \"largest_abs_p\": " << largest_p
+        << ", \"trace_ceiling\": " << (ceiling ? std::to_string(options.resolved_trace_ceiling()) : std::string("null"))
+        << ", \"seconds\": " << seconds << ", \"outliers\": " << outliers << ", \"largest_abs_p\": " << largest_p
         << ", \"largest_trace\": " << largest_trace << ", \"smallest_eigenvalue\": " << smallest_eigenvalue
         << ", \"largest_abs_theta\": " << largest_theta << ", \"failures\": " << failures
         << ", \"forgetting_limited\": " << health.forgetting_limited << ", \"numerical_failures\": " << health.failures

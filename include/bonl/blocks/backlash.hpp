@@ -52,8 +52,8 @@ class Backlash {
   /// Sets the half-width; throws std::invalid_argument unless c is finite and >= 0.
   /// \param c the half-width, in the units of x
   void set_c(Scalar c) {
-    detail::require(std::isfinite(c) && c >= Scalar(0), "backlash half-width c must be finite and >= 0, got " +
-                                                            std::to_string(static_cast<double>(c)));
+    detail::require(std::isfinite(c) && c >= Scalar(0),
+                    "backlash half-width c must be finite and >= 0, got " + std::to_string(static_cast<double>(c)));
     m_c = c;
   }
   /// The memory y(k-1). \return the last output, or y0 before the first step
@@ -108,9 +108,9 @@ class GeneralBacklash {
     detail::require(std::isfinite(y0), "initial output y0 must be finite");
   }
 
-  Scalar c_left() const noexcept { return m_c_left; }  ///< the left threshold c_left \return c_left, >= 0
+  Scalar c_left() const noexcept { return m_c_left; }    ///< the left threshold c_left \return c_left, >= 0
   Scalar c_right() const noexcept { return m_c_right; }  ///< the right threshold c_right \return c_right, >= 0
-  Scalar slope() const noexcept { return m_slope; }  ///< the slope m \return m, > 0
+  Scalar slope() const noexcept { return m_slope; }      ///< the slope m \return m, > 0
   /// The memory y(k-1)
   /// \return the last output, or y0 before the first step
   Scalar output() const noexcept { return m_y; }

@@ -20,8 +20,8 @@ namespace bonl {
 template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::Dynamic>
 class LinearBlock {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
-  using ACoeffs = Eigen::Matrix<Scalar, Na_, 1>;  ///< a_1..a_na (fixed size when Na_ is)
+  using Scalar = Scalar_;                                            ///< the arithmetic type
+  using ACoeffs = Eigen::Matrix<Scalar, Na_, 1>;                     ///< a_1..a_na (fixed size when Na_ is)
   using BCoeffs = Eigen::Matrix<Scalar, detail::poly_size(Nb_), 1>;  ///< b_0..b_nb (fixed size when Nb_ is)
 
   /// A block at rest with a = 0, b = [1, 0...]. Throws std::invalid_argument for an order out of range

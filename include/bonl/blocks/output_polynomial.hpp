@@ -14,7 +14,7 @@ namespace bonl {
 template <typename Scalar_ = double, int R1_ = Eigen::Dynamic>
 class OutputPolynomial {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
+  using Scalar = Scalar_;                        ///< the arithmetic type
   using Coeffs = Eigen::Matrix<Scalar, R1_, 1>;  ///< q_1..q_r1 (fixed size when R1_ is)
 
   /// The identity, q = [1, 0, ..., 0]. Throws std::invalid_argument for a degree below 1 or one that

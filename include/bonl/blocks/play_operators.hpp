@@ -30,7 +30,7 @@ namespace bonl {
 template <typename Scalar_ = double, int Np_ = Eigen::Dynamic>
 class PlayOperators {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
+  using Scalar = Scalar_;                        ///< the arithmetic type
   using Vector = Eigen::Matrix<Scalar, Np_, 1>;  ///< the thresholds or the plays' outputs (fixed size when Np_ is)
 
   /// The plays of `thresholds` (require_valid; Np of them where Np is fixed), at rest.
@@ -69,8 +69,10 @@ class PlayOperators {
     for (Eigen::Index i = 0; i < thresholds.size(); ++i) {
       const double value = static_cast<double>(thresholds[i]);
       if (!(value > 0.0)) {
-        detail::fail("thresholds must be > 0 (a play of threshold 0 is the input itself, the linear term f_1 u), "
-                     "got " + detail::format_number(value) + " at index " + std::to_string(i));
+        detail::fail(
+            "thresholds must be > 0 (a play of threshold 0 is the input itself, the linear term f_1 u), "
+            "got " +
+            detail::format_number(value) + " at index " + std::to_string(i));
       }
       if (i > 0 && !(thresholds[i - 1] < thresholds[i])) {
         detail::fail("thresholds must be strictly increasing, got " +

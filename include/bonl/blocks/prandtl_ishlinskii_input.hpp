@@ -24,10 +24,10 @@ namespace bonl {
 template <typename Scalar_ = double, int R_ = Eigen::Dynamic, int Np_ = Eigen::Dynamic>
 class PrandtlIshlinskiiInput {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
-  using Plays = PlayOperators<Scalar, Np_>;  ///< the play operators' type
+  using Scalar = Scalar_;                                          ///< the arithmetic type
+  using Plays = PlayOperators<Scalar, Np_>;                        ///< the play operators' type
   using Coeffs = Eigen::Matrix<Scalar, detail::poly_size(R_), 1>;  ///< f_0..f_r (fixed size when R_ is)
-  using Weights = Eigen::Matrix<Scalar, Np_, 1>;  ///< g_1..g_np (fixed size when Np_ is)
+  using Weights = Eigen::Matrix<Scalar, Np_, 1>;                   ///< g_1..g_np (fixed size when Np_ is)
 
   /// The block with the plays at rest. Throws std::invalid_argument for fewer than 2 entries of f, a
   /// degree that differs from R_, invalid thresholds, or a g of another length or not finite.
@@ -38,8 +38,8 @@ class PrandtlIshlinskiiInput {
   PrandtlIshlinskiiInput(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<T>& thresholds,
                          const Eigen::MatrixBase<G>& g)
       : m_plays(thresholds) {
-    detail::require(f.size() >= 2, "f must have at least 2 entries (f_0..f_r, degree r >= 1), got " +
-                                       std::to_string(f.size()));
+    detail::require(f.size() >= 2,
+                    "f must have at least 2 entries (f_0..f_r, degree r >= 1), got " + std::to_string(f.size()));
     detail::require_matches_template(f.size() - 1, R_, "r");
     m_f = Coeffs::Zero(f.size());
     m_g = Weights::Zero(thresholds.size());
@@ -47,7 +47,7 @@ class PrandtlIshlinskiiInput {
     detail::assign_checked(m_g, g, "g");
   }
 
-  const Coeffs& f() const noexcept { return m_f; }  ///< the polynomial's coefficients f_0..f_r \return r + 1 values
+  const Coeffs& f() const noexcept { return m_f; }   ///< the polynomial's coefficients f_0..f_r \return r + 1 values
   const Weights& g() const noexcept { return m_g; }  ///< the plays' weights g_1..g_np \return np values
   /// The plays' thresholds. \return r_1..r_np, strictly increasing, > 0
   const typename Plays::Vector& thresholds() const noexcept { return m_plays.thresholds(); }

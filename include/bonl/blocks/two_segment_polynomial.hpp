@@ -23,10 +23,11 @@ constexpr Scalar input_switch(Scalar u) noexcept {
 template <typename Scalar_ = double, int R_ = Eigen::Dynamic>
 class TwoSegmentPolynomial {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
+  using Scalar = Scalar_;                                ///< the arithmetic type
   static constexpr int kCoeffs = detail::poly_size(R_);  ///< r + 1 coefficients per segment (Eigen::Dynamic when R_ is)
-  static constexpr int kBasisSize = kCoeffs == Eigen::Dynamic ? Eigen::Dynamic : 2 * kCoeffs;  ///< the regressor's length, f's and p's: 2 (r + 1)
-  using Coeffs = Eigen::Matrix<Scalar, kCoeffs, 1>;  ///< f_0..f_r or p_0..p_r
+  static constexpr int kBasisSize =
+      kCoeffs == Eigen::Dynamic ? Eigen::Dynamic : 2 * kCoeffs;  ///< the regressor's length, f's and p's: 2 (r + 1)
+  using Coeffs = Eigen::Matrix<Scalar, kCoeffs, 1>;              ///< f_0..f_r or p_0..p_r
 
   /// All coefficients zero. Throws std::invalid_argument for a degree below 1 or one that differs from
   /// R_.
@@ -133,8 +134,8 @@ class TwoSegmentPolynomial {
   /// The degree that f's length implies, r = f.size() - 1, which must be >= 1.
   template <typename F>
   static Eigen::Index degree_of(const Eigen::MatrixBase<F>& f) {
-    detail::require(f.size() >= 2, "f must have at least 2 entries (f_0..f_r, degree r >= 1), got " +
-                                       std::to_string(f.size()));
+    detail::require(f.size() >= 2,
+                    "f must have at least 2 entries (f_0..f_r, degree r >= 1), got " + std::to_string(f.size()));
     return f.size() - 1;
   }
 

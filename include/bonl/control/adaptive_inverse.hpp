@@ -29,8 +29,8 @@ namespace bonl::control {
 
 /// How AdaptiveInverse is built and when it trusts an estimate enough to derive a new inverse from it.
 struct AdaptiveInverseOptions {
-  InverseOptions inverse;        ///< how each inverse is built (command range, backlash band)
-  EstimatorOptions estimator;    ///< the online estimator's (method, forgetting, p0, ...)
+  InverseOptions inverse;             ///< how each inverse is built (command range, backlash band)
+  EstimatorOptions estimator;         ///< the online estimator's (method, forgetting, p0, ...)
   Eigen::Index rederive_every = 100;  ///< samples between two derivations of the inverse, >= 1
   /// Trusted only while trace(P) <= max_covariance_trace * n * p0 (n parameters), >= 1.
   double max_covariance_trace = 10.0;
@@ -42,11 +42,10 @@ struct AdaptiveInverseOptions {
   /// stability_radius outside (0, 1].
   void validate() const {
     estimator.validate();
-    bonl::detail::require(rederive_every >= 1,
-                          "rederive_every must be >= 1, got " + std::to_string(rederive_every));
-    bonl::detail::require(std::isfinite(max_covariance_trace) && max_covariance_trace >= 1.0,
-                          "max_covariance_trace must be finite and >= 1, got " +
-                              bonl::detail::format_number(max_covariance_trace));
+    bonl::detail::require(rederive_every >= 1, "rederive_every must be >= 1, got " + std::to_string(rederive_every));
+    bonl::detail::require(
+        std::isfinite(max_covariance_trace) && max_covariance_trace >= 1.0,
+        "max_covariance_trace must be finite and >= 1, got " + bonl::detail::format_number(max_covariance_trace));
     bonl::detail::require(stability_radius > 0.0 && stability_radius <= 1.0,
                           "stability_radius must be in (0, 1], got " + bonl::detail::format_number(stability_radius));
   }
@@ -54,12 +53,12 @@ struct AdaptiveInverseOptions {
 
 /// What the guard did since the start: inverses derived, and estimates refused by reason.
 struct AdaptiveInverseHealth {
-  Eigen::Index rederivations = 0;        ///< new inverses put in use
-  Eigen::Index refused_diverged = 0;     ///< the estimator had diverged
-  Eigen::Index refused_covariance = 0;   ///< trace(P) above the limit
-  Eigen::Index refused_unstable = 0;     ///< a pole of the estimate at or beyond stability_radius
-  Eigen::Index refused_no_inverse = 0;   ///< InverseModel refused the estimate
-  std::string last_refusal;              ///< why the last refused estimate was refused ("" if none)
+  Eigen::Index rederivations = 0;       ///< new inverses put in use
+  Eigen::Index refused_diverged = 0;    ///< the estimator had diverged
+  Eigen::Index refused_covariance = 0;  ///< trace(P) above the limit
+  Eigen::Index refused_unstable = 0;    ///< a pole of the estimate at or beyond stability_radius
+  Eigen::Index refused_no_inverse = 0;  ///< InverseModel refused the estimate
+  std::string last_refusal;             ///< why the last refused estimate was refused ("" if none)
 };
 
 /// The online estimator and the inverse model together: a feedforward that follows the plant as it
@@ -82,9 +81,7 @@ class AdaptiveInverse {
   /// \param settings the model's own estimator settings (Estimator)
   explicit AdaptiveInverse(const Model& initial, const AdaptiveInverseOptions& options = {},
                            const ModelSettings<Model>& settings = {})
-      : m_options(validated(options)),
-        m_model(initial),
-        m_inverse(initial, options.inverse),
+      : m_options(validated(options)), m_model(initial), m_inverse(initial, options.inverse),
         m_estimator(initial, options.estimator, settings) {
     m_estimator.reset(initial.theta());
   }
@@ -132,8 +129,8 @@ class AdaptiveInverse {
     Model estimate = m_estimator.model();
     const double radius = pole_radius(estimate);
     if (!(radius < m_options.stability_radius))
-      return refuse(m_health.refused_unstable, "a pole of the estimate has magnitude " +
-                                                   bonl::detail::format_number(radius));
+      return refuse(m_health.refused_unstable,
+                    "a pole of the estimate has magnitude " + bonl::detail::format_number(radius));
     try {
       InverseModel<Model> inverse(estimate, m_options.inverse);
       inverse.continue_from(m_inverse);

@@ -37,7 +37,7 @@ class BacklashInverse {
 
   /// The reference's direction and its last extremum: the whole state.
   struct State {
-    int direction = 0;  ///< +1 rising, -1 falling, 0 not moved yet
+    int direction = 0;            ///< +1 rising, -1 falling, 0 not moved yet
     Scalar extremum = Scalar(0);  ///< the reference's last extremum (its start value before it moved)
   };
 
@@ -47,8 +47,9 @@ class BacklashInverse {
   /// \param band the transition band, in the output's units, >= 0 (0: the exact switch)
   /// \param y0 the backlash's output at the start
   explicit BacklashInverse(Scalar c, Scalar band = Scalar(0), Scalar y0 = Scalar(0)) : m_c(c), m_band(band) {
-    bonl::detail::require(std::isfinite(c) && c >= Scalar(0), "the backlash half-width c must be finite and >= 0, got " +
-                                                                  bonl::detail::format_number(static_cast<double>(c)));
+    bonl::detail::require(std::isfinite(c) && c >= Scalar(0),
+                          "the backlash half-width c must be finite and >= 0, got " +
+                              bonl::detail::format_number(static_cast<double>(c)));
     bonl::detail::require(std::isfinite(band) && band >= Scalar(0),
                           "the backlash inverse's transition band must be finite and >= 0, got " +
                               bonl::detail::format_number(static_cast<double>(band)));
@@ -56,7 +57,7 @@ class BacklashInverse {
     reset(y0);
   }
 
-  Scalar c() const noexcept { return m_c; }  ///< the backlash's half-width c \return c, >= 0
+  Scalar c() const noexcept { return m_c; }        ///< the backlash's half-width c \return c, >= 0
   Scalar band() const noexcept { return m_band; }  ///< the transition band (0: the exact switch) \return the band, >= 0
   /// The reference's direction and last extremum, to carry over with continue_from().
   /// \return the state

@@ -36,7 +36,7 @@ namespace bonl::control {
 template <typename Scalar_ = double>
 class InputPolynomialInverse {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
+  using Scalar = Scalar_;                                    ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
   /// The inverse of the polynomial with f and p (as TwoSegmentPolynomial) on a command range. Throws
@@ -111,7 +111,7 @@ class InputPolynomialInverse {
   /// The polynomial has no memory: nothing to advance, reset or take over (InverseModel calls these
   /// on every input block's inverse).
   void advance(Scalar /*u*/) noexcept {}
-  void reset() noexcept {}  ///< nothing to reset (see advance())
+  void reset() noexcept {}                                                    ///< nothing to reset (see advance())
   void continue_from(const InputPolynomialInverse& /*previous*/) noexcept {}  ///< nothing to take over (see advance())
 
   /// The monotone branches the inverse uses: commands [lower(), upper()] (the command range, or

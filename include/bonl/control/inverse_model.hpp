@@ -60,7 +60,7 @@ struct InverseOptions {
 template <typename Scalar>
 struct InverseRun {
   Eigen::Matrix<Scalar, Eigen::Dynamic, 1> command;  ///< the commands u(0..N-1), in the model's input units
-  std::vector<InverseStatus> status;  ///< each command's status: Exact, or what it could not do
+  std::vector<InverseStatus> status;                 ///< each command's status: Exact, or what it could not do
 };
 
 namespace detail {
@@ -136,7 +136,7 @@ class InverseModel {
   static_assert(has_inverse<Model>::value, "bonl::control::InverseModel inverts models with one linear block");
 
  public:
-  using Scalar = typename Model::Scalar;  ///< the model's arithmetic type
+  using Scalar = typename Model::Scalar;                     ///< the model's arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
   /// Whether the model has an input block (input_block()) whose inverse gives the command; without
   /// one (ARX, Wiener) w = u, clamped to the command range.
@@ -154,20 +154,17 @@ class InverseModel {
   /// \param options the command range and the backlash inverse's band
   explicit InverseModel(const Model& model, const InverseOptions& options = {})
       : m_linear(bonl::detail::with_integrators(model.a(), model.ni()), model.b(), model.nk()),
-        m_u0(static_cast<Scalar>(model.u0())),
-        m_y0(static_cast<Scalar>(model.y0())),
+        m_u0(static_cast<Scalar>(model.u0())), m_y0(static_cast<Scalar>(model.y0())),
         m_command_min(static_cast<Scalar>(std::isnan(options.command_min) ? model.input_min() : options.command_min)),
         m_command_max(static_cast<Scalar>(std::isnan(options.command_max) ? model.input_max() : options.command_max)),
-        m_input(make_input(model, m_command_min - m_u0, m_command_max - m_u0)),
-        m_output(make_output(model)),
-        m_backlash(make_backlash(model, options)),
-        m_window(VectorX::Zero(m_linear.window_size())) {
-    bonl::detail::require(!std::isnan(m_command_min) && !std::isnan(m_command_max) && m_command_min <= m_u0 &&
-                              m_u0 <= m_command_max,
-                          "the command range must contain the operating point u0 = " +
-                              bonl::detail::format_number(static_cast<double>(m_u0)) + ", got [" +
-                              bonl::detail::format_number(static_cast<double>(m_command_min)) + ", " +
-                              bonl::detail::format_number(static_cast<double>(m_command_max)) + "]");
+        m_input(make_input(model, m_command_min - m_u0, m_command_max - m_u0)), m_output(make_output(model)),
+        m_backlash(make_backlash(model, options)), m_window(VectorX::Zero(m_linear.window_size())) {
+    bonl::detail::require(
+        !std::isnan(m_command_min) && !std::isnan(m_command_max) && m_command_min <= m_u0 && m_u0 <= m_command_max,
+        "the command range must contain the operating point u0 = " +
+            bonl::detail::format_number(static_cast<double>(m_u0)) + ", got [" +
+            bonl::detail::format_number(static_cast<double>(m_command_min)) + ", " +
+            bonl::detail::format_number(static_cast<double>(m_command_max)) + "]");
   }
 
   /// The reference the step at sample k takes: r(k + nk), ..., r(k + preview()).
@@ -265,9 +262,7 @@ class InverseModel {
   /// RejectedShortPreview).
   /// \param reference r(k + nk), in the model's output units
   /// \return the command u(k), in the model's input units, and its status
-  InverseStep<Scalar> step(Scalar reference) noexcept {
-    return step(Eigen::Matrix<Scalar, 1, 1>::Constant(reference));
-  }
+  InverseStep<Scalar> step(Scalar reference) noexcept { return step(Eigen::Matrix<Scalar, 1, 1>::Constant(reference)); }
 
   /// The commands for a whole reference r(0..N-1), from rest (this inverse's state is not used or
   /// changed): u(k) for k = 0..N-1 from r(k+nk), ..., r(k+preview()), the reference held at r(N-1)
@@ -280,9 +275,8 @@ class InverseModel {
     bonl::detail::require_finite(reference, "reference");
     const Eigen::Index size = reference.size();
     bonl::detail::require(size > preview(), "the reference must be longer than the inverse's preview (nk + " +
-                                                std::to_string(m_linear.preview()) + " = " +
-                                                std::to_string(preview()) + " samples), got " +
-                                                std::to_string(size));
+                                                std::to_string(m_linear.preview()) + " = " + std::to_string(preview()) +
+                                                " samples), got " + std::to_string(size));
     InverseModel run = *this;
     run.reset();
     InverseRun<Scalar> out{VectorX(size), std::vector<InverseStatus>(static_cast<std::size_t>(size))};
@@ -326,8 +320,8 @@ class InverseModel {
                           "the backlash inverse's backlash_band_per_c must be finite and >= 0, got " +
                               bonl::detail::format_number(options.backlash_band_per_c));
     if constexpr (kHasBacklash) {
-      const Scalar band = static_cast<Scalar>(options.backlash_band) +
-                          static_cast<Scalar>(options.backlash_band_per_c) * model.c();
+      const Scalar band =
+          static_cast<Scalar>(options.backlash_band) + static_cast<Scalar>(options.backlash_band_per_c) * model.c();
       return BacklashInverse<Scalar>(model.c(), band);
     } else {
       (void)model;

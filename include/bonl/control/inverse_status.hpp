@@ -49,17 +49,16 @@ constexpr bool has(InverseStatus status, InverseStatus flags) noexcept {
 /// \param status a step's status
 /// \return true for a refused sample (a Rejected* flag)
 constexpr bool rejected(InverseStatus status) noexcept {
-  return (static_cast<std::uint8_t>(status) &
-          (static_cast<std::uint8_t>(InverseStatus::RejectedNonFinite) |
-           static_cast<std::uint8_t>(InverseStatus::RejectedShortPreview) |
-           static_cast<std::uint8_t>(InverseStatus::RejectedOverflow))) != 0;
+  return (static_cast<std::uint8_t>(status) & (static_cast<std::uint8_t>(InverseStatus::RejectedNonFinite) |
+                                               static_cast<std::uint8_t>(InverseStatus::RejectedShortPreview) |
+                                               static_cast<std::uint8_t>(InverseStatus::RejectedOverflow))) != 0;
 }
 
 /// One value an inverse produced and what it reports about it.
 template <typename Scalar>
 struct InverseStep {
-  Scalar value;           ///< the command u(k) (InverseModel), or the block's input (a block inverse)
-  InverseStatus status;   ///< Exact, or the flags that say where and why it is not
+  Scalar value;          ///< the command u(k) (InverseModel), or the block's input (a block inverse)
+  InverseStatus status;  ///< Exact, or the flags that say where and why it is not
 };
 
 }  // namespace bonl::control

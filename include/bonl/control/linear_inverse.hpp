@@ -44,7 +44,7 @@ namespace bonl::control {
 template <typename Scalar_ = double>
 class LinearInverse {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
+  using Scalar = Scalar_;                                    ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
   /// The inverse of the block with the given coefficients and delay. Throws std::invalid_argument for an

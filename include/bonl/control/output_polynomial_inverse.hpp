@@ -23,7 +23,7 @@ namespace bonl::control {
 template <typename Scalar_ = double>
 class OutputPolynomialInverse {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
+  using Scalar = Scalar_;                                    ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
 
   /// The inverse of the polynomial with coefficients q. Throws std::invalid_argument for an empty or

@@ -51,9 +51,9 @@ namespace bonl::control {
 template <typename Scalar_ = double>
 class PrandtlIshlinskiiInverse {
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
+  using Scalar = Scalar_;                                    ///< the arithmetic type
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size
-  using Block = PrandtlIshlinskiiInput<Scalar>;  ///< the input block the inverse steps (run-time sizes)
+  using Block = PrandtlIshlinskiiInput<Scalar>;              ///< the input block the inverse steps (run-time sizes)
 
   /// The block's f, thresholds and weights (its memory is not taken: the inverse starts at rest) and
   /// the command range [u_min, u_max], finite, with u_min <= 0 <= u_max. Throws std::invalid_argument

@@ -36,17 +36,17 @@ inline void require_finite(double value, const std::string& name) {
 inline constexpr Eigen::Index kMaxOrder = 1000000;
 
 inline void require_order(Eigen::Index value, Eigen::Index minimum, const char* name) {
-  require(value >= minimum, std::string(name) + " must be >= " + std::to_string(minimum) + ", got " +
-                                std::to_string(value));
-  require(value <= kMaxOrder, std::string(name) + " must be <= " + std::to_string(kMaxOrder) + ", got " +
-                                  std::to_string(value));
+  require(value >= minimum,
+          std::string(name) + " must be >= " + std::to_string(minimum) + ", got " + std::to_string(value));
+  require(value <= kMaxOrder,
+          std::string(name) + " must be <= " + std::to_string(kMaxOrder) + ", got " + std::to_string(value));
 }
 
 /// A compile-time order, when fixed, must equal the run-time one given to the constructor.
 inline void require_matches_template(Eigen::Index value, int fixed, const char* name) {
-  require(fixed == Eigen::Dynamic || value == fixed,
-          std::string(name) + " = " + std::to_string(value) +
-              " does not match the compile-time order " + std::to_string(fixed));
+  require(fixed == Eigen::Dynamic || value == fixed, std::string(name) + " = " + std::to_string(value) +
+                                                         " does not match the compile-time order " +
+                                                         std::to_string(fixed));
 }
 
 template <typename Derived>
@@ -61,8 +61,8 @@ void require_finite(const Eigen::DenseBase<Derived>& values, const char* name) {
 
 template <typename Derived>
 void require_size(const Eigen::DenseBase<Derived>& values, Eigen::Index size, const char* name) {
-  require(values.size() == size, std::string(name) + " must have " + std::to_string(size) +
-                                     " entries, got " + std::to_string(values.size()));
+  require(values.size() == size,
+          std::string(name) + " must have " + std::to_string(size) + " entries, got " + std::to_string(values.size()));
 }
 
 /// The first index where `values` is 0 or not above the entry before it (strictly increasing, no 0:
@@ -88,9 +88,8 @@ void assign_checked(Target&& target, const Eigen::MatrixBase<Value>& value, cons
 template <typename A, typename B>
 void require_same_length(const Eigen::DenseBase<A>& a, const char* a_name, const Eigen::DenseBase<B>& b,
                          const char* b_name) {
-  require(a.size() == b.size(), std::string(a_name) + " and " + b_name +
-                                    " must have the same length, got " + std::to_string(a.size()) +
-                                    " and " + std::to_string(b.size()));
+  require(a.size() == b.size(), std::string(a_name) + " and " + b_name + " must have the same length, got " +
+                                    std::to_string(a.size()) + " and " + std::to_string(b.size()));
 }
 
 /// An identification record: u and y of equal length, longer than the number of parameters, finite.

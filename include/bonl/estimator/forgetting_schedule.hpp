@@ -33,13 +33,13 @@ struct ForgettingSchedule {
   double final = 1.0;                  ///< lambda afterwards
 
   // Kind::AdaptiveMemory (memory lengths in samples; lambda = 1 - 1 / memory)
-  double initial_memory = 50;      ///< memory at the first sample
-  double changing_memory = 100;    ///< memory is cut back to this while the prediction error changes
-  double memory_growth = 0.5;      ///< memory added per sample otherwise (0.5: memory ~ samples / 2)
-  double short_window = 50;        ///< time constant of the recent mean squared prediction error
-  double long_window = 200;        ///< time constant of the reference mean squared prediction error
-  double change_ratio = 2.0;       ///< "changing": one mean square more than change_ratio times the other
-  double poor_fit = 0.25;          ///< "explains little": recent mean square error > poor_fit x output variance
+  double initial_memory = 50;    ///< memory at the first sample
+  double changing_memory = 100;  ///< memory is cut back to this while the prediction error changes
+  double memory_growth = 0.5;    ///< memory added per sample otherwise (0.5: memory ~ samples / 2)
+  double short_window = 50;      ///< time constant of the recent mean squared prediction error
+  double long_window = 200;      ///< time constant of the reference mean squared prediction error
+  double change_ratio = 2.0;     ///< "changing": one mean square more than change_ratio times the other
+  double poor_fit = 0.25;        ///< "explains little": recent mean square error > poor_fit x output variance
 
   /// The paper's steps: 0.98 for 200 samples, then 1
   /// \return the schedule
@@ -76,10 +76,9 @@ struct ForgettingSchedule {
     detail::require(in_range(final), "forgetting factor must be in (0, 1], got " + detail::format_number(final));
     detail::require(initial_samples >= 0, "forgetting schedule: initial_samples must be >= 0");
     const auto at_least = [](double value, double minimum, const char* name) {
-      detail::require(std::isfinite(value) && value >= minimum, std::string("adaptive memory: ") + name +
-                                                                    " must be finite and >= " +
-                                                                    detail::format_number(minimum) + ", got " +
-                                                                    detail::format_number(value));
+      detail::require(std::isfinite(value) && value >= minimum,
+                      std::string("adaptive memory: ") + name + " must be finite and >= " +
+                          detail::format_number(minimum) + ", got " + detail::format_number(value));
     };
     at_least(initial_memory, 1.0, "initial_memory");
     at_least(changing_memory, 1.0, "changing_memory");
@@ -124,8 +123,8 @@ class AdaptiveMemory {
     m_mean += (y - m_mean) * m_reference_rate;
     m_variance += ((y - m_mean) * (y - m_mean) - m_variance) * m_reference_rate;
     const double ratio = schedule.change_ratio;
-    const bool changing = ratio * m_recent < m_reference || m_recent > ratio * m_reference ||
-                          m_recent > schedule.poor_fit * m_variance;
+    const bool changing =
+        ratio * m_recent < m_reference || m_recent > ratio * m_reference || m_recent > schedule.poor_fit * m_variance;
     m_memory = changing ? std::min(m_memory + schedule.memory_growth, schedule.changing_memory)
                         : m_memory + schedule.memory_growth;
     return 1.0 - 1.0 / std::max(m_memory, 1.0);

@@ -16,11 +16,11 @@
 #include "../detail/validate.hpp"
 #include "../error.hpp"
 #include "../models/rescale.hpp"
+#include "estimate_recursively.hpp"
+#include "identify_options.hpp"
 #include "output_error.hpp"
 #include "record_view.hpp"
 #include "recursive_estimator.hpp"
-#include "estimate_recursively.hpp"
-#include "identify_options.hpp"
 
 namespace bonl {
 
@@ -89,8 +89,9 @@ struct ScaledRecords {
 template <class Model, class = void>
 struct HasIdentifyStarts : std::false_type {};
 template <class Model>
-struct HasIdentifyStarts<Model, std::void_t<decltype(Model::identify_starts(
-                                    std::declval<const Model&>(), std::declval<const CheckedRecords<typename Model::Scalar>&>()))>>
+struct HasIdentifyStarts<
+    Model, std::void_t<decltype(Model::identify_starts(std::declval<const Model&>(),
+                                                       std::declval<const CheckedRecords<typename Model::Scalar>&>()))>>
     : std::true_type {};
 
 /// The options and settings identify() takes, checked (std::invalid_argument naming the bad one).

@@ -28,15 +28,16 @@ inline const char* to_string(OperatingPointSource source) {
 /// records, the refinement's iterations, whether the data are normalised, and where the operating
 /// point comes from.
 struct IdentifyOptions : EstimatorOptions {
-  int passes = 1;              ///< passes of the recursive estimator over the record (paper's step 5)
-  int refine_iterations = 100; ///< Levenberg-Marquardt iterations of the refinement (0: none)
+  int passes = 1;               ///< passes of the recursive estimator over the record (paper's step 5)
+  int refine_iterations = 100;  ///< Levenberg-Marquardt iterations of the refinement (0: none)
   /// Where identify refines (below), run on the data divided by the power of two nearest each
   /// signal's RMS (u and y, over all records) and return the model in the data's units (rescaled()),
   /// so that the estimators' settings (p0, c0, the forgetting) mean the same on volts, newtons or
   /// micrometres. Powers of two make the scaling exact in floating point. Where identify returns the
   /// recursive estimate as it is, that estimate is the online estimator's, in the data's units.
   bool normalise = true;
-  OperatingPointSource operating_point = OperatingPointSource::Structure;  ///< where the operating point (u0, y0) comes from
+  OperatingPointSource operating_point =
+      OperatingPointSource::Structure;  ///< where the operating point (u0, y0) comes from
 };
 
 }  // namespace bonl

@@ -1,7 +1,7 @@
 #pragma once
 // Where identify() starts a feedback model (nonlinear feedback, Bouc-Wen feedback) besides its
-// recursive estimates: with the loop open. The recursive estimates fit the feedback with the measured output in the loop; in a free run
-// the loop sees the model's own output, and a stiffening feedback (a cubic spring) can then diverge
+// recursive estimates: with the loop open. The recursive estimates fit the feedback with the measured output in the
+// loop; in a free run the loop sees the model's own output, and a stiffening feedback (a cubic spring) can then diverge
 // from every recursive estimate (on Silverbox with three feedback taps all of them did), which left
 // the refinement nothing to start from. The open loop (the records' best linear approximation, no
 // feedback) simulates like a stable linear model, so the refinement always has a finite start, and

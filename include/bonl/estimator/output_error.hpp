@@ -28,8 +28,8 @@ namespace bonl {
 /// What refine_output_error() did: its costs before and after, its iterations, and which start won.
 struct RefinementReport {
   double initial_cost = std::numeric_limits<double>::infinity();  ///< mean squared simulation error
-  double final_cost = std::numeric_limits<double>::infinity();  ///< mean squared simulation error at the end
-  int iterations = 0;  ///< Levenberg-Marquardt iterations taken
+  double final_cost = std::numeric_limits<double>::infinity();    ///< mean squared simulation error at the end
+  int iterations = 0;                                             ///< Levenberg-Marquardt iterations taken
   bool reflected = false;  ///< a start's linear block was unstable and had its poles reflected inside
   int start = 0;           ///< which start the result was refined from (refine_output_error of several)
 };
@@ -137,8 +137,8 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
         new_cost = simulation_cost(trial, records, y, candidate_simulated, scratch);
         if (new_cost < cost) {
           // Predicted decrease of the sum of squares: step' (gradient + damping D step).
-          const double predicted = static_cast<double>(
-              step.dot(gradient) + Scalar(damping) * step.dot(scale.cwiseProduct(step)));
+          const double predicted =
+              static_cast<double>(step.dot(gradient) + Scalar(damping) * step.dot(scale.cwiseProduct(step)));
           const double rho = predicted > 0.0 ? (cost - new_cost) * samples / predicted : 1.0;
           damping = damping_after_kept_step(damping, rho);
           accepted = true;
@@ -217,7 +217,8 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
   for (std::size_t i = 0; i < candidates.size() && max_iterations > 0; ++i) {
     if (!std::isfinite(costs[i])) continue;
     RefinementReport stage;
-    const Model refined = detail::levenberg_marquardt(candidates[i], first_part.records(), max_iterations, dampings[i], stage);
+    const Model refined =
+        detail::levenberg_marquardt(candidates[i], first_part.records(), max_iterations, dampings[i], stage);
     local.iterations += stage.iterations;
     // Kept only where it simulates all the records better (on one stage, always).
     const double cost = detail::simulation_cost(refined, records.records(), y, simulated, scratch);
@@ -262,8 +263,8 @@ Model refine_output_error(const std::vector<Model>& starts, const Records<typena
 /// \param report when not null, filled with the costs and iterations
 /// \return the refined model that simulates the records best
 template <class Model>
-Model refine_output_error(const Model& start, const Records<typename Model::Scalar>& records,
-                          int max_iterations = 100, RefinementReport* report = nullptr) {
+Model refine_output_error(const Model& start, const Records<typename Model::Scalar>& records, int max_iterations = 100,
+                          RefinementReport* report = nullptr) {
   return refine_output_error(std::vector<Model>{start}, records, max_iterations, report);
 }
 
@@ -279,8 +280,8 @@ Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, con
                           int max_iterations = 100, RefinementReport* report = nullptr) {
   const typename Model::VectorX input = u, output = y;
   return refine_output_error(std::vector<Model>{start},
-                             CheckedRecords<typename Model::Scalar>(input, output, start.num_params()),
-                             max_iterations, report);
+                             CheckedRecords<typename Model::Scalar>(input, output, start.num_params()), max_iterations,
+                             report);
 }
 
 }  // namespace bonl

@@ -27,7 +27,7 @@ namespace bonl {
 /// \return r_1..r_np, in the units of u
 template <class Model>
 typename Model::Thresholds play_thresholds_from_data(const Model& structure,
-                                                    const Records<typename Model::Scalar>& records) {
+                                                     const Records<typename Model::Scalar>& records) {
   using Scalar = typename Model::Scalar;
   Scalar low = std::numeric_limits<Scalar>::infinity(), high = -low;
   for (const auto& record : records) {

@@ -39,8 +39,7 @@ struct RecordView {
   Eigen::Map<const Vector> y;  ///< the measured output y
 
  private:
-  RecordView(const Scalar* input, const Scalar* output, Eigen::Index samples)
-      : u(input, samples), y(output, samples) {}
+  RecordView(const Scalar* input, const Scalar* output, Eigen::Index samples) : u(input, samples), y(output, samples) {}
 };
 
 /// Several records of one system (experiments, segments), identified together.
@@ -173,8 +172,8 @@ Eigen::Matrix<Scalar, Eigen::Dynamic, 1> stacked_outputs(const Records<Scalar>& 
 /// The free run of each record from rest, one after another into `out`; false as soon as one leaves
 /// the finite numbers. `buffer` is scratch space for more than one record.
 template <class Model>
-bool simulate_records(const Model& model, const Records<typename Model::Scalar>& records,
-                      typename Model::VectorX& out, typename Model::VectorX& buffer) {
+bool simulate_records(const Model& model, const Records<typename Model::Scalar>& records, typename Model::VectorX& out,
+                      typename Model::VectorX& buffer) {
   if (records.size() == 1) return model.try_simulate(records[0].u, out);
   Eigen::Index total = 0;
   for (const auto& record : records) total += record.u.size();

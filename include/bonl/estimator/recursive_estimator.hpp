@@ -81,8 +81,8 @@ struct EstimatorOptions {
   void validate() const {
     resolved_forgetting().validate();
     const double p0_value = resolved_p0();
-    detail::require(std::isfinite(p0_value) && p0_value > 0.0, "p0 (initial covariance scale) must be finite and > 0, got " +
-                                                                   detail::format_number(p0_value));
+    detail::require(std::isfinite(p0_value) && p0_value > 0.0,
+                    "p0 (initial covariance scale) must be finite and > 0, got " + detail::format_number(p0_value));
     detail::require(internal_refresh >= 1, "internal_refresh must be >= 1");
     const double ceiling = resolved_trace_ceiling();
     detail::require(ceiling >= 1.0, "trace_ceiling must be >= 1 (a multiple of trace(P(0))) or infinity, got " +
@@ -105,14 +105,14 @@ enum class UpdateStatus {
 
 /// Counters since the last reset(): what the safeguards did.
 struct EstimatorHealth {
-  bool diverged = false;                   ///< a NumericalFailure happened (cleared by recover()/reset())
-  Eigen::Index failures = 0;               ///< updates refused for numerical reasons
-  Eigen::Index consecutive_failures = 0;   ///< refused in a row, up to the last update
-  Eigen::Index forgetting_limited = 0;     ///< updates whose forgetting the trace ceiling reduced
-  Eigen::Index recoveries = 0;             ///< automatic covariance resets (EstimatorOptions::recover_after)
-  Eigen::Index internal_restarts = 0;      ///< internal variables restarted because they became non-finite
-  Eigen::Index projections = 0;            ///< output_error updates shortened to keep the linear block stable
-  WindowRefinementCounts window;           ///< what the output-error method's window refinement did
+  bool diverged = false;                  ///< a NumericalFailure happened (cleared by recover()/reset())
+  Eigen::Index failures = 0;              ///< updates refused for numerical reasons
+  Eigen::Index consecutive_failures = 0;  ///< refused in a row, up to the last update
+  Eigen::Index forgetting_limited = 0;    ///< updates whose forgetting the trace ceiling reduced
+  Eigen::Index recoveries = 0;            ///< automatic covariance resets (EstimatorOptions::recover_after)
+  Eigen::Index internal_restarts = 0;     ///< internal variables restarted because they became non-finite
+  Eigen::Index projections = 0;           ///< output_error updates shortened to keep the linear block stable
+  WindowRefinementCounts window;          ///< what the output-error method's window refinement did
 };
 
 /// Recorded history of an estimator (Estimator::start_recording): one column / entry per update,
@@ -121,7 +121,7 @@ template <typename Scalar>
 struct EstimatorTrajectory {
   std::vector<Eigen::Index> sample;  ///< running sample number since reset() (not since the pass)
   Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> theta;  ///< num_params x samples, after each update
-  std::vector<Scalar> internal;       ///< the model's internal variable x(k) the update used (NaN for ARX)
+  std::vector<Scalar> internal;      ///< the model's internal variable x(k) the update used (NaN for ARX)
   std::vector<UpdateStatus> status;  ///< what each update did
 };
 
@@ -129,12 +129,11 @@ namespace detail {
 template <class M, class = void>
 struct is_model : std::false_type {};
 template <class M>
-struct is_model<M, std::void_t<typename M::Scalar, typename M::Params, typename M::KeyTerms,
-                               typename M::OutputErrorTerms, typename M::VectorX,
-                               decltype(M::kNumParams), decltype(M::kHasInternalVariables),
-                               decltype(std::declval<const M&>().theta()),
-                               decltype(std::declval<const M&>().num_params()),
-                               decltype(std::declval<const M&>().constrain(std::declval<typename M::Params&>()))>>
+struct is_model<M,
+                std::void_t<typename M::Scalar, typename M::Params, typename M::KeyTerms, typename M::OutputErrorTerms,
+                            typename M::VectorX, decltype(M::kNumParams), decltype(M::kHasInternalVariables),
+                            decltype(std::declval<const M&>().theta()), decltype(std::declval<const M&>().num_params()),
+                            decltype(std::declval<const M&>().constrain(std::declval<typename M::Params&>()))>>
     : std::true_type {};
 }  // namespace detail
 
@@ -144,14 +143,16 @@ struct is_model<M, std::void_t<typename M::Scalar, typename M::Params, typename 
 /// noexcept, with numerical safeguards (docs/reference/numerical_safeguards.md).
 template <class Model>
 class Estimator {
-  static_assert(detail::is_model<Model>::value,
-                "bonl::Estimator<Model>: Model must provide Scalar, Params, VectorX, KeyTerms, OutputErrorTerms, kNumParams, "
-                "kHasInternalVariables, theta(), num_params() and constrain() (see the model concept in bonl/models.hpp)");
+  static_assert(
+      detail::is_model<Model>::value,
+      "bonl::Estimator<Model>: Model must provide Scalar, Params, VectorX, KeyTerms, OutputErrorTerms, kNumParams, "
+      "kHasInternalVariables, theta(), num_params() and constrain() (see the model concept in bonl/models.hpp)");
 
  public:
   using Scalar = typename Model::Scalar;  ///< the model's arithmetic type
   using Params = typename Model::Params;  ///< the model's parameter vector
-  using Covariance = Eigen::Matrix<Scalar, Model::kNumParams, Model::kNumParams>;  ///< the covariance P (fixed size when the model's orders are)
+  using Covariance = Eigen::Matrix<Scalar, Model::kNumParams,
+                                   Model::kNumParams>;  ///< the covariance P (fixed size when the model's orders are)
   using Settings = ModelSettings<Model>;  ///< what the model adds to the options (NoEstimatorSettings if nothing)
 
   /// `structure` gives the orders; `settings` are the model's own (P-H-W: c0 and backlash_hold). The
@@ -432,7 +433,7 @@ class Estimator {
     const Scalar used = outlier ? std::clamp(error, -bound, bound) : error;
     m_last_outlier = outlier;
     m_error_scale = m_error_scale > Scalar(0) ? m_error_scale + (std::abs(error) - m_error_scale) * Scalar(kErrorRate)
-                                               : std::abs(error);
+                                              : std::abs(error);
     m_step = m_rls.theta();
     UpdateStatus status = UpdateStatus::Updated;
     if (m_rls.update_with_error(simulated.sensitivity, used, lambda, m_max_trace)) {
@@ -462,8 +463,8 @@ class Estimator {
   /// covariance (within the trace ceiling) and free run replace the recursion's.
   void refine_window(Scalar u, Scalar y, Scalar error, Scalar lambda) noexcept {
     m_window->push(u, y, error);
-    const double memory = lambda < Scalar(1) ? 1.0 / (1.0 - static_cast<double>(lambda))
-                                             : std::numeric_limits<double>::infinity();
+    const double memory =
+        lambda < Scalar(1) ? 1.0 / (1.0 - static_cast<double>(lambda)) : std::numeric_limits<double>::infinity();
     if (m_window->advance(m_rls.theta(), m_outputs, memory)) {
       const auto& covariance = m_window->covariance();
       const Scalar trace = covariance.trace();
@@ -539,9 +540,9 @@ class Estimator {
   }
 
   Model m_model;
-  Scalar m_u0 = Scalar(0), m_y0 = Scalar(0);  // the structure's operating point
-  typename Model::KeyTerms m_terms;           // equation_error and paper
-  typename Model::OutputErrorTerms m_outputs; // output_error
+  Scalar m_u0 = Scalar(0), m_y0 = Scalar(0);        // the structure's operating point
+  typename Model::KeyTerms m_terms;                 // equation_error and paper
+  typename Model::OutputErrorTerms m_outputs;       // output_error
   std::optional<WindowRefinement<Model>> m_window;  // output_error, unless options.window.enabled is false
   Rls<Scalar, Model::kNumParams> m_rls;
   Params m_theta_internal;  // equation_error: the copy of theta the internal variables use

@@ -151,8 +151,8 @@ class Rls {
   using StorageMatrix = Eigen::Matrix<Scalar_, kStorage, kStorage>;
 
  public:
-  using Scalar = Scalar_;  ///< the arithmetic type
-  using Vector = Eigen::Matrix<Scalar, N_, 1>;  ///< theta and the regressor phi
+  using Scalar = Scalar_;                        ///< the arithmetic type
+  using Vector = Eigen::Matrix<Scalar, N_, 1>;   ///< theta and the regressor phi
   using Matrix = Eigen::Matrix<Scalar, N_, N_>;  ///< the covariance P
 
   /// Run-time sizes up to this many parameters run a kernel with its vector lengths fixed at
@@ -374,9 +374,9 @@ class Rls {
   }
 
   Vector m_theta;
-  StorageMatrix m_M;      // P / scale in the top-left n x n corner, zero padding to padded_size(n)
+  StorageMatrix m_M;  // P / scale in the top-left n x n corner, zero padding to padded_size(n)
   detail::RlsScalars<Scalar> m_state;
-  Vector m_next;          // scratch for the generic kernel (run-time sizes above kMaxCompiledSize)
+  Vector m_next;            // scratch for the generic kernel (run-time sizes above kMaxCompiledSize)
   StorageVector m_scratch;  // scratch for the generic kernel (run-time sizes above kMaxCompiledSize)
 };
 

@@ -55,13 +55,13 @@ inline const char* to_string(SelectionCriterion criterion) {
 /// identification's options.
 struct SelectOptions {
   SelectionCriterion criterion = SelectionCriterion::Validation;  ///< how the candidates are ranked
-  double validation_fraction = 0.25;  ///< the held-out last part of every record, in (0, 1)
+  double validation_fraction = 0.25;                              ///< the held-out last part of every record, in (0, 1)
   /// Validation only: each held-out part is scored as a test record with a state-initialisation window
   /// of this many samples is (simulated after them, from their measured values, and scored after
   /// them) instead of as the continuation of its record simulated from rest; 0: no window.
   Eigen::Index window = 0;
-  unsigned threads = 0;               ///< select()'s threads; 0: one per hardware thread
-  IdentifyOptions identify;           ///< for every identification
+  unsigned threads = 0;      ///< select()'s threads; 0: one per hardware thread
+  IdentifyOptions identify;  ///< for every identification
 };
 
 /// One row of a selection's ranked table.
@@ -71,19 +71,19 @@ struct SelectionCandidate {
   /// \param candidate the structure
   explicit SelectionCandidate(const Model& candidate) : structure(candidate) {}
 
-  Model structure;                 ///< the candidate as given
-  double score = std::numeric_limits<double>::infinity();  ///< lower is better; infinity when it failed
-  double fit_mse = std::numeric_limits<double>::infinity();  ///< free-run MSE on the data it was fitted on
+  Model structure;                                                   ///< the candidate as given
+  double score = std::numeric_limits<double>::infinity();            ///< lower is better; infinity when it failed
+  double fit_mse = std::numeric_limits<double>::infinity();          ///< free-run MSE on the data it was fitted on
   double validation_mse = std::numeric_limits<double>::quiet_NaN();  ///< held-out MSE (Validation only)
-  std::string error;               ///< why the candidate has no model; empty when it has one
-  std::optional<Model> model;      ///< the identified model (none when it failed)
+  std::string error;           ///< why the candidate has no model; empty when it has one
+  std::optional<Model> model;  ///< the identified model (none when it failed)
 };
 
 /// What select() returns: the ranked table of the candidates and the best structure identified on all
 /// the records.
 template <class Model>
 struct Selection {
-  SelectionCriterion criterion;  ///< the criterion the table is ranked by
+  SelectionCriterion criterion;                  ///< the criterion the table is ranked by
   std::vector<SelectionCandidate<Model>> table;  ///< best first; ties keep the candidates' order
   Model best;                                    ///< the best structure identified on all the records
 };
@@ -109,10 +109,11 @@ class SelectionData {
   /// \param options the selection's options
   SelectionData(const Records<Scalar>& records, const SelectOptions& options) : m_records(records), m_options(options) {
     const bool validation = options.criterion == SelectionCriterion::Validation;
-    detail::require(options.validation_fraction > 0.0 && options.validation_fraction < 1.0,
-                    "select: validation_fraction must be in (0, 1), got " +
-                        detail::format_number(options.validation_fraction));
-    detail::require(options.window >= 0, "select: window must be an integer >= 0, got " + std::to_string(options.window));
+    detail::require(
+        options.validation_fraction > 0.0 && options.validation_fraction < 1.0,
+        "select: validation_fraction must be in (0, 1), got " + detail::format_number(options.validation_fraction));
+    detail::require(options.window >= 0,
+                    "select: window must be an integer >= 0, got " + std::to_string(options.window));
     detail::require(options.window == 0 || validation,
                     std::string("select: window applies to criterion 'validation' only, got criterion '") +
                         to_string(options.criterion) + "'");

@@ -72,9 +72,11 @@ struct WindowRefinementCounts {
   Eigen::Index iterations = 0;     ///< Levenberg-Marquardt steps kept
   Eigen::Index refused_steps = 0;  ///< trial steps that did not simulate the window better
   Eigen::Index swaps = 0;          ///< refined estimates swapped into the recursion
-  Eigen::Index refusals = 0;       ///< refined estimates not swapped in: the recursion predicted the newest samples as well
-  Eigen::Index reseeds = 0;        ///< restarts with the newest samples only: the recursion's estimate predicted them clearly better and the window worse (a change)
-  Eigen::Index overruns = 0;       ///< restarts because the slices fell behind the ring buffer or a run left the finite numbers
+  Eigen::Index refusals = 0;  ///< refined estimates not swapped in: the recursion predicted the newest samples as well
+  Eigen::Index reseeds = 0;  ///< restarts with the newest samples only: the recursion's estimate predicted them clearly
+                             ///< better and the window worse (a change)
+  Eigen::Index overruns =
+      0;  ///< restarts because the slices fell behind the ring buffer or a run left the finite numbers
 };
 
 /// The window refinement for one Model's output-error estimator. push() each sample (deviations from
@@ -84,8 +86,8 @@ struct WindowRefinementCounts {
 template <class Model>
 class WindowRefinement {
  public:
-  using Scalar = typename Model::Scalar;  ///< the model's arithmetic type
-  using Params = typename Model::Params;  ///< the model's parameter vector
+  using Scalar = typename Model::Scalar;                                       ///< the model's arithmetic type
+  using Params = typename Model::Params;                                       ///< the model's parameter vector
   using Matrix = Eigen::Matrix<Scalar, Model::kNumParams, Model::kNumParams>;  ///< n x n
   using Run = typename Model::OutputErrorTerms;  ///< a free run of the model with its sensitivities
 
@@ -97,12 +99,12 @@ class WindowRefinement {
   /// \param settings the estimator's model settings (for its OutputErrorTerms)
   /// \param radius the estimator's stability radius
   /// \param p0 the estimator's P(0) scale
-  WindowRefinement(const Model& structure, const WindowRefinementOptions& options,
-                   const ModelSettings<Model>& settings, double radius, double p0)
+  WindowRefinement(const Model& structure, const WindowRefinementOptions& options, const ModelSettings<Model>& settings,
+                   double radius, double p0)
       : m_model(structure), m_options(options), m_radius(Scalar(radius)), m_p0(Scalar(p0)),
-        m_capacity(2 * options.length), m_u(static_cast<std::size_t>(m_capacity)),
-        m_y(m_u.size()), m_e(m_u.size()), m_start_run(detail::output_error_terms(structure, settings)),
-        m_trial(m_start_run), m_half_trial(m_start_run), m_half_run(m_start_run), m_catch_up(m_start_run) {
+        m_capacity(2 * options.length), m_u(static_cast<std::size_t>(m_capacity)), m_y(m_u.size()), m_e(m_u.size()),
+        m_start_run(detail::output_error_terms(structure, settings)), m_trial(m_start_run), m_half_trial(m_start_run),
+        m_half_run(m_start_run), m_catch_up(m_start_run) {
     const Eigen::Index n = structure.num_params();
     m_minimum = std::min(options.length, std::max<Eigen::Index>(100, 10 * n));
     m_theta = Params::Zero(n);
@@ -192,9 +194,7 @@ class WindowRefinement {
           budget -= catch_up_steps(budget);
           if (m_position == m_count - m_start && judge_recent(recursion, run)) return true;
           break;
-        case Phase::Solve:
-          solve(recursion, run);
-          return false;  // a solve is a slice of its own
+        case Phase::Solve: solve(recursion, run); return false;  // a solve is a slice of its own
       }
     }
     return false;
@@ -429,13 +429,13 @@ class WindowRefinement {
   Scalar m_radius;
   Scalar m_p0;
   Eigen::Index m_capacity;
-  Eigen::Index m_minimum = 100;  // samples in a window before its first pass
+  Eigen::Index m_minimum = 100;       // samples in a window before its first pass
   std::vector<Scalar> m_u, m_y, m_e;  // the ring buffer: inputs, outputs, the recursion's a-priori errors
-  Eigen::Index m_count = 0;      // samples pushed since the last reset
-  Eigen::Index m_start = 0;      // the window's first sample
-  Eigen::Index m_length = 0;     // the samples the estimate was scored on, from m_start
-  Eigen::Index m_pass_length = 0;  // the samples of the current pass
-  Eigen::Index m_position = 0;   // the phase's next sample, from m_start
+  Eigen::Index m_count = 0;           // samples pushed since the last reset
+  Eigen::Index m_start = 0;           // the window's first sample
+  Eigen::Index m_length = 0;          // the samples the estimate was scored on, from m_start
+  Eigen::Index m_pass_length = 0;     // the samples of the current pass
+  Eigen::Index m_position = 0;        // the phase's next sample, from m_start
   Phase m_phase = Phase::Collect;
   Run m_start_run;   // the window's start state, simulated with m_start_theta
   Run m_trial;       // the trial's run
@@ -446,13 +446,14 @@ class WindowRefinement {
   Params m_start_theta, m_trial_theta, m_half_theta, m_half_trial_theta;
   Params m_delta, m_shift, m_gradient, m_trial_gradient, m_scale;
   Matrix m_normal, m_trial_normal;  // J'J at the estimate and at the trial
-  Eigen::Matrix<Scalar, Eigen::Dynamic, Model::kNumParams, Model::kNumParams == 1 ? Eigen::ColMajor : Eigen::RowMajor> m_rows;  // Jacobian rows not yet in J'J
-  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> m_errors;                                 // their errors
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Model::kNumParams, Model::kNumParams == 1 ? Eigen::ColMajor : Eigen::RowMajor>
+      m_rows;                                         // Jacobian rows not yet in J'J
+  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> m_errors;  // their errors
   Eigen::Index m_filled = 0;
   Matrix m_system, m_covariance;
   Eigen::LDLT<Matrix> m_ldlt;
-  double m_objective = 0.0;  // the estimate's sum of squares over its m_length samples
-  double m_sse_trial = 0.0, m_sse_common = 0.0;  // the trial's, over its pass and over m_length
+  double m_objective = 0.0;                                 // the estimate's sum of squares over its m_length samples
+  double m_sse_trial = 0.0, m_sse_common = 0.0;             // the trial's, over its pass and over m_length
   double m_sse_recent = 0.0, m_sse_recent_recursion = 0.0;  // since the window's end
   double m_damping = 1e-3;
   double m_memory = std::numeric_limits<double>::infinity();  // the recursion's, in samples

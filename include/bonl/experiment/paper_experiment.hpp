@@ -55,7 +55,7 @@ Model paper_model() {
 /// [(rad/s)^2], and how much lower the proposed model's (the last of PaperModels) is, in percent, as
 /// the paper states it from its unrounded values (0 for the proposed model itself).
 struct PublishedScore {
-  double mse = 0.0;  ///< the published validation MSE [(rad/s)^2]
+  double mse = 0.0;                ///< the published validation MSE [(rad/s)^2]
   int proposed_lower_percent = 0;  ///< how much lower the proposed model's MSE is [%]
 };
 
@@ -93,29 +93,31 @@ std::vector<std::pair<std::string, double>> labelled_parameters(const Model& mod
 
 /// What the experiment measured of one identified model, whatever its type.
 struct ModelScores {
-  double mse = 0.0;           ///< validation MSE of the velocity, free-run [(rad/s)^2]; inf: unstable on it
-  Eigen::VectorXd simulated;  ///< the free-run validation velocity [rad/s]; NaN when unstable
-  double online_mse = 0.0;    ///< the same for the recursive estimate alone (one pass, no refinement)
+  double mse = 0.0;                    ///< validation MSE of the velocity, free-run [(rad/s)^2]; inf: unstable on it
+  Eigen::VectorXd simulated;           ///< the free-run validation velocity [rad/s]; NaN when unstable
+  double online_mse = 0.0;             ///< the same for the recursive estimate alone (one pass, no refinement)
   std::vector<double> robustness_mse;  ///< validation MSE on each robustness trajectory, in order
-  double seconds = 0.0;         ///< wall time of identify() [s]
-  double online_seconds = 0.0;  ///< wall time of the one-pass recursive estimate [s]
+  double seconds = 0.0;                ///< wall time of identify() [s]
+  double online_seconds = 0.0;         ///< wall time of the one-pass recursive estimate [s]
 };
 
 /// One model of the experiment: the identified model, the online estimate and their scores.
 template <class Model_>
 struct ModelResult : ModelScores {
-  using Model = Model_;  ///< the model's type
+  using Model = Model_;                               ///< the model's type
   static constexpr const char* kName = Model::kName;  ///< the model's name
-  Model model = paper_model<Model>();         ///< identify(): the recursive estimate refined
-  Model online_model = paper_model<Model>();  ///< the recursive estimator alone after one pass
+  Model model = paper_model<Model>();                 ///< identify(): the recursive estimate refined
+  Model online_model = paper_model<Model>();          ///< the recursive estimator alone after one pass
 };
 
 /// One method's results: a ModelResult for every model of PaperModels, in its order.
 struct MethodResult {
-  using ModelResults = typename ApplyModels<typename MapModels<PaperModels, ModelResult>::type, std::tuple>::type;  ///< a std::tuple of one ModelResult per model of PaperModels
+  using ModelResults =
+      typename ApplyModels<typename MapModels<PaperModels, ModelResult>::type,
+                           std::tuple>::type;  ///< a std::tuple of one ModelResult per model of PaperModels
 
   Method method = Method::OutputError;  ///< the estimation method
-  ModelResults models;  ///< the results, one per model of PaperModels
+  ModelResults models;                  ///< the results, one per model of PaperModels
 
   /// The result of Model (a model of PaperModels).
   /// \return the result, valid while this MethodResult lives
@@ -159,12 +161,12 @@ struct Timings {
 
 /// Everything the paper's experiment gives.
 struct PaperExperimentResult {
-  plant::Parameters parameters;  ///< the plant's parameters
-  PaperExperimentOptions options;  ///< the options the experiment ran with
-  Records records;  ///< the identification and validation records
-  std::vector<MethodResult> methods;      ///< one per entry of kPaperMethods, in its order
+  plant::Parameters parameters;             ///< the plant's parameters
+  PaperExperimentOptions options;           ///< the options the experiment ran with
+  Records records;                          ///< the identification and validation records
+  std::vector<MethodResult> methods;        ///< one per entry of kPaperMethods, in its order
   std::size_t robustness_trajectories = 0;  ///< trajectories of the robustness check (0: not run)
-  Timings seconds;  ///< the stages' wall times
+  Timings seconds;                          ///< the stages' wall times
 
   /// The results of `method`; std::invalid_argument for a method the experiment did not run.
   /// \param method one of kPaperMethods

@@ -24,8 +24,8 @@ struct MeasurementOptions {
   /// the identification input) with the multi-sine's RMS, seed 7. Chosen before any model was
   /// validated on it, and not tuned since.
   plant::Command validation_command;
-  std::uint64_t seed = 1;         ///< sensor-noise seeds of the repeats derive from it
-  plant::Tolerances tolerances;   ///< the plant's integration tolerances
+  std::uint64_t seed = 1;        ///< sensor-noise seeds of the repeats derive from it
+  plant::Tolerances tolerances;  ///< the plant's integration tolerances
 };
 
 /// One processed record, on the output grid.
@@ -64,13 +64,13 @@ Eigen::VectorXd differentiate(const Eigen::VectorXd& x, double ts);
 /// \param options the duration, sample time, repeats, cutoff and tolerances
 /// \param seed the first repeat's noise seed
 /// \return the record on the output grid
-Record measure(const plant::Parameters& parameters, const plant::Command& command,
-               const MeasurementOptions& options, std::uint64_t seed);
+Record measure(const plant::Parameters& parameters, const plant::Command& command, const MeasurementOptions& options,
+               std::uint64_t seed);
 
 /// The identification and the validation records.
 struct Records {
   Record identification;  ///< the record the models are identified on
-  Record validation;  ///< the record they are validated on
+  Record validation;      ///< the record they are validated on
 };
 
 /// Both records: the identification command with seed options.seed, the validation command with

@@ -36,13 +36,13 @@ struct TrackingOptions {
   double reference_rms = 0.1;           ///< [rad/s], about the validation record's velocity RMS
   double period = 20.0;                 ///< [s]
   std::uint64_t reference_seed = 2020;  ///< the reference's seed
-  double ramp = 2.0;       ///< [s]
-  double duration = 80.0;  ///< [s], a whole number of periods
+  double ramp = 2.0;                    ///< [s]
+  double duration = 80.0;               ///< [s], a whole number of periods
   /// When the plant changes (runs under change only), and how.
-  double change_time = 40.0;  ///< [s], a whole number of periods
+  double change_time = 40.0;             ///< [s], a whole number of periods
   double pilot_hysteresis_factor = 2.0;  ///< the pilot valve's hysteresis multiplied by this at change_time
-  double bulk_modulus_factor = 0.7;  ///< the oil's bulk modulus multiplied by this at change_time
-  std::uint64_t noise_seed = 99;  ///< the plant's sensor noise
+  double bulk_modulus_factor = 0.7;      ///< the oil's bulk modulus multiplied by this at change_time
+  std::uint64_t noise_seed = 99;         ///< the plant's sensor noise
   /// The models that feed forward: the paper experiment's, identified by this method.
   Method method = Method::Paper;
   /// P-H-W: the backlash inverse's transition band, per unit of the model's c (docs/how-to/control.md).
@@ -66,14 +66,14 @@ struct TrackingRun {
   std::string controller;
   /// As the tables write it: "PI", "PI + P-H-W", "PI + P-H-W (adaptive)" (paper_label of the model).
   std::string label;
-  bool plant_changes = false;  ///< the plant changed at change_time
-  double rms = 0.0;            ///< RMS of reference - joint rate over [period, duration] [rad/s]
+  bool plant_changes = false;      ///< the plant changed at change_time
+  double rms = 0.0;                ///< RMS of reference - joint rate over [period, duration] [rad/s]
   double rms_before_change = 0.0;  ///< over the period before change_time
   double rms_after_change = 0.0;   ///< over the period from change_time + period on
-  Eigen::VectorXd command;      ///< V(k) applied [V]
-  Eigen::VectorXd feedforward;  ///< the feedforward's part of it [V] (0 for PI)
-  Eigen::VectorXd joint_rate;   ///< the plant's true joint rate at t_k [rad/s]
-  Eigen::Index inexact = 0;     ///< feedforward samples whose InverseStatus was not Exact
+  Eigen::VectorXd command;         ///< V(k) applied [V]
+  Eigen::VectorXd feedforward;     ///< the feedforward's part of it [V] (0 for PI)
+  Eigen::VectorXd joint_rate;      ///< the plant's true joint rate at t_k [rad/s]
+  Eigen::Index inexact = 0;        ///< feedforward samples whose InverseStatus was not Exact
   Eigen::Index rederivations = 0;  ///< adaptive: inverses derived from the estimate
   Eigen::Index refused = 0;        ///< adaptive: estimates the guard refused
 };
@@ -81,9 +81,9 @@ struct TrackingRun {
 /// What the tracking experiment gives: the reference, each controller's command and output, and the
 /// tracking errors.
 struct TrackingResult {
-  TrackingOptions options;  ///< the options it ran with
-  Eigen::VectorXd time;       ///< t_k [s]
-  Eigen::VectorXd reference;  ///< r(t_k) [rad/s]
+  TrackingOptions options;         ///< the options it ran with
+  Eigen::VectorXd time;            ///< t_k [s]
+  Eigen::VectorXd reference;       ///< r(t_k) [rad/s]
   double proportional_gain = 0.0;  ///< the PI's Kc [V / (rad/s)]
   double integral_time = 0.0;      ///< the PI's tau_I [s]
   /// PI, each invertible model's feedforward (and the P-H-W's with the backlash inverse's exact switch, band 0);

@@ -25,8 +25,8 @@
 // Needs nlohmann_json: link bonl::io (not part of bonl::bonl, nor of bonl/bonl.hpp).
 
 #include <Eigen/Core>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -115,9 +115,7 @@ inline Json parse(const std::string& text) {
   const Json::parser_callback_t check_keys = [&keys, &duplicate](int /*depth*/, Json::parse_event_t event,
                                                                  Json& parsed) {
     switch (event) {
-      case Json::parse_event_t::object_start:
-        keys.emplace_back();
-        break;
+      case Json::parse_event_t::object_start: keys.emplace_back(); break;
       case Json::parse_event_t::object_end:
         if (!keys.empty()) keys.pop_back();
         break;
@@ -130,8 +128,7 @@ inline Json parse(const std::string& text) {
           keys.back().push_back(key);
         }
         break;
-      default:
-        break;
+      default: break;
     }
     return true;
   };
@@ -163,8 +160,8 @@ void require_keys(const Json& object, const std::string& where, const Keys& allo
     bool known = false;
     for (const char* key : allowed) known = known || item.key() == key;
     if (!known) {
-      fail("unknown key " + path + item.key() + " (expected " + (where.empty() ? "" : where + " ") + "keys: " +
-           listed + ")");
+      fail("unknown key " + path + item.key() + " (expected " + (where.empty() ? "" : where + " ") + "keys: " + listed +
+           ")");
     }
   }
 }

@@ -44,7 +44,7 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}}}}};
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;  ///< the parameter vector theta (fixed size when the orders are)
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;  ///< a vector of run-time size (outputs, parameter blocks)
-  using Linear = LinearBlock<Scalar, Na_, Nb_>;  ///< the linear block's type (linear_block() returns it)
+  using Linear = LinearBlock<Scalar, Na_, Nb_>;              ///< the linear block's type (linear_block() returns it)
 
   /// A model with the given orders, all parameters zero. Throws std::invalid_argument for an order out
   /// of range or one that differs from the compile-time order.
@@ -107,7 +107,7 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
     detail::no_such_parameter(kName, i);
   }
   VectorX b() const { return m_theta.head(m_nb + 1); }  ///< the numerator coefficients b_0..b_nb \return nb + 1 values
-  VectorX a() const { return m_theta.tail(m_na); }  ///< the denominator coefficients a_1..a_na \return na values
+  VectorX a() const { return m_theta.tail(m_na); }      ///< the denominator coefficients a_1..a_na \return na values
   /// Sets b_0..b_nb (nb + 1 finite values, else std::invalid_argument).
   /// \param b b_0..b_nb
   template <typename T>
@@ -193,9 +193,7 @@ class ARX : public detail::ModelRuns<ARX<Scalar_, Na_, Nb_>> {
     /// estimator calls it after accept() once its update moved theta; the window refinement calls it
     /// on a copy of a run to start that run for another theta.
     /// \param delta the change of theta since the step just accepted
-    void correct(const Params& delta) noexcept {
-      m_linear.correct(delta);
-    }
+    void correct(const Params& delta) noexcept { m_linear.correct(delta); }
     /// Whether the linear block's poles with theta lie inside the circle of the given radius (the
     /// output-error method keeps the estimate where this holds).
     /// \param theta the estimate whose poles are checked

@@ -89,14 +89,34 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
         detail::kIntegratorsOrder}},
       {{{"b", ParameterShape::Vector, 0, "b_0..b_nb", nullptr, false, {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
-        {"alpha", ParameterShape::Number, 0,
-         "the force's stiffness where it is zero: > 0 softens with the amplitude, < 0 stiffens", nullptr, false, {}},
-        {"gamma", ParameterShape::Number, 0, "the law's |dy| w coefficient (beta gamma)", nullptr, false,
+        {"alpha",
+         ParameterShape::Number,
+         0,
+         "the force's stiffness where it is zero: > 0 softens with the amplitude, < 0 stiffens",
+         nullptr,
+         false,
+         {}},
+        {"gamma",
+         ParameterShape::Number,
+         0,
+         "the law's |dy| w coefficient (beta gamma)",
+         nullptr,
+         false,
          {-1, 0, 0, 0}},
-        {"delta", ParameterShape::Number, 0, "the law's dy |w| coefficient (beta delta)", nullptr, false,
+        {"delta",
+         ParameterShape::Number,
+         0,
+         "the law's dy |w| coefficient (beta delta)",
+         nullptr,
+         false,
          {-1, 0, 0, 0}},
-        {"d", ParameterShape::Vector, 1, "d_1..d_nd with d_1 = 1",
-         "the Bouc-Wen feedback model is normalised so that d_1 = 1", false, {}}}}};
+        {"d",
+         ParameterShape::Vector,
+         1,
+         "d_1..d_nd with d_1 = 1",
+         "the Bouc-Wen feedback model is normalised so that d_1 = 1",
+         false,
+         {}}}}};
   /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   /// \copydoc ARX::VectorX
@@ -336,7 +356,9 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     Scalar by_step(const Theta& theta, Scalar w, Scalar dy, Scalar next) const noexcept {
       const Scalar den = denominator(theta, w, dy);
       if (den == kFloor) return theta[m_first] / den;
-      return (theta[m_first] - next * (theta[m_first + 1] * sign(dy) + theta[m_first + 2] * sign(w + theta[m_first] * dy))) / den;
+      return (theta[m_first] -
+              next * (theta[m_first + 1] * sign(dy) + theta[m_first + 2] * sign(w + theta[m_first] * dy))) /
+             den;
     }
     /// weight * d w(k) / d [alpha, gamma, delta] added into out's entries, at w(k) = next.
     template <typename Theta, typename Out>
@@ -360,7 +382,8 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     static constexpr Scalar kFloor = Scalar(0.5);
     template <typename Theta>
     Scalar denominator(const Theta& theta, Scalar w, Scalar dy) const noexcept {
-      const Scalar den = Scalar(1) + theta[m_first + 1] * std::abs(dy) + theta[m_first + 2] * dy * sign(w + theta[m_first] * dy);
+      const Scalar den =
+          Scalar(1) + theta[m_first + 1] * std::abs(dy) + theta[m_first + 2] * dy * sign(w + theta[m_first] * dy);
       return den > kFloor ? den : kFloor;
     }
     Eigen::Index m_first;
@@ -493,8 +516,8 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
       // The force this step makes, for the steps after it (accept() stores it).
       const Scalar w = m_w[0], dy = y - m_y[0];
       m_w_next = m_law.next(theta, w, dy);
-      m_dw_next = m_law.by_force(theta, w, dy) * m_dw.col(0) +
-                  m_law.by_step(theta, w, dy, m_w_next) * (m_psi - m_dy.col(0));
+      m_dw_next =
+          m_law.by_force(theta, w, dy) * m_dw.col(0) + m_law.by_step(theta, w, dy, m_w_next) * (m_psi - m_dy.col(0));
       m_law.add_sensitivity(theta, w, dy, m_w_next, Scalar(1), m_dw_next);
       m_output = y;
       return {y, m_psi, w};
@@ -545,15 +568,15 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
     Law m_law;
     detail::History<Scalar> m_u;
     Eigen::Index m_na, m_nb, m_nk, m_nd, m_first_d, m_ni, m_first_law;
-    VectorX m_y;            // y(k-1), y(k-2), ...: the simulated outputs, newest first (dy(k), h, the integrators)
-    SensitivityLags m_dy;   // their sensitivities, one column each
-    VectorX m_z;            // z(k-1..k-na): the denominator's past, y differenced ni times
-    SensitivityLags m_dz;   // their sensitivities
-    VectorX m_w;            // w(k-1..k-nd): the simulated force
-    SensitivityLags m_dw;   // its sensitivities
+    VectorX m_y;           // y(k-1), y(k-2), ...: the simulated outputs, newest first (dy(k), h, the integrators)
+    SensitivityLags m_dy;  // their sensitivities, one column each
+    VectorX m_z;           // z(k-1..k-na): the denominator's past, y differenced ni times
+    SensitivityLags m_dz;  // their sensitivities
+    VectorX m_w;           // w(k-1..k-nd): the simulated force
+    SensitivityLags m_dw;  // its sensitivities
     Eigen::Matrix<Scalar, Na_, 1> m_work;  // for the stability test
     Params m_psi;
-    Params m_dw_next;       // dw(k), stored by accept()
+    Params m_dw_next;  // dw(k), stored by accept()
     Scalar m_w_next = Scalar(0);
     Scalar m_output = Scalar(0);
   };
@@ -563,7 +586,9 @@ class BoucWenFeedback : public detail::ModelRuns<BoucWenFeedback<Scalar_, Na_, N
   Eigen::Index first_law() const noexcept { return m_nb + 1 + m_na; }
   Eigen::Index first_d() const noexcept { return first_law() + 3; }
   /// d_{j+1} on theta (d_1 = 1).
-  Scalar tap(const Params& theta, Eigen::Index j) const noexcept { return j == 0 ? Scalar(1) : theta[first_d() + j - 1]; }
+  Scalar tap(const Params& theta, Eigen::Index j) const noexcept {
+    return j == 0 ? Scalar(1) : theta[first_d() + j - 1];
+  }
   void set_law(Eigen::Index i, Scalar value, const char* name) {
     detail::require(std::isfinite(value), std::string(name) + " must be finite, got " + detail::format_number(value));
     m_theta[first_law() + i] = value;

@@ -25,7 +25,7 @@ namespace bonl {
 /// orders (PaperOrders, models.hpp), a type with `static constexpr std::array<OrderValue, N> kOrders`.
 struct OrderValue {
   const char* name;  ///< the order's name, as the model's description spells it ("na")
-  int value;  ///< its value
+  int value;         ///< its value
 };
 
 namespace detail {

@@ -110,9 +110,7 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_front.commit(); }
     /// \copydoc ARX::OutputErrorTerms::correct
-    void correct(const Params& delta) noexcept {
-      m_front.correct(delta);
-    }
+    void correct(const Params& delta) noexcept { m_front.correct(delta); }
     /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
 

@@ -33,14 +33,17 @@ class HammersteinWiener
   static constexpr const char* kName = "HammersteinWiener";
   /// \copydoc ARX::kDescription
   static constexpr ModelDescription<6, 5> kDescription{
-      kName,
-      "Hammerstein-Wiener model: the Hammerstein model followed by y = sum_{m=1..r1} q_m x^m (q_1 = 1).",
+      kName, "Hammerstein-Wiener model: the Hammerstein model followed by y = sum_{m=1..r1} q_m x^m (q_1 = 1).",
       detail::concat(detail::front_orders<Na_, Nb_, R_>(),
                      std::array<OrderDescription, 2>{
                          {{"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"}, detail::kIntegratorsOrder}}),
       detail::concat(detail::kFrontParameters,
-                     std::array<ParameterDescription, 1>{{{"q", ParameterShape::Vector, 1, "q_1..q_r1 with q_1 = 1",
-                                                           "the H-W model is normalised so that q_1 = 1", false,
+                     std::array<ParameterDescription, 1>{{{"q",
+                                                           ParameterShape::Vector,
+                                                           1,
+                                                           "q_1..q_r1 with q_1 = 1",
+                                                           "the H-W model is normalised so that q_1 = 1",
+                                                           false,
                                                            {1, -1, 0, 0}}}})};
 
   /// A model with the orders na >= 1, nb >= 1, nk >= 0, r >= 0, r1 in 2..32 (degree of the output
@@ -95,8 +98,7 @@ class HammersteinWiener
     /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const HammersteinWiener& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()),
-          m_output(model.r1(), model.num_params()),
-          m_method(method), m_phi(Params::Zero(model.num_params())) {}
+          m_output(model.r1(), model.num_params()), m_method(method), m_phi(Params::Zero(model.num_params())) {}
     /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept { m_front.reset(); }
     /// \copydoc ARX::KeyTerms::step
@@ -139,9 +141,7 @@ class HammersteinWiener
     /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_front.commit(); }
     /// \copydoc ARX::OutputErrorTerms::correct
-    void correct(const Params& delta) noexcept {
-      m_front.correct(delta.head(m_front_size));
-    }
+    void correct(const Params& delta) noexcept { m_front.correct(delta.head(m_front_size)); }
     /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
 

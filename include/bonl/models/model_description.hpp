@@ -15,9 +15,9 @@
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <tuple>
-#include <stdexcept>
 #include <type_traits>
 
 #include "../detail/validate.hpp"
@@ -49,22 +49,22 @@ enum class ParameterShape {
 /// (rescaled(), models/rescale.hpp). The input polynomial's f_l: sy su^-l; an output polynomial's q_m:
 /// sy^(1 - m); a backlash width: sy; the linear block's a: 1.
 struct ParameterUnits {
-  int y_power = 0;  ///< the power of sy in every entry
+  int y_power = 0;            ///< the power of sy in every entry
   int y_power_per_index = 0;  ///< the power of sy added per index
-  int u_power = 0;  ///< the power of su in every entry
+  int u_power = 0;            ///< the power of su in every entry
   int u_power_per_index = 0;  ///< the power of su added per index
 };
 
 /// One block of parameters, named as the model's setter (set_b) and accessor (b()) name it.
 struct ParameterDescription {
-  const char* name;        ///< "b"
-  ParameterShape shape;  ///< a vector or a single number
-  int first_index;         ///< the index of the first entry: 0 for b_0..b_nb, 1 for a_1..a_na
-  const char* meaning;     ///< one line for documentation: "b_0..b_nb"
-  const char* normalised;  ///< not null: the first entry is fixed to 1, for this reason
-  bool non_negative;       ///< the value must be >= 0 (the backlash half-width)
-  ParameterUnits units;    ///< how its entries change with the units of u and y
-  bool increasing = false; ///< the entries must be strictly increasing and not 0 (the W-H model's knots)
+  const char* name;         ///< "b"
+  ParameterShape shape;     ///< a vector or a single number
+  int first_index;          ///< the index of the first entry: 0 for b_0..b_nb, 1 for a_1..a_na
+  const char* meaning;      ///< one line for documentation: "b_0..b_nb"
+  const char* normalised;   ///< not null: the first entry is fixed to 1, for this reason
+  bool non_negative;        ///< the value must be >= 0 (the backlash half-width)
+  ParameterUnits units;     ///< how its entries change with the units of u and y
+  bool increasing = false;  ///< the entries must be strictly increasing and not 0 (the W-H model's knots)
 };
 
 /// What a model is, stated once (its kDescription): its name, a summary, its NumOrders orders in the
@@ -75,7 +75,8 @@ struct ModelDescription {
   const char* name;     ///< the model's one spelling: C++ kName, Python class, JSON "model", command line
   const char* summary;  ///< its equations in one or two sentences
   std::array<OrderDescription, NumOrders> orders;  ///< the orders, in the constructor's and orders()'s order
-  std::array<ParameterDescription, NumParameters> parameters;  ///< the parameter blocks, in theta's order (parameter(i), set_parameter(i, value))
+  std::array<ParameterDescription, NumParameters>
+      parameters;  ///< the parameter blocks, in theta's order (parameter(i), set_parameter(i, value))
 };
 
 /// A list of model types (bonl::Models); Catch2's TEMPLATE_LIST_TEST_CASE accepts it as it is.
@@ -140,7 +141,8 @@ struct FilterModels<ModelList<First, Rest...>, P> {
   using Tail = typename FilterModels<ModelList<Rest...>, P>::type;
 
  public:
-  using type = std::conditional_t<P<First>::value, typename Prepend<Tail>::type, Tail>;  ///< the models of the list with `P<M>::value`, in order
+  using type = std::conditional_t<P<First>::value, typename Prepend<Tail>::type,
+                                  Tail>;  ///< the models of the list with `P<M>::value`, in order
 };
 
 /// A model of type Model at the given orders (its constructor, called with them in order).

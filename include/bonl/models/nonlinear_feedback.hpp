@@ -58,8 +58,8 @@ template <typename Scalar_ = double, int Na_ = Eigen::Dynamic, int Nb_ = Eigen::
           int Nh_ = Eigen::Dynamic, int Nd_ = Eigen::Dynamic, int Np_ = Eigen::Dynamic>
 class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na_, Nb_, R_, Nh_, Nd_, Np_>> {
   static constexpr int kLinearParams = detail::add_sizes(detail::poly_size(Nb_), Na_);  // b, a
-  static constexpr int kFeedbackParams = detail::add_sizes(
-      detail::add_sizes(R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1, Nh_), Np_);  // f, g, w
+  static constexpr int kFeedbackParams =
+      detail::add_sizes(detail::add_sizes(R_ == Eigen::Dynamic ? Eigen::Dynamic : R_ - 1, Nh_), Np_);  // f, g, w
 
  public:
   /// \copydoc ARX::Scalar
@@ -92,27 +92,48 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
         detail::kIntegratorsOrder}},
       {{{"b", ParameterShape::Vector, 0, "b_0..b_nb", nullptr, false, {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
-        {"f", ParameterShape::Vector, 2, "f_2..f_r, the feedback polynomial's coefficients (none for r = 1)", nullptr,
-         false, {1, -1, 0, 0}},
-        {"knots", ParameterShape::Vector, 1,
+        {"f",
+         ParameterShape::Vector,
+         2,
+         "f_2..f_r, the feedback polynomial's coefficients (none for r = 1)",
+         nullptr,
+         false,
+         {1, -1, 0, 0}},
+        {"knots",
+         ParameterShape::Vector,
+         1,
          "knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated)",
-         nullptr, false, {1, 0, 0, 0}, true},
+         nullptr,
+         false,
+         {1, 0, 0, 0},
+         true},
         {"g", ParameterShape::Vector, 1, "g_1..g_nh, the change of slope outward of each knot", nullptr, false, {}},
-        {"thresholds", ParameterShape::Vector, 1,
-         "r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated)", nullptr, false,
-         {1, 0, 0, 0}, true},
+        {"thresholds",
+         ParameterShape::Vector,
+         1,
+         "r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated)",
+         nullptr,
+         false,
+         {1, 0, 0, 0},
+         true},
         {"w", ParameterShape::Vector, 1, "w_1..w_np, the plays' weights", nullptr, false, {}},
-        {"d", ParameterShape::Vector, 1, "d_1..d_nd with d_1 = 1",
-         "the nonlinear-feedback model is normalised so that d_1 = 1", false, {}}}}};
+        {"d",
+         ParameterShape::Vector,
+         1,
+         "d_1..d_nd with d_1 = 1",
+         "the nonlinear-feedback model is normalised so that d_1 = 1",
+         false,
+         {}}}}};
   /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   /// \copydoc ARX::VectorX
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   /// \copydoc ARX::Linear
   using Linear = LinearBlock<Scalar, Na_, Nb_>;
-  using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;  ///< the hinges' knots (a vector, fixed size when nh is)
-  using Plays = PlayOperators<Scalar, Np_>;  ///< the play operators' type
-  using Thresholds = typename Plays::Vector;  ///< the plays' thresholds (a vector, fixed size when np is)
+  using Knots =
+      typename detail::HingeTerms<Scalar, Nh_>::Knots;  ///< the hinges' knots (a vector, fixed size when nh is)
+  using Plays = PlayOperators<Scalar, Np_>;             ///< the play operators' type
+  using Thresholds = typename Plays::Vector;            ///< the plays' thresholds (a vector, fixed size when np is)
 
   /// A model with the given orders, all parameters zero but d_1 = 1. The knots default to
   /// -floor(nh/2)..-1, 1..ceil(nh/2) and the thresholds to i / (np + 1) (in the units of s): set them
@@ -127,8 +148,8 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// \param nv 0, the output is fed back; 1, its first difference
   /// \param np play operators in the feedback, 0..32
   /// \param ni integrators (poles fixed at 1), 0..2
-  NonlinearFeedback(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index nh,
-                    Eigen::Index nd, Eigen::Index nv, Eigen::Index np = 0, Eigen::Index ni = 0)
+  NonlinearFeedback(Eigen::Index na, Eigen::Index nb, Eigen::Index nk, Eigen::Index r, Eigen::Index nh, Eigen::Index nd,
+                    Eigen::Index nv, Eigen::Index np = 0, Eigen::Index ni = 0)
       : m_na(na), m_nb(nb), m_nk(nk), m_r(r), m_nh(nh), m_nd(nd), m_nv(nv), m_np(np), m_ni(ni) {
     detail::require_order(na, 1, "na");
     detail::require_order(nb, 0, "nb");
@@ -139,8 +160,8 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     detail::require(nh <= 32, "nh (hinges) must be <= 32");
     detail::require_order(nd, 1, "nd (feedback taps)");
     detail::require(nd <= 32, "nd (feedback taps) must be <= 32");
-    detail::require(nv == 0 || nv == 1, "nv must be 0 (the output is fed back) or 1 (its first difference), got " +
-                                            std::to_string(nv));
+    detail::require(nv == 0 || nv == 1,
+                    "nv must be 0 (the output is fed back) or 1 (its first difference), got " + std::to_string(nv));
     detail::require_order(np, 0, "np (plays)");
     detail::require(np <= 32, "np (plays) must be <= 32");
     detail::require_integrators(ni);
@@ -177,9 +198,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   /// \copydoc ARX::orders
-  std::array<Eigen::Index, 9> orders() const noexcept {
-    return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_np, m_ni};
-  }
+  std::array<Eigen::Index, 9> orders() const noexcept { return {m_na, m_nb, m_nk, m_r, m_nh, m_nd, m_nv, m_np, m_ni}; }
 
   /// identify()'s start beside its recursive estimates: the loop open, the records' best linear
   /// approximation as the linear block. nonlinear_feedback_starts belongs to the estimator, a layer
@@ -410,6 +429,7 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     Eigen::Index size() const noexcept { return m_past.rows(); }
     /// P_i(k-1), the plays' values after the last step (before the first: 0, rest).
     Scalar value(Eigen::Index i) const noexcept { return m_past(i, 0); }
+
    private:
     Plays m_plays;
     Past m_past;
@@ -427,10 +447,9 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     /// \copydoc ARX::KeyTerms::KeyTerms
     KeyTerms(const NonlinearFeedback& model, KeyTermMethod /*method*/)
         : m_feedback(model), m_u(model.nk() + model.nb() + 1), m_y(model.lags()), m_z(model.na()),
-          m_integrators(model.ni()), m_na(model.na()),
-          m_nb(model.nb()), m_nk(model.nk()), m_nd(model.nd()), m_first_f(model.first_f()),
-          m_feedback_size(model.r() - 1 + model.nh() + model.np()), m_first_d(model.first_d()), m_plays(model),
-          m_phi(Params::Zero(model.num_params())) {}
+          m_integrators(model.ni()), m_na(model.na()), m_nb(model.nb()), m_nk(model.nk()), m_nd(model.nd()),
+          m_first_f(model.first_f()), m_feedback_size(model.r() - 1 + model.nh() + model.np()),
+          m_first_d(model.first_d()), m_plays(model), m_phi(Params::Zero(model.num_params())) {}
     /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_u.clear();
@@ -603,14 +622,14 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
     Feedback m_feedback;
     detail::History<Scalar> m_u;
     Eigen::Index m_na, m_nb, m_nk, m_nd, m_nv, m_first_f, m_feedback_size, m_first_d, m_first_w, m_ni;
-    PlayHistory m_plays;            // the plays of the simulated s
-    PlaySensitivities m_dplays;     // dP_i(k-1) / dtheta, one column per play
-    SensitivityLags m_dplayed;      // sum_i w_i dP_i(k-1-j) / dtheta, j = 0..nd-1
-    Thresholds m_before;            // the plays' values before the step
-    VectorX m_y;            // y(k-1), y(k-2), ...: the simulated outputs, newest first
-    SensitivityLags m_dy;   // their sensitivities, one column each
-    VectorX m_z;            // z(k-1..k-na): the denominator's past, y differenced ni times
-    SensitivityLags m_dz;   // their sensitivities
+    PlayHistory m_plays;                   // the plays of the simulated s
+    PlaySensitivities m_dplays;            // dP_i(k-1) / dtheta, one column per play
+    SensitivityLags m_dplayed;             // sum_i w_i dP_i(k-1-j) / dtheta, j = 0..nd-1
+    Thresholds m_before;                   // the plays' values before the step
+    VectorX m_y;                           // y(k-1), y(k-2), ...: the simulated outputs, newest first
+    SensitivityLags m_dy;                  // their sensitivities, one column each
+    VectorX m_z;                           // z(k-1..k-na): the denominator's past, y differenced ni times
+    SensitivityLags m_dz;                  // their sensitivities
     Eigen::Matrix<Scalar, Na_, 1> m_work;  // for the stability test
     Params m_psi;
     Scalar m_output = Scalar(0);
@@ -626,7 +645,9 @@ class NonlinearFeedback : public detail::ModelRuns<NonlinearFeedback<Scalar_, Na
   /// feedback's nd (and one more for a first difference) and the integrators' ni.
   Eigen::Index lags() const noexcept { return std::max(m_nd + m_nv, m_ni); }
   /// d_{j+1} on theta (d_1 = 1).
-  Scalar tap(const Params& theta, Eigen::Index j) const noexcept { return j == 0 ? Scalar(1) : theta[first_d() + j - 1]; }
+  Scalar tap(const Params& theta, Eigen::Index j) const noexcept {
+    return j == 0 ? Scalar(1) : theta[first_d() + j - 1];
+  }
 
   Params m_theta;
   Knots m_knots;

@@ -89,8 +89,7 @@ template <typename Scalar>
 Eigen::Matrix<Scalar, Eigen::Dynamic, 1> monic_from_roots(
     const Eigen::Matrix<std::complex<Scalar>, Eigen::Dynamic, 1>& roots) {
   using Complex = std::complex<Scalar>;
-  Eigen::Matrix<Complex, Eigen::Dynamic, 1> product =
-      Eigen::Matrix<Complex, Eigen::Dynamic, 1>::Zero(roots.size() + 1);
+  Eigen::Matrix<Complex, Eigen::Dynamic, 1> product = Eigen::Matrix<Complex, Eigen::Dynamic, 1>::Zero(roots.size() + 1);
   product[0] = Complex(1);
   for (Eigen::Index i = 0; i < roots.size(); ++i) {
     for (Eigen::Index j = i + 1; j >= 1; --j) product[j] -= roots[i] * product[j - 1];
@@ -102,7 +101,7 @@ Eigen::Matrix<Scalar, Eigen::Dynamic, 1> monic_from_roots(
 /// leaves it on the unit circle, moved to magnitude `limit`. Stable denominators come back as they were.
 template <typename A>
 Eigen::Matrix<typename A::Scalar, Eigen::Dynamic, 1> reflected_inside(const Eigen::MatrixBase<A>& a,
-                                                                     typename A::Scalar limit) {
+                                                                      typename A::Scalar limit) {
   using Scalar = typename A::Scalar;
   auto poles = denominator_poles(a);
   bool changed = false;

@@ -69,15 +69,21 @@ class PrandtlIshlinskiiHammerstein
       "Prandtl-Ishlinskii Hammerstein model: input hysteresis w = sum_{l=0..r} f_l u^l + sum_{i=1..np} g_i "
       "play_{r_i}[u] (play_r[u](k) = min(max(P(k-1), u(k) - r), u(k) + r), P = 0 at rest; thresholds r_i "
       "structure), then the linear block (b_0 = 1): x(k) = -sum a_j x(k-j) + sum b_i w(k-nk-i), y = x.",
-      detail::concat(detail::front_orders<Na_, Nb_, R_>(),
-                     std::array<OrderDescription, 2>{
-                         {{"np", 1, 32, Np_, "play operators of the input hysteresis (1..32)"},
-                          detail::kIntegratorsOrder}}),
-      {{detail::kFrontParameters[0], detail::kFrontParameters[1],
+      detail::concat(
+          detail::front_orders<Na_, Nb_, R_>(),
+          std::array<OrderDescription, 2>{
+              {{"np", 1, 32, Np_, "play operators of the input hysteresis (1..32)"}, detail::kIntegratorsOrder}}),
+      {{detail::kFrontParameters[0],
+        detail::kFrontParameters[1],
         {"f", ParameterShape::Vector, 0, "f_0..f_r, the input polynomial", nullptr, false, {1, 0, 0, -1}},
-        {"thresholds", ParameterShape::Vector, 1,
-         "r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated)", nullptr, false,
-         {0, 0, 1, 0}, true},
+        {"thresholds",
+         ParameterShape::Vector,
+         1,
+         "r_1..r_np, the plays' thresholds: strictly increasing, > 0 (structure, not estimated)",
+         nullptr,
+         false,
+         {0, 0, 1, 0},
+         true},
         {"g", ParameterShape::Vector, 1, "g_1..g_np, the plays' weights", nullptr, false, {1, 0, -1, 0}}}}};
   /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
@@ -346,8 +352,8 @@ class PrandtlIshlinskiiHammerstein
 
    private:
     BasisLags m_basis;
-    detail::History<Scalar> m_w;        // the paper's method: w(k-nk-1..k-nk-nb) as estimated
-    detail::History<Scalar, Na_> m_z;   // x(k-1..k-na), differenced where there are integrators
+    detail::History<Scalar> m_w;       // the paper's method: w(k-nk-1..k-nk-nb) as estimated
+    detail::History<Scalar, Na_> m_z;  // x(k-1..k-na), differenced where there are integrators
     detail::IntegratorLags<Scalar> m_integrators;
     KeyTermMethod m_method;
     Eigen::Index m_nb, m_na;
@@ -394,9 +400,7 @@ class PrandtlIshlinskiiHammerstein
     /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_lags.push(m_x, m_psi); }
     /// \copydoc ARX::OutputErrorTerms::correct
-    void correct(const Params& delta) noexcept {
-      m_lags.correct(delta);
-    }
+    void correct(const Params& delta) noexcept { m_lags.correct(delta); }
     /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept {
       return detail::roots_inside(theta.template segment<Na_>(m_basis.size() + m_nb, m_na), radius, m_work);

@@ -31,9 +31,7 @@ struct BacklashEstimatorSettings {
   /// The settings for the data multiplied by u_scale and y_scale: c0 is in the output's units.
   /// \param y_scale the output's factor (nothing here is in the input's units)
   /// \return the settings for the scaled data
-  BacklashEstimatorSettings rescaled(double /*u_scale*/, double y_scale) const {
-    return {c0 * y_scale, backlash_hold};
-  }
+  BacklashEstimatorSettings rescaled(double /*u_scale*/, double y_scale) const { return {c0 * y_scale, backlash_hold}; }
 };
 
 /// The Pseudo-Hammerstein-Wiener (P-H-W) model: the Hammerstein model followed by a symmetric,
@@ -276,8 +274,8 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
    private:
     detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;
     Eigen::Index m_last;
-    Params m_psi;            // d y(k) / d theta of the last step
-    Params m_dy;             // the model's own y(k-1), the backlash memory, and its sensitivity
+    Params m_psi;  // d y(k) / d theta of the last step
+    Params m_dy;   // the model's own y(k-1), the backlash memory, and its sensitivity
     Scalar m_y = Scalar(0);
     Scalar m_output = Scalar(0);  // y(k) of the last step
     Eigen::Index m_hold;

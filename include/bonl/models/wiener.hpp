@@ -35,8 +35,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   /// \copydoc ARX::Scalar
   using Scalar = Scalar_;
   /// \copydoc ARX::kNumParams
-  static constexpr int kNumParams =
-      detail::add_sizes(kLinearParams, R1_ == Eigen::Dynamic ? Eigen::Dynamic : R1_ - 1);
+  static constexpr int kNumParams = detail::add_sizes(kLinearParams, R1_ == Eigen::Dynamic ? Eigen::Dynamic : R1_ - 1);
   /// The Wiener model has an unmeasured internal variable, x: its key terms estimate it.
   static constexpr bool kHasInternalVariables = true;
   /// \copydoc ARX::kName
@@ -51,11 +50,21 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
         {"nk", 0, detail::kMaxOrder, Eigen::Dynamic, "pure delay in samples"},
         {"r1", 2, 32, R1_, "degree of the output polynomial (2..32)"},
         detail::kIntegratorsOrder}},
-      {{{"b", ParameterShape::Vector, 0, "b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain)", nullptr, false,
+      {{{"b",
+         ParameterShape::Vector,
+         0,
+         "b_0..b_nb (b_0 is free: q_1 = 1 fixes the gain)",
+         nullptr,
+         false,
          {1, 0, -1, 0}},
         {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
-        {"q", ParameterShape::Vector, 1, "q_1..q_r1 with q_1 = 1", "the Wiener model is normalised so that q_1 = 1",
-         false, {1, -1, 0, 0}}}}};
+        {"q",
+         ParameterShape::Vector,
+         1,
+         "q_1..q_r1 with q_1 = 1",
+         "the Wiener model is normalised so that q_1 = 1",
+         false,
+         {1, -1, 0, 0}}}}};
   /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   /// \copydoc ARX::VectorX
@@ -163,8 +172,8 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     /// \copydoc ARX::KeyTerms::KeyTerms
     /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const Wiener& model, KeyTermMethod method)
-        : m_linear(model.na(), model.nb(), model.nk(), model.ni()), m_output(model.r1(), model.num_params()), m_method(method),
-          m_linear_size(model.nb() + 1 + model.na()), m_phi(Params::Zero(model.num_params())) {}
+        : m_linear(model.na(), model.nb(), model.nk(), model.ni()), m_output(model.r1(), model.num_params()),
+          m_method(method), m_linear_size(model.nb() + 1 + model.na()), m_phi(Params::Zero(model.num_params())) {}
     /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_linear.reset();
@@ -206,7 +215,8 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
   /// dy/d[b, a] = q'(x) dx/d[b, a] and dy/dq_m = x^m. Nothing to hold at the start.
   class OutputErrorTerms {
    public:
-    using Sensitivity = Eigen::Matrix<Scalar, kLinearParams, 1>;  ///< d x(k) / d[b, a], the linear block's part of the sensitivity
+    using Sensitivity =
+        Eigen::Matrix<Scalar, kLinearParams, 1>;  ///< d x(k) / d[b, a], the linear block's part of the sensitivity
 
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const Wiener& model)
@@ -229,9 +239,7 @@ class Wiener : public detail::ModelRuns<Wiener<Scalar_, Na_, Nb_, R1_>>,
     /// \copydoc ARX::OutputErrorTerms::accept()
     void accept() noexcept { m_linear.commit(m_dx); }
     /// \copydoc ARX::OutputErrorTerms::correct
-    void correct(const Params& delta) noexcept {
-      m_linear.correct(delta.template head<kLinearParams>(m_dx.size()));
-    }
+    void correct(const Params& delta) noexcept { m_linear.correct(delta.template head<kLinearParams>(m_dx.size())); }
     /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept { return m_linear.stable(theta, radius); }
 

@@ -29,8 +29,8 @@
 #include "../detail/history.hpp"
 #include "../detail/stability.hpp"
 #include "../detail/validate.hpp"
-#include "detail/linear_terms.hpp"
 #include "detail/hinge_terms.hpp"
+#include "detail/linear_terms.hpp"
 #include "detail/model_runs.hpp"
 #include "detail/output_polynomial_terms.hpp"
 #include "detail/simulated_lags.hpp"
@@ -74,29 +74,50 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
         {"na2", 1, detail::kMaxOrder, Na2_, "poles of the second linear block (na2 >= 1)"},
         {"nb2", 0, detail::kMaxOrder, Nb2_, "B2 has nb2 + 1 coefficients b2_0..b2_nb2, b2_0 = 1"},
         detail::kIntegratorsOrder}},
-      {{{"b1", ParameterShape::Vector, 0, "b1_0..b1_nb1 (free: f_1 = b2_0 = 1 fix the other gains)", nullptr,
-         false, {1, 0, -1, 0}},
+      {{{"b1",
+         ParameterShape::Vector,
+         0,
+         "b1_0..b1_nb1 (free: f_1 = b2_0 = 1 fix the other gains)",
+         nullptr,
+         false,
+         {1, 0, -1, 0}},
         {"a1", ParameterShape::Vector, 1, "a1_1..a1_na1", nullptr, false, {}},
-        {"f", ParameterShape::Vector, 1, "f_1..f_r with f_1 = 1",
-         "the Wiener-Hammerstein model is normalised so that f_1 = 1", false, {1, -1, 0, 0}},
-        {"knots", ParameterShape::Vector, 1,
+        {"f",
+         ParameterShape::Vector,
+         1,
+         "f_1..f_r with f_1 = 1",
+         "the Wiener-Hammerstein model is normalised so that f_1 = 1",
+         false,
+         {1, -1, 0, 0}},
+        {"knots",
+         ParameterShape::Vector,
+         1,
          "knots_1..knots_nh, where the slope changes: strictly increasing, none at 0 (structure, not estimated)",
-         nullptr, false, {1, 0, 0, 0}, true},
+         nullptr,
+         false,
+         {1, 0, 0, 0},
+         true},
         {"g", ParameterShape::Vector, 1, "g_1..g_nh, the change of slope outward of each knot", nullptr, false, {}},
-        {"b2", ParameterShape::Vector, 0, "b2_0..b2_nb2 with b2_0 = 1",
-         "the Wiener-Hammerstein model is normalised so that b2_0 = 1", false, {}},
+        {"b2",
+         ParameterShape::Vector,
+         0,
+         "b2_0..b2_nb2 with b2_0 = 1",
+         "the Wiener-Hammerstein model is normalised so that b2_0 = 1",
+         false,
+         {}},
         {"a2", ParameterShape::Vector, 1, "a2_1..a2_na2", nullptr, false, {}}}}};
   /// \copydoc ARX::Params
   using Params = Eigen::Matrix<Scalar, kNumParams, 1>;
   /// \copydoc ARX::VectorX
   using VectorX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  using First = LinearBlock<Scalar, Na1_, Nb1_>;  ///< the first linear block's type (first_block() returns it)
+  using First = LinearBlock<Scalar, Na1_, Nb1_>;   ///< the first linear block's type (first_block() returns it)
   using Second = LinearBlock<Scalar, Na2_, Nb2_>;  ///< the second linear block's type (second_block() returns it)
   using Middle = OutputPolynomial<Scalar, R_>;  ///< the static nonlinearity's polynomial part, as an output polynomial
   /// Both linear blocks' denominators: what pole_radius() and the refinement's stabilisation look at.
   static constexpr std::size_t kLinearBlocks = 2;
 
-  using Knots = typename detail::HingeTerms<Scalar, Nh_>::Knots;  ///< the hinges' knots (a vector, fixed size when nh is)
+  using Knots =
+      typename detail::HingeTerms<Scalar, Nh_>::Knots;  ///< the hinges' knots (a vector, fixed size when nh is)
 
   /// A model with the given orders, all parameters zero but f_1 = 1 and b2_0 = 1. The knots default to
   /// -floor(nh/2)..-1, 1..ceil(nh/2) (in the units of x1, which are y's): set them where the slope
@@ -156,9 +177,7 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// \copydoc ARX::num_params
   Eigen::Index num_params() const noexcept { return m_theta.size(); }
   /// \copydoc ARX::orders
-  std::array<Eigen::Index, 8> orders() const noexcept {
-    return {m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2, m_ni};
-  }
+  std::array<Eigen::Index, 8> orders() const noexcept { return {m_na1, m_nb1, m_nk, m_r, m_nh, m_na2, m_nb2, m_ni}; }
 
   /// \copydoc ARX::theta
   const Params& theta() const noexcept { return m_theta; }
@@ -377,10 +396,9 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     /// \copydoc ARX::KeyTerms::KeyTerms
     /// \param method KeyTermMethod::EquationError or KeyTermMethod::Paper: where the past internal variables come from
     KeyTerms(const WienerHammerstein& model, KeyTermMethod method)
-        : m_first(model.na1(), model.nb1(), model.nk()),
-          m_middle(model), m_w(model.nb2()), m_y(model.na2()), m_integrators(model.ni()), m_method(method),
-          m_first_size(model.nb1() + 1 + model.na1()), m_second(model.first_b2()), m_nb2(model.nb2()),
-          m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
+        : m_first(model.na1(), model.nb1(), model.nk()), m_middle(model), m_w(model.nb2()), m_y(model.na2()),
+          m_integrators(model.ni()), m_method(method), m_first_size(model.nb1() + 1 + model.na1()),
+          m_second(model.first_b2()), m_nb2(model.nb2()), m_na2(model.na2()), m_phi(Params::Zero(model.num_params())) {}
     /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_first.reset();
@@ -449,13 +467,15 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
   /// so the past w and their sensitivities are kept (nb2 of them) as the past y and theirs (SimulatedLags).
   class OutputErrorTerms {
    public:
-    using FirstSensitivity = Eigen::Matrix<Scalar, kFirstParams, 1>;  ///< d x1(k) / d[b1, a1], the first block's part of the sensitivity
-    using FrontSensitivity = Eigen::Matrix<Scalar, kFrontParams, 1>;  ///< d w(k) / d[b1, a1, f, g], the front's part of the sensitivity
+    using FirstSensitivity =
+        Eigen::Matrix<Scalar, kFirstParams, 1>;  ///< d x1(k) / d[b1, a1], the first block's part of the sensitivity
+    using FrontSensitivity =
+        Eigen::Matrix<Scalar, kFrontParams, 1>;  ///< d w(k) / d[b1, a1, f, g], the front's part of the sensitivity
 
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     explicit OutputErrorTerms(const WienerHammerstein& model)
-        : m_first(model.na1(), model.nb1(), model.nk(), model.nb1() + 1 + model.na1()),
-          m_middle(model), m_y(model.na2(), model.num_params(), model.ni()), m_nb2(model.nb2()), m_na2(model.na2()),
+        : m_first(model.na1(), model.nb1(), model.nk(), model.nb1() + 1 + model.na1()), m_middle(model),
+          m_y(model.na2(), model.num_params(), model.ni()), m_nb2(model.nb2()), m_na2(model.na2()),
           m_first_size(model.nb1() + 1 + model.na1()), m_front_size(m_first_size + model.r() - 1 + model.nh()),
           m_dx(FirstSensitivity::Zero(m_first_size)), m_dw(FrontSensitivity::Zero(m_front_size)),
           m_w_lags(Eigen::Matrix<Scalar, Nb2_, 1>::Zero(model.nb2())),
@@ -520,11 +540,11 @@ class WienerHammerstein : public detail::ModelRuns<WienerHammerstein<Scalar_, Na
     MiddleTerms m_middle;
     detail::SimulatedLags<Scalar, Na2_, kNumParams> m_y;
     Eigen::Index m_nb2, m_na2, m_first_size, m_front_size;
-    FirstSensitivity m_dx;   // d x1(k) / d [b1, a1]
-    FrontSensitivity m_dw;   // d w(k) / d [b1, a1, f]
-    Eigen::Matrix<Scalar, Nb2_, 1> m_w_lags;                 // w(k-1..k-nb2)
-    Eigen::Matrix<Scalar, kFrontParams, Nb2_> m_dw_lags;     // their sensitivities, one column each
-    Eigen::Matrix<Scalar, Na2_, 1> m_work;                   // for the stability test
+    FirstSensitivity m_dx;                                // d x1(k) / d [b1, a1]
+    FrontSensitivity m_dw;                                // d w(k) / d [b1, a1, f]
+    Eigen::Matrix<Scalar, Nb2_, 1> m_w_lags;              // w(k-1..k-nb2)
+    Eigen::Matrix<Scalar, kFrontParams, Nb2_> m_dw_lags;  // their sensitivities, one column each
+    Eigen::Matrix<Scalar, Na2_, 1> m_work;                // for the stability test
     Params m_psi;
     Scalar m_w = Scalar(0), m_output = Scalar(0);
   };

@@ -22,11 +22,11 @@ using Command = std::function<double(double)>;
 
 /// CVODE's error tolerances and step limit.
 struct Tolerances {
-  double relative = 1e-6;  ///< relative tolerance
-  double absolute_position = 1e-8;   ///< h [m]
-  double absolute_velocity = 1e-8;   ///< v [m/s]
-  double absolute_pressure = 1.0;    ///< p1, p2 [Pa]
-  double absolute_spool = 1e-8;      ///< xv [-] (validated; unused: the spool's lag is solved exactly)
+  double relative = 1e-6;              ///< relative tolerance
+  double absolute_position = 1e-8;     ///< h [m]
+  double absolute_velocity = 1e-8;     ///< v [m/s]
+  double absolute_pressure = 1.0;      ///< p1, p2 [Pa]
+  double absolute_spool = 1e-8;        ///< xv [-] (validated; unused: the spool's lag is solved exactly)
   long max_steps_per_interval = 5000;  ///< CVODE steps per command-grid interval
 };
 
@@ -36,7 +36,7 @@ struct SimulationOptions {
   double duration = 50.0;        ///< [s]
   double sample_time = 0.01;     ///< output grid [s]; an integer multiple of 1 / command_rate
   double command_rate = 1000.0;  ///< command grid [Hz]
-  Tolerances tolerances;  ///< CVODE's tolerances
+  Tolerances tolerances;         ///< CVODE's tolerances
   /// External load F_L(t) [N] opposing extension; empty means none.
   std::function<double(double)> load;
   /// Sensor noise on the measured angle: added with this seed when sensor_noise is true.
@@ -48,25 +48,25 @@ struct SimulationOptions {
 
 /// Everything on the output grid, sample k at time[k] = k * sample_time.
 struct Trajectory {
-  Eigen::VectorXd time;              ///< [s]
-  Eigen::VectorXd command;           ///< V, as held on the command grid [V]
-  Eigen::VectorXd input;             ///< u = V - V0, the identification input [V]
-  Eigen::VectorXd position;          ///< h [m]
-  Eigen::VectorXd velocity;          ///< v [m/s]
-  Eigen::VectorXd head_pressure;     ///< p1 [Pa]
-  Eigen::VectorXd rod_pressure;      ///< p2 [Pa]
-  Eigen::VectorXd spool;             ///< xv [-]
-  Eigen::VectorXd pilot;             ///< xc, the pilot stage's output (after its hysteresis) [-]
-  Eigen::VectorXd head_flow;         ///< Q1, into the head chamber [m^3/s]
-  Eigen::VectorXd rod_flow;          ///< Q2, out of the rod chamber [m^3/s]
-  Eigen::VectorXd joint_angle;       ///< theta [rad]
-  Eigen::VectorXd joint_rate;        ///< dtheta/dt = v / r(h) [rad/s]
-  Eigen::VectorXd pin_angle;         ///< theta_m = play(theta; delta / 2), noise-free [rad]
-  Eigen::VectorXd measured_angle;    ///< theta_m + sensor noise [rad]
-  double min_position = 0.0;         ///< smallest h reached on the command grid [m]
-  double max_position = 0.0;         ///< largest h reached on the command grid [m]
-  bool reached_end_stop = false;     ///< h left [0, L] at some point of the command grid
-  long steps = 0;                    ///< CVODE's internal steps
+  Eigen::VectorXd time;            ///< [s]
+  Eigen::VectorXd command;         ///< V, as held on the command grid [V]
+  Eigen::VectorXd input;           ///< u = V - V0, the identification input [V]
+  Eigen::VectorXd position;        ///< h [m]
+  Eigen::VectorXd velocity;        ///< v [m/s]
+  Eigen::VectorXd head_pressure;   ///< p1 [Pa]
+  Eigen::VectorXd rod_pressure;    ///< p2 [Pa]
+  Eigen::VectorXd spool;           ///< xv [-]
+  Eigen::VectorXd pilot;           ///< xc, the pilot stage's output (after its hysteresis) [-]
+  Eigen::VectorXd head_flow;       ///< Q1, into the head chamber [m^3/s]
+  Eigen::VectorXd rod_flow;        ///< Q2, out of the rod chamber [m^3/s]
+  Eigen::VectorXd joint_angle;     ///< theta [rad]
+  Eigen::VectorXd joint_rate;      ///< dtheta/dt = v / r(h) [rad/s]
+  Eigen::VectorXd pin_angle;       ///< theta_m = play(theta; delta / 2), noise-free [rad]
+  Eigen::VectorXd measured_angle;  ///< theta_m + sensor noise [rad]
+  double min_position = 0.0;       ///< smallest h reached on the command grid [m]
+  double max_position = 0.0;       ///< largest h reached on the command grid [m]
+  bool reached_end_stop = false;   ///< h left [0, L] at some point of the command grid
+  long steps = 0;                  ///< CVODE's internal steps
 };
 
 /// CVODE failed: its return flag and the time it had reached.
@@ -76,8 +76,7 @@ class CvodeError : public NumericalError {
   /// \param message what failed
   /// \param flag CVODE's return flag
   /// \param time the simulated time reached [s]
-  CvodeError(const std::string& message, int flag, double time)
-      : NumericalError(message), m_flag(flag), m_time(time) {}
+  CvodeError(const std::string& message, int flag, double time) : NumericalError(message), m_flag(flag), m_time(time) {}
   int flag() const noexcept { return m_flag; }  ///< CVODE's return flag \return the flag, < 0
   /// The simulated time [s] reached when CVODE failed
   /// \return the time [s]

@@ -30,11 +30,11 @@ struct Measurement {
   /// memory; 0 before the first step) [-]. simulate's pilot[k] is xc after the command V(t_k), so
   /// under a command held over each sample this is simulate's pilot[k - 1].
   double pilot = 0.0;
-  double head_flow = 0.0;       ///< Q1, into the head chamber [m^3/s]
-  double rod_flow = 0.0;        ///< Q2, out of the rod chamber [m^3/s]
-  double joint_angle = 0.0;     ///< theta [rad]
-  double joint_rate = 0.0;      ///< dtheta/dt = v / r(h) [rad/s]
-  double pin_angle = 0.0;       ///< theta_m = play(theta; delta / 2), noise-free [rad]
+  double head_flow = 0.0;    ///< Q1, into the head chamber [m^3/s]
+  double rod_flow = 0.0;     ///< Q2, out of the rod chamber [m^3/s]
+  double joint_angle = 0.0;  ///< theta [rad]
+  double joint_rate = 0.0;   ///< dtheta/dt = v / r(h) [rad/s]
+  double pin_angle = 0.0;    ///< theta_m = play(theta; delta / 2), noise-free [rad]
   /// h left [0, L] at a command-grid point of the step that ended at t_k (at t_0: h0 outside it).
   bool reached_end_stop = false;
 };
@@ -60,7 +60,7 @@ class SteppingPlant {
   explicit SteppingPlant(const Parameters& parameters, const SimulationOptions& options = {});
   SteppingPlant(const SteppingPlant&) = delete;
   SteppingPlant& operator=(const SteppingPlant&) = delete;
-  SteppingPlant(SteppingPlant&&) noexcept;  ///< movable (the CVODE state moves with it), not copyable
+  SteppingPlant(SteppingPlant&&) noexcept;             ///< movable (the CVODE state moves with it), not copyable
   SteppingPlant& operator=(SteppingPlant&&) noexcept;  ///< movable, not copyable \return *this
   ~SteppingPlant();
 
@@ -97,7 +97,7 @@ class SteppingPlant {
   /// The latest: at time()
   /// \return the measurement, valid until the next step() or reset()
   const Measurement& measurement() const;
-  double time() const;                     ///< t_k [s] \return t_k [s]
+  double time() const;  ///< t_k [s] \return t_k [s]
   /// CVODE's internal steps since the start or reset()
   /// \return the number of steps
   long steps() const;

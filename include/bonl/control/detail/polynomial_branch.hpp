@@ -38,7 +38,8 @@ typename C::Scalar branch_end(const Eigen::MatrixBase<C>& c, int side, typename 
   Scalar bound = std::numeric_limits<Scalar>::infinity();
   if (top >= 2) {  // the derivative has degree top - 1 >= 1: its roots lie within the Cauchy bound
     Scalar largest(0);
-    for (Eigen::Index i = 1; i < top; ++i) largest = std::max(largest, std::abs(Scalar(i) * c[i] / (Scalar(top) * c[top])));
+    for (Eigen::Index i = 1; i < top; ++i)
+      largest = std::max(largest, std::abs(Scalar(i) * c[i] / (Scalar(top) * c[top])));
     bound = Scalar(1) + largest;
   } else {
     return side * std::abs(limit);  // constant or linear: monotone everywhere
@@ -86,7 +87,10 @@ typename C::Scalar solve_on_branch(const Eigen::MatrixBase<C>& c, typename C::Sc
     const Scalar residual = polynomial(c, v) - target;
     if (residual == Scalar(0)) return v;
     // Keep the bracket [lo, hi] around the root.
-    if ((residual > Scalar(0)) == rising) hi = v; else lo = v;
+    if ((residual > Scalar(0)) == rising)
+      hi = v;
+    else
+      lo = v;
     const Scalar slope = polynomial_derivative(c, v);
     Scalar next = v - residual / slope;
     if (!(next > lo && next < hi)) next = Scalar(0.5) * (lo + hi);

@@ -38,7 +38,12 @@ inline constexpr std::array<ParameterDescription, 4> kFrontParameters{
     {{"b", ParameterShape::Vector, 0, "b_0..b_nb with b_0 = 1", kFrontNormalisation, false, {}},
      {"a", ParameterShape::Vector, 1, "a_1..a_na", nullptr, false, {}},
      {"f", ParameterShape::Vector, 0, "f_0..f_r, the input polynomial for u >= 0", nullptr, false, {1, 0, 0, -1}},
-     {"p", ParameterShape::Vector, 0, "p_0..p_r, its change for u < 0 (p_l = g_l - f_l)", nullptr, false,
+     {"p",
+      ParameterShape::Vector,
+      0,
+      "p_0..p_r, its change for u < 0 (p_l = g_l - f_l)",
+      nullptr,
+      false,
       {1, 0, 0, -1}}}};
 
 /// b_0..b_nb of a block model's linear block from theta's b_1..b_nb (`tail`): b_0 = 1, the normalisation.
@@ -61,8 +66,7 @@ void assign_normalised_b(const Eigen::MatrixBase<B>& b, Into&& into) {
 
 /// Parameter count of the front: f_0..f_r, p_0..p_r, b_1..b_nb, a_1..a_na.
 constexpr int front_params(int na, int nb, int r) {
-  return (na == Eigen::Dynamic || nb == Eigen::Dynamic || r == Eigen::Dynamic) ? Eigen::Dynamic
-                                                                               : 2 * (r + 1) + nb + na;
+  return (na == Eigen::Dynamic || nb == Eigen::Dynamic || r == Eigen::Dynamic) ? Eigen::Dynamic : 2 * (r + 1) + nb + na;
 }
 
 template <typename Scalar_, int Na_, int Nb_, int R_, int Extra_>

@@ -135,7 +135,7 @@ bonl.NumericalError
 const char* identify_doc() {
   static const std::string doc = std::string(kIdentifyHead) +
                                  option_docs({"passes", "method", "forgetting", "p0", "refine_iterations", "normalise",
-                                              "operating_point", "c0", "backlash_hold"}) +
+                                              "operating_point", "initialisation_window", "c0", "backlash_hold"}) +
                                  kIdentifyTail;
   return doc.c_str();
 }
@@ -160,9 +160,10 @@ void def_identify(py::module_& m) {
       [](const Model& model, const py::typing::Optional<ArrayLike>& u, const py::typing::Optional<ArrayLike>& y,
          const py::typing::Optional<RecordList>& records, std::optional<double> c0,
          std::optional<Eigen::Index> backlash_hold, int passes, const std::string& method, const Forgetting& forgetting,
-         std::optional<double> p0, int refine_iterations, bool normalise, const OperatingPointSource& operating_point) {
-        const bonl::IdentifyOptions options =
-            identify_options({passes, method, forgetting, p0, refine_iterations, normalise, operating_point});
+         std::optional<double> p0, int refine_iterations, bool normalise, const OperatingPointSource& operating_point,
+         Eigen::Index initialisation_window) {
+        const bonl::IdentifyOptions options = identify_options(
+            {passes, method, forgetting, p0, refine_iterations, normalise, operating_point, initialisation_window});
         const auto settings = model_settings<Model>({c0, backlash_hold});
         std::vector<Eigen::VectorXd> inputs, outputs;
         read_records(u, y, records,
@@ -350,6 +351,7 @@ bonl::IdentifyOptions identify_options(const IdentifyArguments& arguments) {
   options.refine_iterations = arguments.refine_iterations;
   options.normalise = arguments.normalise;
   options.operating_point = operating_point_source(arguments.operating_point);
+  options.initialisation_window = arguments.initialisation_window;
   return options;
 }
 

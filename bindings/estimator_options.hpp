@@ -42,6 +42,7 @@ struct IdentifyArguments {
   int refine_iterations;
   bool normalise;
   py::object operating_point;
+  Eigen::Index initialisation_window;
 };
 
 /// The options, validated (std::invalid_argument, a ValueError, naming the bad one).
@@ -53,7 +54,7 @@ template <class Scope, typename Func, typename... Extra>
 void def_with_identify_arguments(Scope& scope, const char* name, Func&& f, const Extra&... extra) {
   scope.def(name, std::forward<Func>(f), extra..., py::arg("passes") = 1, py::arg("method") = "output_error",
             py::arg("forgetting") = py::none(), py::arg("p0") = py::none(), py::arg("refine_iterations") = 100,
-            py::arg("normalise") = true, py::arg("operating_point") = py::none());
+            py::arg("normalise") = true, py::arg("operating_point") = py::none(), py::arg("initialisation_window") = 0);
 }
 
 /// The records of identify and select: (u, y) for one record, or records=[(u1, y1), ...] for several

@@ -57,6 +57,12 @@ inline constexpr OptionDoc kOptionDocs[] = {
      "The identified model's operating point (u0, y0): None keeps the structure's\n"
      "(Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the\n"
      "first sample of the first record (the record starts at rest there)."},
+    {"initialisation_window", "int, default 0",
+     "Where identify refines: each record's free run starts after its first initialisation_window\n"
+     "samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is\n"
+     "scored after them, instead of from rest: the model is fitted the way a test protocol with that\n"
+     "state-initialisation window uses it (records that do not start at rest; an integrating plant,\n"
+     "whose position keeps any transient of the start). Shorter than every record."},
     // The model's own settings (its EstimatorSettings, bindings/model_settings.hpp): PseudoHammersteinWiener's.
     {"c0", "float, optional",
      "PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of\n"

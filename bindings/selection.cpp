@@ -118,7 +118,7 @@ void bind_selection(py::module_& m) {
         }
         const IdentifyArguments& a = s.identify;
         return py::make_tuple(records, s.criterion, s.validation_fraction, s.window, a.passes, a.method, a.forgetting,
-                              a.p0, a.refine_iterations, a.normalise, a.operating_point);
+                              a.p0, a.refine_iterations, a.normalise, a.operating_point, a.initialisation_window);
       },
       [](const py::tuple& t) {
         std::vector<Eigen::VectorXd> inputs, outputs;
@@ -126,22 +126,23 @@ void bind_selection(py::module_& m) {
         return make_selection(std::move(inputs), std::move(outputs), t[1].cast<std::string>(), t[2].cast<double>(),
                               t[3].cast<Eigen::Index>(),
                               {t[4].cast<int>(), t[5].cast<std::string>(), t[6], t[7].cast<std::optional<double>>(),
-                               t[8].cast<int>(), t[9].cast<bool>(), t[10]});
+                               t[8].cast<int>(), t[9].cast<bool>(), t[10], t[11].cast<Eigen::Index>()});
       }));
   def_with_identify_arguments(
       m, "_selection_data",
       [](const py::typing::Optional<ArrayLike>& u, const py::typing::Optional<ArrayLike>& y,
          const py::typing::Optional<RecordList>& records, const std::string& criterion, double validation_fraction,
          const py::object& window, int passes, const std::string& method, const Forgetting& forgetting,
-         std::optional<double> p0, int refine_iterations, bool normalise, const OperatingPointSource& operating_point) {
+         std::optional<double> p0, int refine_iterations, bool normalise, const OperatingPointSource& operating_point,
+         Eigen::Index initialisation_window) {
         std::vector<Eigen::VectorXd> inputs, outputs;
         read_records(u, y, records,
                      "select(candidates, u, y) for one record, select(candidates, records=[(u1, y1), (u2, y2), ...]) "
                      "for several",
                      inputs, outputs);
-        return make_selection(std::move(inputs), std::move(outputs), criterion, validation_fraction,
-                              window_from(window),
-                              {passes, method, forgetting, p0, refine_iterations, normalise, operating_point});
+        return make_selection(
+            std::move(inputs), std::move(outputs), criterion, validation_fraction, window_from(window),
+            {passes, method, forgetting, p0, refine_iterations, normalise, operating_point, initialisation_window});
       },
       py::arg("u") = py::none(), py::arg("y") = py::none(), py::kw_only(), py::arg("records") = py::none(),
       py::arg("criterion") = "validation", py::arg("validation_fraction") = 0.25, py::arg("window") = 0,

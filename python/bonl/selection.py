@@ -51,7 +51,7 @@ class Candidate:
     orders: Dict[str, int]          #: its orders by name
     num_params: int
     score: float                    #: the criterion (lower is better; inf when the fit failed)
-    fit_mse: float                  #: free-run simulation MSE on the data it was fitted on
+    fit_mse: float                  #: free-run simulation MSE on the data it was fitted on, run as fitted
     validation_mse: Optional[float]  #: on the held-out parts (criterion "validation"), else None
     seconds: float                  #: wall time of its identification
     error: Optional[str]            #: why the fit failed, None when it did not

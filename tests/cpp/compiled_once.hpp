@@ -47,7 +47,7 @@ using PaperModelAt = bonl::WithOrders<ModelAt<I>, bonl::PaperOrders>;
   BONL_TEST_EXTERN template bonl::SelectionCandidate<M> bonl::score_candidate(const M&,                                \
                                                                               const bonl::SelectionData<double>&);     \
   BONL_TEST_EXTERN template M bonl::refine_output_error(const std::vector<M>&, const bonl::Records<double>&, int,      \
-                                                        bonl::RefinementReport*);                                      \
+                                                        bonl::RefinementReport*, Eigen::Index);                        \
   BONL_TEST_EXTERN template M bonl::estimate_recursively(const M&, const bonl::Records<double>&,                       \
                                                          const bonl::IdentifyOptions&, const bonl::ModelSettings<M>&); \
   BONL_TEST_KNOWN_SYSTEM(M)

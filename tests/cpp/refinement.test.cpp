@@ -16,28 +16,6 @@
 
 using namespace bonl_test;
 
-namespace {
-
-/// J(k, i) = d simulate(u)(k) / d theta_i by central differences.
-template <class Model>
-Eigen::MatrixXd finite_difference_jacobian(const Model& model, const Eigen::VectorXd& u) {
-  const Eigen::VectorXd theta = model.theta();
-  Eigen::MatrixXd jacobian(u.size(), theta.size());
-  for (Eigen::Index i = 0; i < theta.size(); ++i) {
-    const double step = 1e-6 * std::max(1.0, std::abs(theta[i]));
-    Eigen::VectorXd plus = theta, minus = theta;
-    plus[i] += step;
-    minus[i] -= step;
-    Model up = model, down = model;
-    up.set_theta(plus);
-    down.set_theta(minus);
-    jacobian.col(i) = (up.simulate(u) - down.simulate(u)) / (2.0 * step);
-  }
-  return jacobian;
-}
-
-}  // namespace
-
 TEMPLATE_LIST_TEST_CASE("the refinement's normal equations are those of the simulation's Jacobian", "[refinement]",
                         bonl::Models) {
   const TestType model = known_system<TestType>("small");
@@ -48,7 +26,7 @@ TEMPLATE_LIST_TEST_CASE("the refinement's normal equations are those of the simu
   Eigen::VectorXd gradient;
   REQUIRE(bonl::detail::simulation_normal_equations(model, records, normal, gradient));
 
-  const Eigen::MatrixXd jacobian = finite_difference_jacobian(model, u);
+  const Eigen::MatrixXd jacobian = simulation_differences(model, u);
   const Eigen::MatrixXd expected_normal = jacobian.transpose() * jacobian;
   const Eigen::VectorXd expected_gradient = jacobian.transpose() * (y - model.simulate(u));
   CHECK((normal - expected_normal).norm() <= 1e-7 * expected_normal.norm());

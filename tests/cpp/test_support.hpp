@@ -73,11 +73,11 @@ double worst_key_term_error(const Model& model, const Eigen::VectorXd& u, const 
 
 inline double standard_deviation(const Eigen::VectorXd& y) { return std::sqrt((y.array() - y.mean()).square().mean()); }
 
-/// Central differences of model.simulate(u), one parameter at a time (step 1e-6 max(1, |theta_i|)):
-/// row k is d y(k) / d theta, the oracle of the output-error sensitivities.
-template <class Model>
-Eigen::MatrixXd simulation_differences(const Model& model, const Eigen::VectorXd& u) {
-  Eigen::MatrixXd differences(u.size(), model.num_params());
+/// Central differences of run(model), one parameter at a time (step 1e-6 max(1, |theta_i|)): row k is
+/// d run(model)(k) / d theta, the oracle of the output-error sensitivities and the refinement's Jacobians.
+template <class Model, class Run>
+Eigen::MatrixXd run_differences(const Model& model, Run&& run) {
+  Eigen::MatrixXd differences;
   for (Eigen::Index i = 0; i < model.num_params(); ++i) {
     const double step = 1e-6 * std::max(1.0, std::abs(model.theta()[i]));
     Model plus = model, minus = model;
@@ -86,9 +86,17 @@ Eigen::MatrixXd simulation_differences(const Model& model, const Eigen::VectorXd
     plus.set_theta(theta);
     theta[i] -= 2 * step;
     minus.set_theta(theta);
-    differences.col(i) = (plus.simulate(u) - minus.simulate(u)) / (2 * step);
+    const Eigen::VectorXd column = (run(plus) - run(minus)) / (2 * step);
+    if (i == 0) differences.resize(column.size(), model.num_params());
+    differences.col(i) = column;
   }
   return differences;
+}
+
+/// The same of model.simulate(u), the free run from rest.
+template <class Model>
+Eigen::MatrixXd simulation_differences(const Model& model, const Eigen::VectorXd& u) {
+  return run_differences(model, [&u](const Model& m) -> Eigen::VectorXd { return m.simulate(u); });
 }
 
 /// How many samples (rows) of `jacobian` equal `differences` to 1e-6 of its largest entry. A backlash

@@ -156,7 +156,7 @@ Model identify_records(const Model& structure, const CheckedRecords<typename Mod
     for (Model& start : Model::identify_starts(structure, records)) starts.push_back(std::move(start));
   }
   if (starts.empty()) throw NumericalError("bonl: identification failed from every start: " + failures);
-  return refine_output_error(starts, records, options.refine_iterations);
+  return refine_output_error(starts, records, options.refine_iterations, nullptr, options.initialisation_window);
 }
 }  // namespace detail
 
@@ -171,6 +171,9 @@ Model identify_records(const Model& structure, const CheckedRecords<typename Mod
 ///   Levenberg-Marquardt on the free-run simulation error over the records, and the one that
 ///   simulates them better is returned. ARX under Method::EquationError is least squares and
 ///   keeps that estimate (that is what an ARX model is).
+/// Where it refines, the free runs start from rest, or after each record's first
+/// IdentifyOptions::initialisation_window samples, measured (as the model will be used after a
+/// protocol's state-initialisation window).
 /// Where it refines, all of it runs on the data in identify's own units (IdentifyOptions::normalise),
 /// and the model comes back in the data's units. Where it does not, the result is what
 /// Estimator::update gives over the records, in the data's units. `settings`: the model's own, as
@@ -189,6 +192,13 @@ Model identify(const Model& structure, const CheckedRecords<typename Model::Scal
                       std::to_string(structure.num_params()) + "), got " + std::to_string(records.samples()) +
                       " samples");
   detail::require_identify_options(options, settings);
+  detail::require_initialisation_window(records.records(), options.initialisation_window);
+  const Eigen::Index scored =
+      records.samples() - static_cast<Eigen::Index>(records.size()) * options.initialisation_window;
+  detail::require(scored > structure.num_params(),
+                  "the records after their initialisation_window must be longer together than the number of "
+                  "parameters (" +
+                      std::to_string(structure.num_params()) + "), got " + std::to_string(scored) + " samples");
   Model at = structure;
   if (options.operating_point == OperatingPointSource::Mean) {
     double u_sum = 0.0, y_sum = 0.0, samples = 0.0;

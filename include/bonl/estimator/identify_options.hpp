@@ -25,8 +25,8 @@ inline const char* to_string(OperatingPointSource source) {
 }
 
 /// What identify() is told: the recursive estimator's options (the base), its passes over the
-/// records, the refinement's iterations, whether the data are normalised, and where the operating
-/// point comes from.
+/// records, the refinement's iterations, whether the data are normalised, where the operating point
+/// comes from, and the refinement's state-initialisation window.
 struct IdentifyOptions : EstimatorOptions {
   int passes = 1;               ///< passes of the recursive estimator over the record (paper's step 5)
   int refine_iterations = 100;  ///< Levenberg-Marquardt iterations of the refinement (0: none)
@@ -38,6 +38,12 @@ struct IdentifyOptions : EstimatorOptions {
   bool normalise = true;
   OperatingPointSource operating_point =
       OperatingPointSource::Structure;  ///< where the operating point (u0, y0) comes from
+  /// Where identify refines: each record's free run starts after its first initialisation_window
+  /// samples, measured, which set the model's state (Model::simulate's past), and is scored after
+  /// them, rather than from rest over the whole record: the model is fitted the way a protocol with a
+  /// state-initialisation window of that many samples uses it (records that do not start at rest; an
+  /// integrating plant, whose position keeps any transient of the start). 0: from rest.
+  Eigen::Index initialisation_window = 0;
 };
 
 }  // namespace bonl

@@ -9,6 +9,12 @@
 // piecewise smooth in theta; their sensitivity is the one of the piece the run is on.
 // The linear block is kept stable: a start with poles outside the unit circle is reflected inside
 // (models/poles.hpp) and a step that would leave the stable set is not taken.
+// With a state-initialisation window of m samples each record's free run starts after its first m
+// samples, measured, as Model::simulate(u, u_past, y_past) starts it, and is scored after them: the
+// model is fitted the way a protocol with that window will use it. The measured past sets the state
+// through the model's internal variables, which depend on theta in ways the OutputErrorTerms'
+// recursion from rest does not carry, so that Jacobian is taken by forward differences of the free
+// run (num_params() + 1 runs per iteration instead of one).
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -35,13 +41,14 @@ struct RefinementReport {
 };
 
 namespace detail {
-/// Mean squared free-run simulation error over the records (each from rest); `y` is their outputs
-/// one after another (stacked_outputs). Infinity where the simulation diverges.
+/// Mean squared free-run simulation error over the records (each from rest, or after its first
+/// `window` samples: simulate_records); `y` is their outputs one after another from sample `window`
+/// on (stacked_outputs). Infinity where the simulation diverges.
 template <class Model>
 double simulation_cost(const Model& model, const Records<typename Model::Scalar>& records,
                        const typename Model::VectorX& y, typename Model::VectorX& simulated,
-                       typename Model::VectorX& buffer) {
-  if (!simulate_records(model, records, simulated, buffer)) return std::numeric_limits<double>::infinity();
+                       typename Model::VectorX& buffer, Eigen::Index window) {
+  if (!simulate_records(model, records, simulated, buffer, window)) return std::numeric_limits<double>::infinity();
   const double cost = static_cast<double>((y - simulated).squaredNorm()) / static_cast<double>(y.size());
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
@@ -88,6 +95,47 @@ bool simulation_normal_equations(const Model& model, const Records<typename Mode
   normal.template triangularView<Eigen::StrictlyUpper>() = normal.transpose();
   return normal.allFinite() && gradient.allFinite();
 }
+
+/// The same normal equations for the free run after each record's first `window` samples
+/// (simulate_records), with J by forward differences: column i is (y_sim(theta + h e_i) - y_sim(theta))
+/// / h, h = sqrt(eps) max(|theta_i|, 1), taken backward where the model's constraint holds theta_i at
+/// a bound. `y` is the records' outputs after their windows (stacked_outputs). Returns false if a run
+/// leaves the finite numbers.
+template <class Model, typename MatrixX>
+bool window_normal_equations(const Model& model, const Records<typename Model::Scalar>& records, Eigen::Index window,
+                             const typename Model::VectorX& y, MatrixX& normal, typename Model::VectorX& gradient) {
+  using Scalar = typename Model::Scalar;
+  using VectorX = typename Model::VectorX;
+  VectorX base, run, buffer;
+  if (!simulate_records(model, records, base, buffer, window)) return false;
+  const Eigen::Index n = model.num_params();
+  const typename Model::Params theta = model.theta();
+  MatrixX jacobian(base.size(), n);
+  Model trial = model;
+  const Scalar root_epsilon = std::sqrt(std::numeric_limits<Scalar>::epsilon());
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Scalar h = root_epsilon * std::max(std::abs(theta[i]), Scalar(1));
+    typename Model::Params moved = theta;
+    moved[i] += h;
+    model.constrain(moved);
+    if (moved[i] == theta[i]) {  // held at a bound: the other side
+      moved = theta;
+      moved[i] -= h;
+      model.constrain(moved);
+    }
+    const Scalar step = moved[i] - theta[i];
+    if (step == Scalar(0)) {
+      jacobian.col(i).setZero();
+      continue;
+    }
+    trial.set_theta(moved);
+    if (!simulate_records(trial, records, run, buffer, window)) return false;
+    jacobian.col(i) = (run - base) / step;
+  }
+  normal.noalias() = jacobian.transpose() * jacobian;
+  gradient.noalias() = jacobian.transpose() * (y - base);
+  return normal.allFinite() && gradient.allFinite();
+}
 }  // namespace detail
 
 namespace detail {
@@ -97,20 +145,21 @@ namespace detail {
 /// damping follows the gain ratio rho (actual over predicted decrease of the cost) as Nielsen (1999)
 /// proposes: after a taken step it shrinks by max(1/3, 1 - (2 rho - 1)^3), so it falls fast where the
 /// Gauss-Newton model is good, and it grows by doubling factors after a step that is refused.
-/// Adds its iterations to report.iterations and sets report.final_cost.
+/// Adds its iterations to report.iterations and sets report.final_cost. `window`: each record's free
+/// run starts after its first `window` samples (0: from rest).
 template <class Model>
 Model levenberg_marquardt(const Model& start, const Records<typename Model::Scalar>& records, int max_iterations,
-                          double& damping, RefinementReport& report) {
+                          double& damping, RefinementReport& report, Eigen::Index window) {
   using Scalar = typename Model::Scalar;
   using VectorX = typename Model::VectorX;
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
-  const VectorX y = stacked_outputs(records);
+  const VectorX y = stacked_outputs(records, window);
   const double samples = static_cast<double>(y.size());
   Model best = start;
   Model trial = start;
   typename Model::OutputErrorTerms checker(start);
   VectorX simulated, candidate_simulated, scratch;
-  double cost = simulation_cost(best, records, y, simulated, scratch);
+  double cost = simulation_cost(best, records, y, simulated, scratch, window);
   report.final_cost = cost;
   if (!std::isfinite(cost)) return best;
 
@@ -118,7 +167,9 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
   VectorX gradient;
   int iteration = 0;
   for (; iteration < max_iterations; ++iteration) {
-    if (!simulation_normal_equations(best, records, normal, gradient)) break;
+    const bool normal_equations = window > 0 ? window_normal_equations(best, records, window, y, normal, gradient)
+                                             : simulation_normal_equations(best, records, normal, gradient);
+    if (!normal_equations) break;
     const typename Model::Params theta = best.theta();
     VectorX scale(normal.rows());
     damping_scale(normal, scale);
@@ -134,7 +185,7 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
       start.constrain(candidate);
       if (candidate.allFinite() && checker.stable(candidate, Scalar(1))) {
         trial.set_theta(candidate);
-        new_cost = simulation_cost(trial, records, y, candidate_simulated, scratch);
+        new_cost = simulation_cost(trial, records, y, candidate_simulated, scratch, window);
         if (new_cost < cost) {
           // Predicted decrease of the sum of squares: step' (gradient + damping D step).
           const double predicted =
@@ -181,19 +232,27 @@ inline constexpr Eigen::Index kCoarseSamples = 16384;
 /// start on the records' first part, then only the one that simulates all the records best on all
 /// of them. Most iterations happen far from a minimum, where a part of the data points the same way
 /// as all of it, at a fraction of the cost.
+/// With an initialisation window of m > 0 samples each record is simulated after its first m
+/// samples, measured (Model::simulate's past), and scored after them; the costs are over those
+/// samples, and the Jacobian is taken by forward differences (the file's header says why).
 /// \param starts the models to start from, at least one
 /// \param records the records, checked (CheckedRecords)
 /// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
 /// \param report when not null, filled with the costs and iterations
+/// \param initialisation_window the measured samples each record's free run starts after, >= 0 and
+/// shorter than every record; 0: from rest
 /// \return the refined model that simulates the records best
 template <class Model>
 Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords<typename Model::Scalar>& records,
-                          int max_iterations = 100, RefinementReport* report = nullptr) {
+                          int max_iterations = 100, RefinementReport* report = nullptr,
+                          Eigen::Index initialisation_window = 0) {
   using Scalar = typename Model::Scalar;
   detail::require(!starts.empty(), "starts must hold at least one model");
   detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
+  detail::require_initialisation_window(records.records(), initialisation_window);
+  const Eigen::Index window = initialisation_window;
   const Eigen::Index samples = records.samples();
-  const typename Model::VectorX y = detail::stacked_outputs(records.records());
+  const typename Model::VectorX y = detail::stacked_outputs(records.records(), window);
   typename Model::VectorX simulated, scratch;
 
   RefinementReport local;
@@ -207,21 +266,24 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
     if (!checker.stable(candidate.theta(), Scalar(1)) && detail::reflect_poles_inside(candidate, Scalar(0.999))) {
       local.reflected = true;
     }
-    costs[i] = detail::simulation_cost(candidate, records.records(), y, simulated, scratch);
+    costs[i] = detail::simulation_cost(candidate, records.records(), y, simulated, scratch, window);
   }
   local.initial_cost = *std::min_element(costs.begin(), costs.end());
   // Stage one: every start on the records' first part (all of them when they are short).
-  const bool two_stages = samples > detail::kCoarseSamples;
+  // With a window, each first part must be longer than it.
+  bool two_stages = samples > detail::kCoarseSamples;
   const CheckedRecords<Scalar> first_part = two_stages ? records.first_part(detail::kCoarseSamples) : records;
+  for (const auto& part : first_part) two_stages = two_stages && part.u.size() > window;
+  const CheckedRecords<Scalar>& stage_one = two_stages ? first_part : records;
   std::vector<double> dampings(candidates.size(), 1e-3);
   for (std::size_t i = 0; i < candidates.size() && max_iterations > 0; ++i) {
     if (!std::isfinite(costs[i])) continue;
     RefinementReport stage;
     const Model refined =
-        detail::levenberg_marquardt(candidates[i], first_part.records(), max_iterations, dampings[i], stage);
+        detail::levenberg_marquardt(candidates[i], stage_one.records(), max_iterations, dampings[i], stage, window);
     local.iterations += stage.iterations;
     // Kept only where it simulates all the records better (on one stage, always).
-    const double cost = detail::simulation_cost(refined, records.records(), y, simulated, scratch);
+    const double cost = detail::simulation_cost(refined, records.records(), y, simulated, scratch, window);
     if (cost < costs[i]) {
       candidates[i] = refined;
       costs[i] = cost;
@@ -236,7 +298,7 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
   Model best = candidates[chosen];
   // Stage two: the best on all the records.
   if (two_stages && std::isfinite(costs[chosen]) && max_iterations > 0) {
-    best = detail::levenberg_marquardt(best, records.records(), max_iterations, dampings[chosen], local);
+    best = detail::levenberg_marquardt(best, records.records(), max_iterations, dampings[chosen], local, window);
   }
   if (report) *report = local;
   return best;
@@ -247,13 +309,15 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
 /// \param records the records, each an input u and measured output y of equal length
 /// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
 /// \param report when not null, filled with the costs and iterations
+/// \param initialisation_window the measured samples each record's free run starts after; 0: from rest
 /// \return the refined model that simulates the records best
 template <class Model>
 Model refine_output_error(const std::vector<Model>& starts, const Records<typename Model::Scalar>& records,
-                          int max_iterations = 100, RefinementReport* report = nullptr) {
+                          int max_iterations = 100, RefinementReport* report = nullptr,
+                          Eigen::Index initialisation_window = 0) {
   detail::require(!starts.empty(), "starts must hold at least one model");
   return refine_output_error(starts, CheckedRecords<typename Model::Scalar>(records, starts.front().num_params()),
-                             max_iterations, report);
+                             max_iterations, report, initialisation_window);
 }
 
 /// The same from one start.
@@ -261,11 +325,12 @@ Model refine_output_error(const std::vector<Model>& starts, const Records<typena
 /// \param records the records, each an input u and measured output y of equal length
 /// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
 /// \param report when not null, filled with the costs and iterations
+/// \param initialisation_window the measured samples each record's free run starts after; 0: from rest
 /// \return the refined model that simulates the records best
 template <class Model>
 Model refine_output_error(const Model& start, const Records<typename Model::Scalar>& records, int max_iterations = 100,
-                          RefinementReport* report = nullptr) {
-  return refine_output_error(std::vector<Model>{start}, records, max_iterations, report);
+                          RefinementReport* report = nullptr, Eigen::Index initialisation_window = 0) {
+  return refine_output_error(std::vector<Model>{start}, records, max_iterations, report, initialisation_window);
 }
 
 /// The same on one record (u, y).
@@ -274,14 +339,16 @@ Model refine_output_error(const Model& start, const Records<typename Model::Scal
 /// \param y the measured output, as long as u
 /// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
 /// \param report when not null, filled with the costs and iterations
+/// \param initialisation_window the measured samples each record's free run starts after; 0: from rest
 /// \return the refined model that simulates the records best
 template <class Model, typename U, typename Y>
 Model refine_output_error(const Model& start, const Eigen::MatrixBase<U>& u, const Eigen::MatrixBase<Y>& y,
-                          int max_iterations = 100, RefinementReport* report = nullptr) {
+                          int max_iterations = 100, RefinementReport* report = nullptr,
+                          Eigen::Index initialisation_window = 0) {
   const typename Model::VectorX input = u, output = y;
   return refine_output_error(std::vector<Model>{start},
                              CheckedRecords<typename Model::Scalar>(input, output, start.num_params()), max_iterations,
-                             report);
+                             report, initialisation_window);
 }
 
 }  // namespace bonl

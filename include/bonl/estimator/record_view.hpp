@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../detail/validate.hpp"
+#include "../error.hpp"
 
 namespace bonl {
 
@@ -155,32 +156,61 @@ class CheckedRecords {
 
 namespace detail {
 
-/// The records' outputs one after another.
+/// A state-initialisation window checked against the records: >= 0 and shorter than every record
+/// (std::invalid_argument naming the record otherwise). IdentifyOptions::initialisation_window.
 template <typename Scalar>
-Eigen::Matrix<Scalar, Eigen::Dynamic, 1> stacked_outputs(const Records<Scalar>& records) {
+void require_initialisation_window(const Records<Scalar>& records, Eigen::Index window) {
+  require(window >= 0, "initialisation_window must be >= 0, got " + std::to_string(window));
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    require(records[i].u.size() > window, "initialisation_window (" + std::to_string(window) +
+                                              ") must be shorter than every record; records[" + std::to_string(i) +
+                                              "] has " + std::to_string(records[i].u.size()) + " samples");
+  }
+}
+
+/// The records' outputs one after another, each from its sample `window` on (the samples a free run
+/// after a state-initialisation window of that many samples is scored on; 0: all of them).
+template <typename Scalar>
+Eigen::Matrix<Scalar, Eigen::Dynamic, 1> stacked_outputs(const Records<Scalar>& records, Eigen::Index window = 0) {
   Eigen::Index total = 0;
-  for (const auto& record : records) total += record.y.size();
+  for (const auto& record : records) total += record.y.size() - window;
   Eigen::Matrix<Scalar, Eigen::Dynamic, 1> out(total);
   Eigen::Index start = 0;
   for (const auto& record : records) {
-    out.segment(start, record.y.size()) = record.y;
-    start += record.y.size();
+    out.segment(start, record.y.size() - window) = record.y.tail(record.y.size() - window);
+    start += record.y.size() - window;
   }
   return out;
 }
 
-/// The free run of each record from rest, one after another into `out`; false as soon as one leaves
-/// the finite numbers. `buffer` is scratch space for more than one record.
+/// The free run of one record into `out`: from rest, or with window > 0 its samples from `window` on
+/// simulated after the first `window`, measured, which set the model's state (Model::simulate's
+/// past). False if it leaves the finite numbers.
+template <class Model>
+bool simulate_record(const Model& model, const RecordView<typename Model::Scalar>& record, Eigen::Index window,
+                     typename Model::VectorX& out) {
+  if (window == 0) return model.try_simulate(record.u, out);
+  const Eigen::Index n = record.u.size() - window;
+  try {
+    out = model.simulate(record.u.tail(n), record.u.head(window), record.y.head(window));
+  } catch (const NumericalError&) {
+    return false;
+  }
+  return true;
+}
+
+/// The free run of each record (simulate_record), one after another into `out`; false as soon as one
+/// leaves the finite numbers. `buffer` is scratch space for more than one record.
 template <class Model>
 bool simulate_records(const Model& model, const Records<typename Model::Scalar>& records, typename Model::VectorX& out,
-                      typename Model::VectorX& buffer) {
-  if (records.size() == 1) return model.try_simulate(records[0].u, out);
+                      typename Model::VectorX& buffer, Eigen::Index window = 0) {
+  if (records.size() == 1) return simulate_record(model, records[0], window, out);
   Eigen::Index total = 0;
-  for (const auto& record : records) total += record.u.size();
+  for (const auto& record : records) total += record.u.size() - window;
   out.resize(total);
   Eigen::Index start = 0;
   for (const auto& record : records) {
-    if (!model.try_simulate(record.u, buffer)) return false;
+    if (!simulate_record(model, record, window, buffer)) return false;
     out.segment(start, buffer.size()) = buffer;
     start += buffer.size();
   }

@@ -71,9 +71,10 @@ struct SelectionCandidate {
   /// \param candidate the structure
   explicit SelectionCandidate(const Model& candidate) : structure(candidate) {}
 
-  Model structure;                                                   ///< the candidate as given
-  double score = std::numeric_limits<double>::infinity();            ///< lower is better; infinity when it failed
-  double fit_mse = std::numeric_limits<double>::infinity();          ///< free-run MSE on the data it was fitted on
+  Model structure;                                         ///< the candidate as given
+  double score = std::numeric_limits<double>::infinity();  ///< lower is better; infinity when it failed
+  double fit_mse =
+      std::numeric_limits<double>::infinity();  ///< free-run MSE on the data it was fitted on, run as fitted
   double validation_mse = std::numeric_limits<double>::quiet_NaN();  ///< held-out MSE (Validation only)
   std::string error;           ///< why the candidate has no model; empty when it has one
   std::optional<Model> model;  ///< the identified model (none when it failed)
@@ -131,6 +132,8 @@ class SelectionData {
       m_fit_records.push_back(records[i].head(m_split.back()));
       m_fit_samples += m_split.back();
     }
+    // identify's window, against the fit parts it is applied to.
+    detail::require_initialisation_window(m_fit_records, options.identify.initialisation_window);
     // The fit parts, parts of the checked records, once for every candidate. An empty one fails every
     // candidate, with the reason, rather than the selection.
     try {
@@ -238,14 +241,17 @@ SelectionCandidate<Model> score_candidate(const Model& structure, const Selectio
     row.error = error.what();
     return row;
   }
-  row.fit_mse = detail::tail_simulation_mse(*row.model, data.fit_records(),
-                                            std::vector<Eigen::Index>(data.records().size(), 0), 0);
+  // The free run as it was fitted: from rest, or after identify's initialisation window.
+  row.fit_mse =
+      detail::tail_simulation_mse(*row.model, data.fit_records(), std::vector<Eigen::Index>(data.records().size(), 0),
+                                  options.identify.initialisation_window);
   if (options.criterion == SelectionCriterion::Validation) {
     row.validation_mse = detail::tail_simulation_mse(*row.model, data.records(), data.split(), options.window);
     row.score = row.validation_mse;
     return row;
   }
-  const double samples = static_cast<double>(data.fit_samples());
+  const double samples = static_cast<double>(data.fit_samples() - static_cast<Eigen::Index>(data.records().size()) *
+                                                                      options.identify.initialisation_window);
   const double parameters = static_cast<double>(p);
   if (row.fit_mse == 0.0) {
     row.score = -std::numeric_limits<double>::infinity();

@@ -2646,7 +2646,7 @@ class _SelectionData:
     """
     The records and options of a selection, checked once (bonl::SelectionData); made by _selection_data.
     """
-    def __getstate__(self) -> tuple[list, str, float, int, int, str, typing.Any, float | None, int, bool, typing.Any]:
+    def __getstate__(self) -> tuple[list, str, float, int, int, str, typing.Any, float | None, int, bool, typing.Any, int]:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
@@ -2740,12 +2740,12 @@ def _select(candidates: collections.abc.Sequence[BoucWenFeedback], data: _Select
     """
     C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
     """
-def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> _SelectionData:
+def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> _SelectionData:
     """
     bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. The keyword arguments after window are identify's.
     """
 @typing.overload
-def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> ARX:
+def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> ARX:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2785,6 +2785,12 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
@@ -2816,7 +2822,7 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Hammerstein:
+def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> Hammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2856,6 +2862,12 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
@@ -2887,7 +2899,7 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> HammersteinWiener:
+def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> HammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2927,6 +2939,12 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
@@ -2958,7 +2976,7 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PseudoHammersteinWiener:
+def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> PseudoHammersteinWiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -2998,6 +3016,12 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
@@ -3029,7 +3053,7 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> Wiener:
+def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> Wiener:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -3069,6 +3093,12 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
@@ -3100,7 +3130,7 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> WienerHammerstein:
+def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> WienerHammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -3140,6 +3170,12 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
@@ -3171,7 +3207,7 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> NonlinearFeedback:
+def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> NonlinearFeedback:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -3211,6 +3247,12 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
@@ -3242,7 +3284,7 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> PrandtlIshlinskiiHammerstein:
+def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> PrandtlIshlinskiiHammerstein:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -3282,6 +3324,12 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
@@ -3313,7 +3361,7 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         The estimator broke down numerically.
     """
 @typing.overload
-def identify(model: BoucWenFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None) -> BoucWenFeedback:
+def identify(model: BoucWenFeedback, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> BoucWenFeedback:
     """
     Identify a model's parameters from an input/output record, or from several.
     
@@ -3353,6 +3401,12 @@ def identify(model: BoucWenFeedback, u: numpy.typing.ArrayLike | None = None, y:
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
         first sample of the first record (the record starts at rest there).
+    initialisation_window : int, default 0
+        Where identify refines: each record's free run starts after its first initialisation_window
+        samples, measured, which set the model's state (``Model.simulate(u, initial=...)``), and is
+        scored after them, instead of from rest: the model is fitted the way a test protocol with that
+        state-initialisation window uses it (records that do not start at rest; an integrating plant,
+        whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
         equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.

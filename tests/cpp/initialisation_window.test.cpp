@@ -1,0 +1,126 @@
+// identify()'s initialisation window (IdentifyOptions::initialisation_window): the refinement fits
+// each record's free run after its first m samples, measured, as Model::simulate(u, u_past, y_past)
+// runs it.
+// - Its normal equations: the oracle is J from central differences of that simulation (step 1e-6
+//   relative, test_support.hpp's run_differences); the refinement takes forward differences (step
+//   sqrt(eps) relative).
+// - A known integrating system (the friction drive, ni = 1) recorded in motion, noise-free: fitted
+//   after a window it is recovered to NRMSE <= 1e-6 on a fresh record, scored the same way; fitted
+//   from rest, the start's transient stays in the integrated output and it is not.
+// - select() ranks by the free run as it was fitted: fit_mse is the windowed run's MSE, recomputed.
+// - Bad windows are refused with the option's name.
+
+#include "test_support.hpp"
+
+#include <vector>
+
+using namespace bonl_test;
+
+namespace {
+
+/// The free run of u's samples from `window` on, after its first `window` samples of (u, y).
+template <class Model>
+Eigen::VectorXd after_window(const Model& model, const Eigen::VectorXd& u, const Eigen::VectorXd& y,
+                             Eigen::Index window) {
+  const Eigen::Index n = u.size() - window;
+  return model.simulate(u.tail(n), u.head(window), y.head(window));
+}
+
+/// A record of `samples` samples that starts in motion: the system run from rest on a longer input,
+/// its first `lead` samples dropped.
+struct MovingRecord {
+  Eigen::VectorXd u, y;
+};
+template <class Model>
+MovingRecord moving_record(const Model& truth, Eigen::Index samples, Eigen::Index lead, unsigned seed) {
+  const Eigen::VectorXd u = bonl::signals::random_levels(lead + samples, 5, 1.0, seed);
+  const Eigen::VectorXd y = truth.simulate(u);
+  return {u.tail(samples), y.tail(samples)};
+}
+
+double nrmse(const Eigen::VectorXd& simulated, const Eigen::VectorXd& measured) {
+  const double spread = std::sqrt((measured.array() - measured.mean()).square().mean());
+  return std::sqrt((simulated - measured).squaredNorm() / static_cast<double>(measured.size())) / spread;
+}
+
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("with an initialisation window the refinement's normal equations are the windowed run's",
+                        "[initialisation_window]", bonl::Models) {
+  const TestType model = known_system<TestType>("small");
+  const Eigen::Index window = 12;
+  const Eigen::VectorXd u = bonl::signals::random_levels(1500, 5, 1.0, 21);
+  const Eigen::VectorXd y = model.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 22);
+  const bonl::Records<double> records{{u, y}};
+  const Eigen::VectorXd scored = bonl::detail::stacked_outputs(records, window);
+  REQUIRE(scored.size() == u.size() - window);
+  Eigen::MatrixXd normal;
+  Eigen::VectorXd gradient;
+  REQUIRE(bonl::detail::window_normal_equations(model, records, window, scored, normal, gradient));
+
+  const Eigen::MatrixXd jacobian =
+      run_differences(model, [&](const TestType& m) -> Eigen::VectorXd { return after_window(m, u, y, window); });
+  const Eigen::MatrixXd expected_normal = jacobian.transpose() * jacobian;
+  const Eigen::VectorXd expected_gradient =
+      jacobian.transpose() * (y.tail(scored.size()) - after_window(model, u, y, window));
+  CHECK((normal - expected_normal).norm() <= 1e-5 * expected_normal.norm());
+  CHECK((gradient - expected_gradient).norm() <= 1e-5 * expected_gradient.norm());
+}
+
+TEST_CASE("an integrating system recorded in motion is recovered when fitted after its initialisation window",
+          "[initialisation_window]") {
+  const bonl::NonlinearFeedbackd truth = friction_drive_position();
+  const Eigen::Index window = 10;
+  const MovingRecord fit = moving_record(truth, 4000, 700, 23);
+  const MovingRecord fresh = moving_record(truth, 3000, 900, 24);
+  REQUIRE(std::abs(fit.y[1] - fit.y[0]) > 1e-3);  // in motion at the record's start
+
+  bonl::IdentifyOptions options;
+  options.initialisation_window = window;
+  const bonl::NonlinearFeedbackd fitted = bonl::identify(truth, fit.u, fit.y, options);
+  const double windowed = nrmse(after_window(fitted, fresh.u, fresh.y, window), fresh.y.tail(fresh.y.size() - window));
+  CHECK(windowed <= 1e-6);
+
+  const bonl::NonlinearFeedbackd from_rest = bonl::identify(truth, fit.u, fit.y);
+  const double rest = nrmse(after_window(from_rest, fresh.u, fresh.y, window), fresh.y.tail(fresh.y.size() - window));
+  CHECK(rest > 1e3 * windowed);
+}
+
+TEST_CASE("select ranks by the free run as it was fitted, after the initialisation window", "[initialisation_window]") {
+  const bonl::NonlinearFeedbackd truth = friction_drive_position();
+  const Eigen::Index window = 10;
+  const MovingRecord record = moving_record(truth, 2000, 500, 25);
+  bonl::SelectOptions options;
+  options.criterion = bonl::SelectionCriterion::BIC;
+  options.identify.initialisation_window = window;
+  options.identify.refine_iterations = 20;
+  const bonl::SelectionData<double> data(bonl::Records<double>{{record.u, record.y}}, options);
+  const auto row = bonl::score_candidate(truth, data);
+  REQUIRE(row.model);
+  const Eigen::VectorXd simulated = after_window(*row.model, record.u, record.y, window);
+  const double expected = (record.y.tail(simulated.size()) - simulated).squaredNorm() / double(simulated.size());
+  CHECK(row.fit_mse == Approx(expected).epsilon(1e-12));
+}
+
+TEST_CASE("E24 a bad initialisation window is refused with its name", "[initialisation_window][bad_input]") {
+  const bonl::NonlinearFeedbackd truth = friction_drive_position();
+  const MovingRecord record = moving_record(truth, 200, 50, 26);
+  bonl::IdentifyOptions options;
+  options.initialisation_window = -1;
+  CHECK_THROWS_WITH(bonl::identify(truth, record.u, record.y, options),
+                    Catch::Matchers::Contains("initialisation_window must be >= 0, got -1"));
+  options.initialisation_window = 200;
+  CHECK_THROWS_WITH(bonl::identify(truth, record.u, record.y, options),
+                    Catch::Matchers::Contains("initialisation_window (200) must be shorter than every record; "
+                                              "records[0] has 200 samples"));
+  options.initialisation_window = 195;
+  CHECK_THROWS_WITH(bonl::identify(truth, record.u, record.y, options),
+                    Catch::Matchers::Contains("the records after their initialisation_window must be longer together "
+                                              "than the number of parameters (9), got 5 samples"));
+  bonl::SelectOptions select_options;
+  select_options.identify.initialisation_window = 150;  // the fit part is 150 of the 200 samples
+  CHECK_THROWS_WITH(bonl::SelectionData<double>(bonl::Records<double>{{record.u, record.y}}, select_options),
+                    Catch::Matchers::Contains("initialisation_window (150) must be shorter than every record"));
+  CHECK_THROWS_WITH(bonl::refine_output_error(truth, bonl::Records<double>{{record.u, record.y}}, 10, nullptr, 300),
+                    Catch::Matchers::Contains("initialisation_window (300) must be shorter than every record"));
+}

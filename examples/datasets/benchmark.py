@@ -80,6 +80,9 @@ class Benchmark:
     #: bonl.select's criterion: "validation" (the held-out tail of the estimation data, scored with the
     #: tests' window) or "aic"/"bic" (the free run over the whole estimation record)
     criterion: str = "validation"
+    #: identify fits each candidate's free run after the tests' state-initialisation window (identify's
+    #: initialisation_window), as the tests score it, instead of from rest
+    fit_after_window: bool = False
 
     def grid_of(self, family) -> Optional[Dict[str, Sequence[int]]]:
         """The orders ``family`` is selected over here, or None where this data set does not run it."""
@@ -115,6 +118,8 @@ def _run(benchmark, families):
         for candidate in candidates:
             benchmark.prepare.get(family.__name__, lambda structure: None)(candidate)
         identify = benchmark.family_identify.get(family.__name__, benchmark.identify)
+        if benchmark.fit_after_window:
+            identify = [{**options, "initialisation_window": benchmark.window} for options in identify]
         start = time.perf_counter()
         scoring = (dict(window=benchmark.window) if benchmark.criterion == "validation"
                    else dict(criterion=benchmark.criterion))
@@ -149,6 +154,7 @@ def _run(benchmark, families):
         **({"family_identify": benchmark.family_identify} if benchmark.family_identify else {}),
         "identify": benchmark.identify,
         **({"criterion": benchmark.criterion} if benchmark.criterion != "validation" else {}),
+        **({"fit_after_window": True} if benchmark.fit_after_window else {}),
         "tests": [{"name": t.name, "samples": int(t.u.size), "window": t.window, "skip": t.skip,
                    **({"periods": t.periods} if t.periods > 1 else {})} for t in benchmark.tests],
         "published": benchmark.published,

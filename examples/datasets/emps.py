@@ -56,6 +56,11 @@ def make():
         # error adds up; the held-out last quarter (6 s) does not measure that drift, the free run over
         # the whole estimation record does: the candidates are ranked by its BIC.
         criterion="bic",
+        # The records start in motion, and the position integrates: fitted from rest, the chosen model
+        # had learnt a start transient that the test's window removes, and it simulated the estimation
+        # record itself twice as far off after the window as from rest (a constant offset). Fitted after
+        # the window, it is used as it was fitted.
+        fit_after_window=True,
         published=[("dynoNet (Forgione and Piga 2021), fit 96.8 %", "2.64e-3")])
 
 

@@ -226,32 +226,38 @@ def test_the_silverbox_nonlinear_feedback_model_file_gives_its_figures_on_every_
 def test_the_emps_friction_drive_model_file_gives_its_figures_and_beats_the_linear_model():
     """The EMPS's model file, the nonlinear-feedback model with an integrator (a friction curve of the
     velocity, the position integrating it), scores its figures on the pulses record (after the 20-sample
-    window and from rest), below the linear model and every other family."""
+    window and from rest), below the linear model and every other family, and below 5 mm."""
     model, rows = _rescored_model_file("emps")
     assert model.ni == 1 and model.nv == 1
     row = rows["NonlinearFeedback"]
     (test,) = _script("emps").make().tests
     assert all(row["test_rms"][test.name] < other["test_rms"][test.name] for name, other in rows.items()
                if name != "NonlinearFeedback")
+    assert row["test_rms"][test.name] <= 5e-3  # docs/lab/benchmarks.md's table: below 5 mm
 
 
 def test_the_emps_diagnosis_in_the_docs_is_what_the_records_and_the_model_file_give():
     """docs/lab/benchmarks.md explains the EMPS's test figure: the two records share their reference and
     their outputs nearly coincide, while the test's input carries the controller's compensation of force
-    pulses the model does not see; fed the estimation record's input, the model file scores about half
-    its test figure against the test's output. The quoted figures are computed here from the data."""
+    pulses the model does not see; fed the estimation record's input, the model file scores about a
+    third of its test figure against the test's output. It also quotes the model file's figure on the
+    estimation record after the same window, the record dynoNet's public test script loads. The quoted
+    figures are computed here from the data."""
     model, rows = _rescored_model_file("emps")
     benchmark = _script("emps").make()
     ((u, y),), (test,) = benchmark.estimation, benchmark.tests
     outputs = float(np.sqrt(np.mean((test.y - y) ** 2)))
     inputs = float(np.sqrt(np.mean((test.u - u) ** 2)))
     pulse_free = dataclasses.replace(test, u=u).rms(model)
+    estimation_record = dataclasses.replace(test, u=u, y=y).rms(model)  # what dynoNet's public script scores
     page = (ROOT / "docs" / "lab" / "benchmarks.md").read_text()
     for quoted in ("%.3f mm" % (outputs * 1e3), "%.2f (%.0f %% of the input's"
                    % (inputs, 100 * inputs / np.std(test.u)), "%.2f mm" % (pulse_free * 1e3),
-                   "%.2f mm" % (rows["NonlinearFeedback"]["test_rms"][test.name] * 1e3)):
+                   "%.2f mm" % (rows["NonlinearFeedback"]["test_rms"][test.name] * 1e3),
+                   "chosen model scores %.2f mm." % (estimation_record * 1e3)):
         assert quoted in page, f"docs/lab/benchmarks.md should quote {quoted}"
-    assert outputs < 0.05 * pulse_free < 0.05 * rows["NonlinearFeedback"]["test_rms"][test.name]
+    # The records' outputs nearly coincide; the pulse-free figure is well below the test's.
+    assert outputs < 0.1 * pulse_free < 0.05 * rows["NonlinearFeedback"]["test_rms"][test.name]
 
 
 def test_the_bouc_wen_feedback_model_file_gives_its_figures_on_every_test():
@@ -295,7 +301,7 @@ def test_the_measured_data_page_says_what_the_results_files_give():
     nonlinear-feedback model an order of magnitude below ARX on every Silverbox test, 0.4 to 0.55 of it
     on the Bouc-Wen multisine and a quarter on the sweep; the one-linear-block models on the
     Wiener-Hammerstein circuit at 21 mV and more; the EMPS's test input outside the estimation range on
-    172 samples and its H-W hundreds of metres off; its block models without an integrator several times
+    172 samples and its H-W kilometres off; its block models without an integrator several times
     dynoNet's figure."""
     text = " ".join((ROOT / "docs" / "lab" / "measured_data.md").read_text().split())
 
@@ -325,7 +331,7 @@ def test_the_measured_data_page_says_what_the_results_files_give():
     emps = rows("emps")
     outside = {n for row in emps.values() for n in row["test_inputs_outside_range"].values()}
     assert outside == {172} and "(172 samples outside the range `identify` saw" in text
-    assert emps["HammersteinWiener"]["test_rms"]["pulses record"] > 100  # m: "hundreds of metres off"
+    assert emps["HammersteinWiener"]["test_rms"]["pulses record"] > 1000  # m: "kilometres off"
     dynonet = _script("emps").COMPARISONS[0].best[1]
     assert all(emps[m]["test_rms"]["pulses record"] > 3 * dynonet for m in FEED_FORWARD if m != "ARX")
     assert "several times dynoNet's figure and more" in text

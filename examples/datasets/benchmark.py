@@ -44,7 +44,14 @@ class Test:
 
     def rms(self, model, from_rest: bool = False) -> float:
         """The score; ``from_rest``: the same samples scored with the whole record simulated from rest
-        at the operating point, to show what the initial-state window does."""
+        at the operating point, to show what the initial-state window does. Infinity where the
+        simulation diverges (a figure like any other: the model is reported, not dropped)."""
+        try:
+            return self._rms(model, from_rest)
+        except bonl.NumericalError:
+            return math.inf
+
+    def _rms(self, model, from_rest: bool) -> float:
         if self.window and from_rest:
             error = (self.y - model.simulate(self.u))[self.window:]
         elif self.window:

@@ -60,13 +60,12 @@ void check_under_noise(const Model& truth) {
   INFO(Model::kName << ": median NRMSE with the window " << median(window) << ", recursion alone " << median(recursion)
                     << ", identify() " << median(offline) << "; swaps " << health.window.swaps << ", iterations "
                     << health.window.iterations);
-  // Measured ratios to identify(): 1.05 (P-H-W) to 1.82 (H-W) at both run-time and fixed orders.
-  // The Wiener-Hammerstein model's window ends worse than its recursion alone (6.5 and 3.5 times
-  // identify()), and so does the Bouc-Wen feedback model's (4.5 and 2.2 times: its recursion has not
-  // settled the law's alpha, which only the saturation shows, within the 4000 samples); neither is
-  // understood yet. The bounds hold what is measured.
+  // Measured ratios to identify(): 1.05 (nonlinear feedback, Prandtl-Ishlinskii) to 1.54 (H-W) at
+  // both run-time and fixed orders; the Bouc-Wen feedback model's 1.12 (its recursion alone: 2.2).
+  // The Wiener-Hammerstein model's window ends worse than its recursion alone (5.6 and 3.5 times
+  // identify()); that is not understood yet. The bounds hold what is measured.
   const std::string name = Model::kName;
-  const bool window_worse = name == "WienerHammerstein" || name == "BoucWenFeedback";
+  const bool window_worse = name == "WienerHammerstein";
   CHECK(median(window) <= (window_worse ? 8.0 : 2.0) * median(offline));
   if (!window_worse) CHECK(median(window) <= 1.15 * median(recursion));
   CHECK(health.window.swaps > 0);

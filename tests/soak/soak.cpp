@@ -16,7 +16,8 @@
 // docs/lab/reliability.md.
 //
 //   bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X] [--seed S]
-//             [--method output_error|equation_error|paper] [--json FILE]
+//             [--method output_error|equation_error|paper] [--window] [--json FILE]
+//   --window  the output-error method with its window refinement (EstimatorOptions::window)
 
 #include <bonl/bonl.hpp>
 
@@ -48,13 +49,14 @@ struct Settings {
   bonl::Method method = bonl::Method::OutputError;
   unsigned seed = 2026;
   std::string json;
+  bool window = false;  // the output-error method's window refinement on
 };
 
 [[noreturn]] void usage(const std::string& problem) {
   std::cerr
       << "bonl_soak: " << problem
       << "\nusage: bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X]"
-         " [--seed S] [--method output_error|equation_error|paper] [--json FILE]\n";
+         " [--seed S] [--method output_error|equation_error|paper] [--window] [--json FILE]\n";
   std::exit(2);
 }
 
@@ -87,6 +89,8 @@ Settings parse(int argc, char** argv) {
       s.seed = static_cast<unsigned>(parse_count(value(), "--seed"));
     else if (arg == "--json")
       s.json = value();
+    else if (arg == "--window")
+      s.window = true;
     else if (arg == "--no-ceiling")
       s.trace_ceiling = std::numeric_limits<double>::infinity();
     else if (arg == "--trace-ceiling") {
@@ -195,6 +199,7 @@ int main(int argc, char** argv) {
   options.forgetting = bonl::ForgettingSchedule::constant(0.98);
   options.method = settings.method;
   options.trace_ceiling = settings.trace_ceiling;
+  options.window.enabled = settings.window;
   try {
     options.validate();
   } catch (const std::invalid_argument& error) {
@@ -333,8 +338,9 @@ int main(int argc, char** argv) {
   };
   const bonl::EstimatorHealth& health = estimator.health();
 
-  std::printf("bonl_soak: %lld samples of P-H-W online identification, %s method, lambda = 0.98, trace ceiling %g\n",
-              settings.samples, bonl::to_string(settings.method), options.resolved_trace_ceiling());
+  std::printf("bonl_soak: %lld samples of P-H-W online identification, %s method%s, lambda = 0.98, trace ceiling %g\n",
+              settings.samples, bonl::to_string(settings.method), settings.window ? " with the window refinement" : "",
+              options.resolved_trace_ceiling());
   std::printf("  phases of %lld samples: rich, constant, rich, zero; %lld outliers of +-%.2f\n", settings.phase_length,
               outliers, outlier_size);
   std::printf("  wall time %.1f s (%.0f ns per sample, data generation and checks included)\n", seconds,
@@ -344,6 +350,13 @@ int main(int argc, char** argv) {
   std::printf("  health: forgetting limited on %lld updates, %lld failures, %lld internal restarts\n",
               static_cast<long long>(health.forgetting_limited), static_cast<long long>(health.failures),
               static_cast<long long>(health.internal_restarts));
+  if (settings.window) {
+    const bonl::WindowRefinementCounts& w = health.window;
+    std::printf(
+        "  window: %lld iterations, %lld refused steps, %lld swaps, %lld refusals, %lld restarts, %lld overruns\n",
+        static_cast<long long>(w.iterations), static_cast<long long>(w.refused_steps), static_cast<long long>(w.swaps),
+        static_cast<long long>(w.refusals), static_cast<long long>(w.reseeds), static_cast<long long>(w.overruns));
+  }
   std::printf(
       "  %lld covariance checks: largest |P| %.3e, largest trace %.3e (ceiling %.3e), smallest eigenvalue %.3e\n",
       checks, largest_p, largest_trace, trace_limit, smallest_eigenvalue);
@@ -358,7 +371,7 @@ int main(int argc, char** argv) {
     std::ofstream out(settings.json);
     out.precision(6);
     out << "{\"samples\": " << settings.samples << ", \"method\": \"" << bonl::to_string(settings.method)
-        << "\", \"phase_length\": " << settings.phase_length
+        << "\", \"window\": " << (settings.window ? "true" : "false") << ", \"phase_length\": " << settings.phase_length
         << ", \"trace_ceiling\": " << (ceiling ? std::to_string(options.resolved_trace_ceiling()) : std::string("null"))
         << ", \"seconds\": " << seconds << ", \"outliers\": " << outliers << ", \"largest_abs_p\": " << largest_p
         << ", \"largest_trace\": " << largest_trace << ", \"smallest_eigenvalue\": " << smallest_eigenvalue

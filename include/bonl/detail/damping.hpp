@@ -1,7 +1,7 @@
 #pragma once
 // Levenberg-Marquardt's damping, shared by the offline refinement (estimator/output_error.hpp) and
 // the online estimator's window refinement (estimator/window_refinement.hpp): the system solved is
-// (J'J + damping D) step = J'e.
+// (J'J + damping D) step = J'e. Each scales D its own way (damping_scale, levenberg_scale).
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -22,6 +22,21 @@ template <typename Normal, typename Scale>
 void damping_scale(const Eigen::MatrixBase<Normal>& normal, Eigen::MatrixBase<Scale>& scale) {
   using Scalar = typename Normal::Scalar;
   scale = normal.diagonal().cwiseMax(Scalar(1e-12) * (normal.diagonal().maxCoeff() + Scalar(1e-300)));
+}
+
+/// D for the online window refinement: the mean of J'J's diagonal on every parameter (Levenberg's
+/// damping toward the steepest descent, not Marquardt's per-parameter scale). Why: from the
+/// recursion's estimate, at the bottom of the curved valley between a model's numerator and
+/// denominator, the per-parameter scale lets a step move in the valley only a little per iteration.
+/// Measured on the slowest known P-H-W under 10% noise: from the recursion's final estimate one
+/// iteration with this scale reaches identify()'s accuracy, where the per-parameter scale takes 20;
+/// the window refinement affords few iterations. The offline refinement keeps the per-parameter
+/// scale: it converges to the same minimum either way, and its results are what the data-set figures
+/// record.
+template <typename Normal, typename Scale>
+void levenberg_scale(const Eigen::MatrixBase<Normal>& normal, Eigen::MatrixBase<Scale>& scale) {
+  using Scalar = typename Normal::Scalar;
+  scale.setConstant(std::max(normal.diagonal().mean(), Scalar(1e-300)));
 }
 
 }  // namespace bonl::detail

@@ -465,7 +465,8 @@ class Estimator {
     m_window->push(u, y, error);
     const double memory =
         lambda < Scalar(1) ? 1.0 / (1.0 - static_cast<double>(lambda)) : std::numeric_limits<double>::infinity();
-    if (m_window->advance(m_rls.theta(), m_outputs, memory)) {
+    // The window keeps to a forgetting the caller chose, not to the adaptive memory's (advance()).
+    if (m_window->advance(m_rls.theta(), m_outputs, memory, !m_forgetting.adaptive())) {
       const auto& covariance = m_window->covariance();
       const Scalar trace = covariance.trace();
       const Scalar factor = trace > m_max_trace ? m_max_trace / trace : Scalar(1);

@@ -12,8 +12,11 @@
 // iteration is one free run of a trial estimate over the window with its Jacobian (J'J and J'e
 // accumulated on the way, so that a kept trial needs no pass of its own for the next step), the
 // window growing with the data between iterations. A trial is kept where it simulates the samples
-// the current estimate was scored on better. A window longer than `length` drops its older half,
-// its new start the kept run's state there.
+// the current estimate was scored on better. The damping is Levenberg's, the mean of J'J's diagonal
+// on every parameter (detail::levenberg_scale says why). A window longer than it may be drops its
+// older samples down to half that, its new start a kept run's state there. It may be `length`
+// long, or under a forgetting factor the caller chose (a Steps schedule) 2 / (1 - lambda) samples,
+// so that it forgets a changed plant as fast as the recursion does.
 //
 // After each kept iteration the window's estimate runs on over the samples that came during the
 // pass, which it has not been fitted on, and is scored on the newer half of them beside the
@@ -29,8 +32,9 @@
 // slice of its own.
 //
 // Off by default: on the known systems it lowers the median online error under noise and tracks a
-// change faster, but it ends worse than the recursion alone on some of them (slow systems under 10%
-// noise, AR(1) noise, some noise-free on the multi-sine); docs/explanation/algorithm.md has the table.
+// change faster, but it ends worse than the recursion alone on some of them (AR(1) noise, some
+// noise-free on the multi-sine), and it costs several times the recursion's update;
+// docs/explanation/algorithm.md has the table.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -52,8 +56,9 @@ struct WindowRefinementOptions {
   /// Off by default: on the known systems it lowers the median online error under white noise but
   /// raises it on some (docs/explanation/algorithm.md). Used by the output-error method only.
   bool enabled = false;
-  /// The most samples the refinement fits at once (>= 100): its memory. The ring buffer holds twice
-  /// as many.
+  /// The most samples the refinement fits at once (>= 100): its memory. Under a forgetting factor
+  /// the caller chose (a Steps schedule) it is 2 / (1 - lambda) where that is shorter. The ring buffer
+  /// holds twice as many.
   Eigen::Index length = 4000;
   /// Model steps of the refinement per update (>= 2): the bound on one update's extra work. One
   /// iteration over a window of N samples takes N / work_per_sample updates.
@@ -170,9 +175,15 @@ class WindowRefinement {
   /// \param run the recursion's run after this sample
   /// \param memory the recursion's forgetting's memory in samples, 1 / (1 - lambda) (infinity without
   /// forgetting)
+  /// \param follow_memory whether the window keeps to that memory: at most 2 memory samples (about
+  /// 86% of the weight the recursion gives its past). True where the forgetting is the caller's
+  /// choice (a Steps schedule), so that the window forgets a changed plant as fast as the caller asked
+  /// for; false for the adaptive memory, whose cuts while the estimate converges are for the
+  /// recursion's linearisation, which the window redoes on every pass.
   /// \return true when a refined estimate is to be swapped in: theta(), covariance() and run() hold it
-  bool advance(const Params& recursion, const Run& run, double memory) noexcept {
+  bool advance(const Params& recursion, const Run& run, double memory, bool follow_memory) noexcept {
     m_memory = memory;
+    m_follow_memory = follow_memory;
     if (m_count - m_start > m_capacity) {  // the window's first samples are being overwritten
       ++m_counts.overruns;
       restart(recursion, run);
@@ -230,16 +241,23 @@ class WindowRefinement {
   std::size_t slot(Eigen::Index k) const noexcept { return static_cast<std::size_t>((m_start + k) % m_capacity); }
   double num_params() const noexcept { return static_cast<double>(m_theta.size()); }
 
-  /// A pass of m_trial_theta over the window as it is now; a window longer than `length` first drops
-  /// its older half (its new start: the run of a kept pass there).
+  /// The most samples the window holds now: `length`, or where it follows the recursion's memory,
+  /// 2 memory samples, at least twice the fewest a pass starts with.
+  Eigen::Index longest() const noexcept {
+    if (!m_follow_memory || !(2.0 * m_memory < static_cast<double>(m_options.length))) return m_options.length;
+    return std::max(static_cast<Eigen::Index>(2.0 * m_memory), 2 * m_minimum);
+  }
+
+  /// A pass of m_trial_theta over the window as it is now; a window longer than longest() first drops
+  /// its older samples, starting anew where a kept pass left half of longest() (its run there).
   void begin_pass(const Params& recursion, const Run& run) noexcept {
-    if (m_count - m_start > m_options.length) {
+    if (m_count - m_start > longest()) {
       if (!m_have_half) {
         ++m_counts.overruns;
         restart(recursion, run);
         return;
       }
-      m_start += m_options.length / 2;
+      m_start += m_half_offset;
       m_start_run = m_half_run;
       m_start_theta = m_half_theta;
       m_have_half = false;
@@ -255,17 +273,18 @@ class WindowRefinement {
     m_sse_trial = 0.0;
     m_sse_common = 0.0;
     m_pass_length = m_count - m_start;
+    const Eigen::Index keep = longest() / 2;
+    m_half_offset_trial = m_pass_length > keep ? m_pass_length - keep : 0;
     m_position = 0;
     m_phase = Phase::Pass;
   }
 
-  /// The trial's free run with its Jacobian; the run's state halfway through `length` is kept for a
-  /// later slide of the window.
+  /// The trial's free run with its Jacobian; the run's state where half of longest() is left is kept
+  /// for a later slide of the window.
   Eigen::Index pass_steps(Eigen::Index budget) noexcept {
     const Eigen::Index samples = std::min(budget, m_pass_length - m_position);
-    const Eigen::Index half = m_options.length / 2;
     for (Eigen::Index i = 0; i < samples; ++i, ++m_position) {
-      if (m_position == half) {
+      if (m_position == m_half_offset_trial && m_half_offset_trial > 0) {
         m_half_trial = m_trial;
         m_half_trial_theta = m_trial_theta;
       }
@@ -326,7 +345,8 @@ class WindowRefinement {
       m_gradient = m_trial_gradient;
       m_have_iterate = true;
       m_trials = 0;
-      if (m_pass_length > m_options.length / 2) {
+      if (m_half_offset_trial > 0) {
+        m_half_offset = m_half_offset_trial;
         m_half_run = m_half_trial;
         m_half_theta = m_half_trial_theta;
         m_have_half = true;
@@ -408,7 +428,7 @@ class WindowRefinement {
       return;
     }
     m_system = m_normal;
-    detail::damping_scale(m_system, m_scale);
+    detail::levenberg_scale(m_system, m_scale);
     m_system.diagonal() += Scalar(m_damping) * m_scale;
     m_ldlt.compute(m_system);
     m_delta = m_ldlt.solve(m_gradient);
@@ -439,7 +459,7 @@ class WindowRefinement {
   Phase m_phase = Phase::Collect;
   Run m_start_run;   // the window's start state, simulated with m_start_theta
   Run m_trial;       // the trial's run
-  Run m_half_trial;  // the trial's run at length / 2 ...
+  Run m_half_trial;  // the trial's run where half of longest() is left ...
   Run m_half_run;    // ... and a kept one's: the start after a slide
   Run m_catch_up;    // the estimate's run on to the sample in hand
   Params m_theta;    // the window's estimate
@@ -459,7 +479,10 @@ class WindowRefinement {
   double m_memory = std::numeric_limits<double>::infinity();  // the recursion's, in samples
   bool m_have_iterate = false;
   bool m_have_half = false;
-  bool m_reseed_pass = false;  // the pass scores the recursion's estimate on the window
+  Eigen::Index m_half_offset = 0;        // where m_half_run is, from m_start
+  Eigen::Index m_half_offset_trial = 0;  // where this pass keeps m_half_trial (0: nowhere)
+  bool m_follow_memory = false;          // the window keeps to 2 m_memory samples
+  bool m_reseed_pass = false;            // the pass scores the recursion's estimate on the window
   int m_trials = 0;
   Eigen::Index m_scored = 0;  // the samples the swap test scores
   WindowRefinementCounts m_counts;

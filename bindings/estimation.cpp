@@ -423,6 +423,9 @@ void bind_estimation(py::module_& m) {
       .def_readonly("swaps", &bonl::WindowRefinementCounts::swaps, "int: refined estimates swapped into the recursion")
       .def_readonly("refusals", &bonl::WindowRefinementCounts::refusals,
                     "int: refined estimates not swapped in (the recursion predicted the newest samples as well)")
+      .def_readonly("undetermined", &bonl::WindowRefinementCounts::undetermined,
+                    "int: refined estimates not swapped in although they predicted the newest samples better: the "
+                    "window's data do not determine every parameter, or the covariance would not be positive definite")
       .def_readonly("reseeds", &bonl::WindowRefinementCounts::reseeds,
                     "int: restarts with the newest samples only (a change of the plant)")
       .def_readonly("overruns", &bonl::WindowRefinementCounts::overruns,

@@ -353,9 +353,11 @@ int main(int argc, char** argv) {
   if (settings.window) {
     const bonl::WindowRefinementCounts& w = health.window;
     std::printf(
-        "  window: %lld iterations, %lld refused steps, %lld swaps, %lld refusals, %lld restarts, %lld overruns\n",
+        "  window: %lld iterations, %lld refused steps, %lld swaps, %lld refusals, %lld undetermined, %lld restarts, "
+        "%lld overruns\n",
         static_cast<long long>(w.iterations), static_cast<long long>(w.refused_steps), static_cast<long long>(w.swaps),
-        static_cast<long long>(w.refusals), static_cast<long long>(w.reseeds), static_cast<long long>(w.overruns));
+        static_cast<long long>(w.refusals), static_cast<long long>(w.undetermined), static_cast<long long>(w.reseeds),
+        static_cast<long long>(w.overruns));
   }
   std::printf(
       "  %lld covariance checks: largest |P| %.3e, largest trace %.3e (ceiling %.3e), smallest eigenvalue %.3e\n",

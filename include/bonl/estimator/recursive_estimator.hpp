@@ -172,7 +172,8 @@ class Estimator {
     if (options.method == Method::OutputError) {
       m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
       if (options.window.enabled) {
-        m_window.emplace(structure, options.window, settings, options.stability_radius, m_p0);
+        // The window keeps to a forgetting the caller chose, not to the adaptive memory's.
+        m_window.emplace(structure, options.window, settings, options.stability_radius, m_p0, !m_forgetting.adaptive());
       }
     }
     reset();
@@ -465,8 +466,7 @@ class Estimator {
     m_window->push(u, y, error);
     const double memory =
         lambda < Scalar(1) ? 1.0 / (1.0 - static_cast<double>(lambda)) : std::numeric_limits<double>::infinity();
-    // The window keeps to a forgetting the caller chose, not to the adaptive memory's (advance()).
-    if (m_window->advance(m_rls.theta(), m_outputs, memory, !m_forgetting.adaptive())) {
+    if (m_window->advance(m_rls.theta(), m_outputs, memory)) {
       const auto& covariance = m_window->covariance();
       const Scalar trace = covariance.trace();
       const Scalar factor = trace > m_max_trace ? m_max_trace / trace : Scalar(1);

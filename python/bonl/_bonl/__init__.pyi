@@ -2362,6 +2362,11 @@ class WindowRefinementCounts:
         """
         int: refined estimates swapped into the recursion
         """
+    @property
+    def undetermined(self) -> int:
+        """
+        int: refined estimates not swapped in although they predicted the newest samples better: the window's data do not determine every parameter, or the covariance would not be positive definite
+        """
 class EstimatorHealth:
     """
     What an Estimator's numerical safeguards did since reset().

@@ -517,8 +517,11 @@ Returns
 UpdateResults
     ``status``, an int8 array of ``int(UpdateStatus.<name>)`` codes (a non-finite sample is
     rejected_non_finite and leaves the state untouched), and ``prediction``, ``theta`` when asked for.)doc")
-      .def_property_readonly("theta", &AnyEstimator::theta, "numpy.ndarray: current estimate (eq. 19 order).")
-      .def_property_readonly("covariance", &AnyEstimator::covariance, "numpy.ndarray: current P (symmetric).")
+      .def_property_readonly("theta", &AnyEstimator::theta,
+                             "numpy.ndarray: current estimate (eq. 19 order); with the window refinement, the "
+                             "window's while it predicts the newest samples about as well as the recursion's.")
+      .def_property_readonly("covariance", &AnyEstimator::covariance,
+                             "numpy.ndarray: current P of the recursion (symmetric).")
       .def_property_readonly("model", &AnyEstimator::model, "The current estimate as a model.")
       .def_property_readonly("samples", &AnyEstimator::samples, "int: samples since the last pass started.")
       .def_property_readonly("diverged", &AnyEstimator::diverged, "bool: an update was refused for numerical reasons.")

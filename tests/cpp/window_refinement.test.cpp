@@ -61,14 +61,14 @@ void check_under_noise(const Model& truth) {
   INFO(Model::kName << ": median NRMSE with the window " << median(window) << ", recursion alone " << median(recursion)
                     << ", identify() " << median(offline) << "; swaps " << health.window.swaps << ", iterations "
                     << health.window.iterations);
-  // Measured ratios to identify(): 1.05 (nonlinear feedback, Prandtl-Ishlinskii) to 1.54 (H-W) at
-  // both run-time and fixed orders; the Bouc-Wen feedback model's 1.12 (its recursion alone: 2.2).
-  // The Wiener-Hammerstein model's window ends worse than its recursion alone (5.6 and 3.5 times
+  // Measured ratios to identify(), with the window's estimate reported: 0.97 (P-H-W) to 1.17 (H-W),
+  // against 1.55 to 2.24 for the recursion alone; the window's at most 0.72 of the recursion's. The
+  // Wiener-Hammerstein model's window ends worse than its recursion alone (6.4 and 3.5 times
   // identify()); that is not understood yet. The bounds hold what is measured.
   const std::string name = Model::kName;
   const bool window_worse = name == "WienerHammerstein";
-  CHECK(median(window) <= (window_worse ? 8.0 : 2.0) * median(offline));
-  if (!window_worse) CHECK(median(window) <= 1.15 * median(recursion));
+  CHECK(median(window) <= (window_worse ? 8.0 : 1.3) * median(offline));
+  if (!window_worse) CHECK(median(window) <= 0.8 * median(recursion));
   CHECK(health.window.swaps > 0);
   CHECK(health.window.iterations > 0);
   CHECK(health.window.overruns == 0);
@@ -139,6 +139,27 @@ TEST_CASE("window refinement: deterministic, counted, cleared by reset(), unused
     CHECK(windowed.theta() == recursion.theta());
     CHECK(windowed.health().window.iterations == 0);
   }
+}
+
+TEST_CASE("window refinement: theta(), model() and the recording report the same estimate", "[window]") {
+  // With the window refinement theta() is the window's estimate or the recursion's (whichever
+  // predicted the newest samples about as well); model() and the recording must follow it.
+  const auto truth = known_phw();
+  const Eigen::VectorXd u = bonl::signals::random_levels(3000, 5, 1.0, 41);
+  const Eigen::VectorXd clean = truth.simulate(u);
+  const Eigen::VectorXd y = clean + bonl::signals::white_noise(u.size(), 0.02 * standard_deviation(clean), 42);
+  bonl::Estimator<bonl::PaperPseudoHammersteinWiener> estimator(truth, with_window());
+  estimator.start_recording(u.size());
+  Eigen::MatrixXd reported(truth.num_params(), u.size());
+  bool models_agree = true;
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    estimator.update(u[k], y[k]);
+    reported.col(k) = estimator.theta();
+    models_agree = models_agree && estimator.model().theta() == estimator.theta();
+  }
+  CHECK(models_agree);
+  CHECK(estimator.trajectory().theta == reported);
+  CHECK(estimator.health().window.swaps > 0);
 }
 
 TEST_CASE("window refinement: under a constant input it swaps nothing in, and the estimate stays put", "[window]") {

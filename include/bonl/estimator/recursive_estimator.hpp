@@ -317,17 +317,21 @@ class Estimator {
     for (Eigen::Index k = 0; k < u.size(); ++k) on_sample(k, update(Scalar(u[k]), Scalar(y[k])));
   }
 
-  /// The current estimate theta, in the model's parameter order
+  /// The current estimate theta, in the model's parameter order: the recursion's, or with the window
+  /// refinement, the window's estimate while it predicts the newest samples about as well
+  /// (estimator/window_refinement.hpp).
   /// \return num_params() values, valid until the next update or reset
-  const Params& theta() const noexcept { return m_rls.theta(); }
-  /// The current covariance P (exactly symmetric)
+  const Params& theta() const noexcept {
+    return m_window && m_window->has_estimate() ? m_window->estimate() : m_rls.theta();
+  }
+  /// The current covariance P of the recursion (exactly symmetric), also where theta() is the window's
   /// \return a copy of P, num_params() x num_params()
   Covariance covariance() const { return m_rls.covariance(); }
   /// The current estimate as a model, projected onto the model's valid set (the paper method's
   /// P-H-W estimate can have c < 0, which simulates as c = 0).
   /// \return a copy of the structure with the projected estimate
   Model model() const {
-    Params theta = m_rls.theta();
+    Params theta = this->theta();
     m_model.constrain(theta);
     Model model = m_model;
     model.set_theta(theta);
@@ -514,7 +518,7 @@ class Estimator {
     }
     if (m_record_theta.cols() > 0) {
       const auto slot = static_cast<std::size_t>(m_record_next);
-      m_record_theta.col(m_record_next) = m_rls.theta();
+      m_record_theta.col(m_record_next) = theta();
       m_record_sample[slot] = m_total_samples;
       m_record_internal[slot] = Model::kHasInternalVariables ? x : std::numeric_limits<Scalar>::quiet_NaN();
       m_record_status[slot] = status;

@@ -26,6 +26,10 @@
 // forgetting keeps (its memory over the window's length, at most 1), so that the recursion tracks
 // on as fast as before. Not where the window's data leave a parameter undetermined (a constant or
 // zero input: determines_every_parameter) or that covariance is not numerically positive definite.
+// The estimator reports the window's estimate (has_estimate, estimate) while it predicts the newest
+// samples better than the recursion's, or not clearly worse, and the window's data determine every
+// parameter; brought up to date by one Levenberg-Marquardt step over the window and the samples
+// since, so that it lags the data by no pass.
 // Where the recursion predicts them clearly better (by more than kSignificance x n noise variances)
 // on two judgements in a row, its estimate is scored on the window: if it simulates the window
 // better it becomes the window's estimate, else the plant changed and the window restarts with the
@@ -35,10 +39,10 @@
 // Every phase advances by at most `work_per_sample` model steps per update; a solve is an update's
 // slice of its own.
 //
-// Off by default: on the known systems it lowers the median online error under noise and tracks a
-// change faster, but it ends worse than the recursion alone on some of them (AR(1) noise, some
-// noise-free on the multi-sine), and it costs several times the recursion's update;
-// docs/explanation/algorithm.md has the table.
+// Off by default: on the known systems it brings the online error under noise and the tracking of a
+// change closer to identify()'s than the recursion alone, but it costs several times the recursion's
+// update, and it is still short of the online targets on some of them (under AR(1) noise, and
+// noise-free on the multi-sine); docs/explanation/algorithm.md has the table.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -57,8 +61,9 @@ namespace bonl {
 /// The output-error estimator's window refinement (estimator/window_refinement.hpp), chosen at
 /// construction; EstimatorOptions::window.
 struct WindowRefinementOptions {
-  /// Off by default: on the known systems it lowers the median online error under white noise but
-  /// raises it on some (docs/explanation/algorithm.md). Used by the output-error method only.
+  /// Off by default: it costs several times the recursion's update, and it is still short of the
+  /// online targets on some known systems (docs/explanation/algorithm.md). Used by the output-error
+  /// method only.
   bool enabled = false;
   /// The most samples the refinement fits at once (>= 100): its memory. Under a forgetting factor
   /// the caller chose (a Steps schedule) it is 2 / (1 - lambda) where that is shorter. The ring buffer
@@ -129,6 +134,8 @@ class WindowRefinement {
     m_trial_theta = m_theta;
     m_half_theta = m_theta;
     m_half_trial_theta = m_theta;
+    m_estimate = m_theta;
+    m_recent_gradient = m_theta;
     m_delta = m_theta;
     m_shift = m_theta;
     m_gradient = m_theta;
@@ -136,6 +143,7 @@ class WindowRefinement {
     m_scale = m_theta;
     m_normal = Matrix::Zero(n, n);
     m_trial_normal = m_normal;
+    m_recent_normal = m_normal;
     m_system = m_normal;
     m_covariance = m_normal;
     m_ldlt.compute(Matrix::Identity(n, n));  // sizes its storage once
@@ -157,6 +165,7 @@ class WindowRefinement {
     m_have_half = false;
     m_reseed_pass = false;
     m_clearly_worse = 0;
+    m_has_estimate = false;
     m_damping = kInitialDamping;
     m_phase = Phase::Collect;
   }
@@ -228,6 +237,14 @@ class WindowRefinement {
   /// What it did since the last reset
   /// \return the counts
   const WindowRefinementCounts& counts() const noexcept { return m_counts; }
+  /// Whether estimate() is the estimate to report: at the last judgement the window's estimate
+  /// predicted the newest samples better than the recursion's, or not clearly worse, and the
+  /// window's data determine every parameter. False after a restart, until such a judgement.
+  /// \return true while estimate() stands
+  bool has_estimate() const noexcept { return m_has_estimate; }
+  /// The window's estimate as of its last judgement (valid while has_estimate()).
+  /// \return num_params values
+  const Params& estimate() const noexcept { return m_estimate; }
 
  private:
   enum class Phase { Collect, Pass, CatchUp, Solve };
@@ -318,21 +335,23 @@ class WindowRefinement {
       const Scalar error = m_y[index] - step.output;
       m_rows.row(m_filled) = step.sensitivity.transpose();
       m_errors[m_filled] = error;
-      if (++m_filled == kBlock) flush_rows();
+      if (++m_filled == kBlock) flush_rows(m_trial_normal, m_trial_gradient);
       m_trial.accept();
       m_sse_trial += squared(error);
       if (m_position < m_length) m_sse_common += squared(error);
     }
-    if (m_position == m_pass_length) flush_rows();
+    if (m_position == m_pass_length) flush_rows(m_trial_normal, m_trial_gradient);
     return std::max<Eigen::Index>(samples, 1);
   }
 
   /// J'J and J'e gathered a block of rows at a time: a matrix product instead of a rank-one update
   /// per sample (about three times faster at the paper's 14 parameters).
-  void flush_rows() noexcept {
+  /// \param normal the J'J (lower triangle) the rows are added to
+  /// \param gradient the J'e they are added to
+  void flush_rows(Matrix& normal, Params& gradient) noexcept {
     const auto rows = m_rows.topRows(m_filled);
-    m_trial_normal.template selfadjointView<Eigen::Lower>().rankUpdate(rows.transpose());
-    m_trial_gradient.noalias() += rows.transpose() * m_errors.head(m_filled);
+    normal.template selfadjointView<Eigen::Lower>().rankUpdate(rows.transpose());
+    gradient.noalias() += rows.transpose() * m_errors.head(m_filled);
     m_filled = 0;
   }
 
@@ -377,6 +396,8 @@ class WindowRefinement {
         m_have_half = true;
       }
       m_catch_up = m_trial;
+      m_recent_normal.setZero();
+      m_recent_gradient.setZero();
       m_sse_recent = 0.0;
       m_sse_recent_recursion = 0.0;
       m_scored = 0;
@@ -397,13 +418,18 @@ class WindowRefinement {
     const Eigen::Index scored_from = m_length + (m_count - m_start - m_length) / 2;
     for (Eigen::Index i = 0; i < samples; ++i, ++m_position) {
       const auto index = slot(m_position);
-      const double error = squared(m_y[index] - m_catch_up.step(m_theta, m_u[index]).output);
+      const auto step = m_catch_up.step(m_theta, m_u[index]);
+      const Scalar error = m_y[index] - step.output;
+      m_rows.row(m_filled) = step.sensitivity.transpose();
+      m_errors[m_filled] = error;
+      if (++m_filled == kBlock) flush_rows(m_recent_normal, m_recent_gradient);
       m_catch_up.accept();
       if (m_position < scored_from) continue;
-      m_sse_recent += error;
+      m_sse_recent += squared(error);
       m_sse_recent_recursion += squared(m_e[index]);
       ++m_scored;
     }
+    if (m_position == m_count - m_start) flush_rows(m_recent_normal, m_recent_gradient);
     return std::max<Eigen::Index>(samples, 1);
   }
 
@@ -418,8 +444,10 @@ class WindowRefinement {
     }
     if (recent < kMinimumRecent || m_scored == 0) return false;
     const double variance = m_sse_recent_recursion / static_cast<double>(m_scored);
+    const bool determined = determines_every_parameter();
     if (m_sse_recent < m_sse_recent_recursion) {
-      if (!determines_every_parameter() || !swap_covariance()) {
+      report(determined);
+      if (!determined || !swap_covariance()) {
         ++m_counts.undetermined;
         return false;
       }
@@ -428,6 +456,7 @@ class WindowRefinement {
       return true;
     }
     const bool clearly_worse = m_sse_recent_recursion + kSignificance * num_params() * variance < m_sse_recent;
+    report(determined && !clearly_worse);
     m_clearly_worse = clearly_worse ? m_clearly_worse + 1 : 0;
     if (!m_follow_memory && m_clearly_worse >= kConfirmations) {
       m_clearly_worse = 0;
@@ -438,6 +467,30 @@ class WindowRefinement {
     }
     ++m_counts.refusals;
     return false;
+  }
+
+  /// The window's estimate becomes the one to report, or the recursion's does. Why the window's
+  /// where it predicts the newest samples about as well: the recursion's adaptive memory keeps
+  /// about half the samples it has seen, and each of its steps after a swap adds that memory's
+  /// variance, while the window's estimate is the fit to all of them up to its pass (the table in
+  /// docs/explanation/algorithm.md has both). The window's estimate is reported brought up to date:
+  /// one Levenberg-Marquardt step from it over the window and the samples since, whose Jacobian the
+  /// catch-up run gathered, so that it lags the data by no pass (where that step leaves the valid,
+  /// stable or finite estimates, the window's own).
+  void report(bool window) noexcept {
+    m_has_estimate = window;
+    if (!window) return;
+    m_system = m_recent_normal;
+    m_system.template triangularView<Eigen::StrictlyUpper>() = m_system.transpose();
+    m_system += m_normal;
+    m_shift = m_gradient + m_recent_gradient;  // J'e over the window and the samples since
+    detail::levenberg_scale(m_system, m_scale);
+    m_system.diagonal() += Scalar(m_damping) * m_scale;
+    m_ldlt.compute(m_system);
+    m_delta = m_ldlt.solve(m_shift);  // m_delta and m_scale are set afresh by the next solve()
+    m_estimate = m_theta + m_delta;
+    m_model.constrain(m_estimate);
+    if (!m_estimate.allFinite() || !m_catch_up.stable(m_estimate, m_radius)) m_estimate = m_theta;
   }
 
   /// Whether the window's J'J has full numerical rank on the parameters its data reach (those with a
@@ -533,6 +586,8 @@ class WindowRefinement {
   Params m_start_theta, m_trial_theta, m_half_theta, m_half_trial_theta;
   Params m_delta, m_shift, m_gradient, m_trial_gradient, m_scale;
   Matrix m_normal, m_trial_normal;  // J'J at the estimate and at the trial
+  Matrix m_recent_normal;           // J'J over the samples since the window's end, at the estimate
+  Params m_recent_gradient;         // J'e there
   Eigen::Matrix<Scalar, Eigen::Dynamic, Model::kNumParams, Model::kNumParams == 1 ? Eigen::ColMajor : Eigen::RowMajor>
       m_rows;                                         // Jacobian rows not yet in J'J
   Eigen::Matrix<Scalar, Eigen::Dynamic, 1> m_errors;  // their errors
@@ -549,6 +604,8 @@ class WindowRefinement {
   Eigen::Index m_half_offset = 0;        // where m_half_run is, from m_start
   Eigen::Index m_half_offset_trial = 0;  // where this pass keeps m_half_trial (0: nowhere)
   bool m_reseed_pass = false;            // the pass scores the recursion's estimate on the window
+  Params m_estimate;                     // the window's estimate as of its last judgement ...
+  bool m_has_estimate = false;           // ... and whether it is the one to report
   int m_clearly_worse = 0;               // judgements in a row the recursion predicted clearly better
   int m_trials = 0;
   Eigen::Index m_scored = 0;  // the samples the swap test scores

@@ -2558,7 +2558,7 @@ class Estimator:
     @property
     def covariance(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         """
-        numpy.ndarray: current P (symmetric).
+        numpy.ndarray: current P of the recursion (symmetric).
         """
     @property
     def diverged(self) -> bool:
@@ -2598,7 +2598,7 @@ class Estimator:
     @property
     def theta(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        numpy.ndarray: current estimate (eq. 19 order).
+        numpy.ndarray: current estimate (eq. 19 order); with the window refinement, the window's while it predicts the newest samples about as well as the recursion's.
         """
 class UpdateResults:
     """

@@ -328,12 +328,22 @@ int main(int argc, char** argv) {
                        " rich phases without a single accepted update (the first ended at sample " +
                        std::to_string(first_stall_end) + "): the estimator stopped learning");
   }
-  const auto stats = [](std::vector<double> v) {
-    if (v.empty()) return std::string("none");
+  // The recovery times' spread: median, 90th percentile and largest, over `phases` phases.
+  struct Spread {
+    double median, p90, max;
+    std::size_t phases;
+  };
+  const auto spread = [](std::vector<double> v) -> std::optional<Spread> {
+    if (v.empty()) return std::nullopt;
     std::sort(v.begin(), v.end());
+    return Spread{v[v.size() / 2], v[v.size() * 9 / 10], v.back(), v.size()};
+  };
+  const auto stats = [&](const std::vector<double>& v) {
+    const auto s = spread(v);
+    if (!s) return std::string("none");
     char text[160];
-    std::snprintf(text, sizeof text, "median %.0f, 90%% %.0f, max %.0f samples (%zu phases)", v[v.size() / 2],
-                  v[v.size() * 9 / 10], v.back(), v.size());
+    std::snprintf(text, sizeof text, "median %.0f, 90%% %.0f, max %.0f samples (%zu phases)", s->median, s->p90, s->max,
+                  s->phases);
     return std::string(text);
   };
   const bonl::EstimatorHealth& health = estimator.health();
@@ -370,18 +380,34 @@ int main(int argc, char** argv) {
   std::printf("  result: %s\n", failures == 0 ? "pass" : "FAIL");
 
   if (!settings.json.empty()) {
+    // One run's figures, for tests/soak/report.py (scripts/soak.sh gathers them into
+    // docs/results/soak.json).
+    const auto numbers = [&](const std::vector<double>& v) {
+      const auto s = spread(v);
+      if (!s) return std::string("null");
+      return "{\"median\": " + std::to_string(s->median) + ", \"p90\": " + std::to_string(s->p90) +
+             ", \"max\": " + std::to_string(s->max) + ", \"phases\": " + std::to_string(s->phases) + "}";
+    };
     std::ofstream out(settings.json);
     out.precision(6);
-    out << "{\"samples\": " << settings.samples << ", \"method\": \"" << bonl::to_string(settings.method)
-        << "\", \"window\": " << (settings.window ? "true" : "false") << ", \"phase_length\": " << settings.phase_length
+    out << "{\"samples\": " << settings.samples << ", \"seed\": " << settings.seed << ", \"method\": \""
+        << bonl::to_string(settings.method) << "\", \"window\": " << (settings.window ? "true" : "false")
+        << ", \"phase_length\": " << settings.phase_length
         << ", \"trace_ceiling\": " << (ceiling ? std::to_string(options.resolved_trace_ceiling()) : std::string("null"))
-        << ", \"seconds\": " << seconds << ", \"outliers\": " << outliers << ", \"largest_abs_p\": " << largest_p
-        << ", \"largest_trace\": " << largest_trace << ", \"smallest_eigenvalue\": " << smallest_eigenvalue
-        << ", \"largest_abs_theta\": " << largest_theta << ", \"failures\": " << failures
-        << ", \"forgetting_limited\": " << health.forgetting_limited << ", \"numerical_failures\": " << health.failures
-        << ", \"recovery_after_constant\": \"" << stats(after_constant) << "\", \"recovery_after_zero\": \""
-        << stats(after_zero) << "\", \"stalled_rich_phases\": " << stalled_phases
-        << ", \"pass\": " << (failures == 0 ? "true" : "false") << "}\n";
+        << ", \"seconds\": " << seconds << ", \"outliers\": " << outliers << ", \"updated\": " << status_counts[0]
+        << ", \"largest_abs_p\": " << largest_p << ", \"largest_trace\": " << largest_trace
+        << ", \"smallest_eigenvalue\": " << smallest_eigenvalue << ", \"largest_abs_theta\": " << largest_theta
+        << ", \"failures\": " << failures << ", \"forgetting_limited\": " << health.forgetting_limited
+        << ", \"numerical_failures\": " << health.failures << ", \"rich_phases_after_poor\": " << recoveries.size()
+        << ", \"not_recovered\": " << not_recovered << ", \"recovery_after_constant\": " << numbers(after_constant)
+        << ", \"recovery_after_zero\": " << numbers(after_zero) << ", \"stalled_rich_phases\": " << stalled_phases;
+    if (settings.window) {
+      const bonl::WindowRefinementCounts& w = health.window;
+      out << ", \"window_counts\": {\"iterations\": " << w.iterations << ", \"refused_steps\": " << w.refused_steps
+          << ", \"swaps\": " << w.swaps << ", \"refusals\": " << w.refusals << ", \"undetermined\": " << w.undetermined
+          << ", \"reseeds\": " << w.reseeds << ", \"overruns\": " << w.overruns << "}";
+    }
+    out << ", \"pass\": " << (failures == 0 ? "true" : "false") << "}\n";
   }
   return failures == 0 ? 0 : 1;
 }

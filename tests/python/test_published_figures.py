@@ -29,6 +29,7 @@ QUOTES = [
     ("joint_angle_summary", ROOT / "docs" / "results" / "joint_angle_summary.md", [ROOT / "docs" / "explanation" / "plant.md"]),
     ("bench_summary", ROOT / "docs" / "results" / "bench_summary.md",
      [ROOT / "docs" / "lab" / "performance.md"]),
+    ("soak_summary", ROOT / "docs" / "results" / "soak_summary.md", [ROOT / "docs" / "lab" / "reliability.md"]),
 ]
 
 
@@ -206,6 +207,44 @@ def test_the_benchmark_summary_is_the_committed_full_run():
     assert report.summary(flat) == (ROOT / "docs" / "results" / "bench_summary.md").read_text()
     results_md = (ROOT / "bench" / "RESULTS.md").read_text()
     assert "(commit %s)" % flat["machine"]["git"] in results_md, "bench/RESULTS.md and RESULTS.json are of different runs"
+
+
+def test_the_soak_summary_is_the_committed_soak():
+    """docs/results/soak_summary.md is what tests/soak/report.py makes of the committed soak runs
+    (docs/results/soak.json, both written by scripts/soak.sh), and those are the full soak: 25 seeds
+    of 1e8 samples, each configuration, each run's verdict its own checks'. (The 1e8-sample runs take
+    an hour and more; ctest's soak/short and soak/short_window run the same checks on 2e6 samples.)"""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("soak_report", ROOT / "tests" / "soak" / "report.py")
+    report = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(report)
+    committed = json.loads((ROOT / "docs" / "results" / "soak.json").read_text())
+    assert report.summary(committed) == (ROOT / "docs" / "results" / "soak_summary.md").read_text()
+    assert committed["samples"] == 100_000_000 and committed["seeds"] == list(range(1, 26))
+    for name, _, _ in report.CONFIGURATIONS:
+        for run in committed["runs"][name]:
+            assert run["samples"] == committed["samples"] and run["window"] == name.endswith("_window")
+            assert run["pass"] == (run["failures"] == 0), (name, run["seed"])
+
+
+def test_the_soak_report_refuses_an_incomplete_set_of_runs(tmp_path):
+    """A run that wrote no figures (a crash) is missing from the gathered runs: the report says so
+    instead of summarising the others."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("soak_report", ROOT / "tests" / "soak" / "report.py")
+    report = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(report)
+    committed = json.loads((ROOT / "docs" / "results" / "soak.json").read_text())
+    for seed in (1, 2):
+        (tmp_path / ("seed_%d.json" % seed)).write_text(json.dumps(committed["runs"]["output_error"][seed - 1]))
+    (tmp_path / "seed_1_window.json").write_text(json.dumps(committed["runs"]["output_error_window"][0]))
+    with pytest.raises(ValueError, match="different numbers of seeds"):
+        report.gather(tmp_path)
+    (tmp_path / "seed_3_window.json").write_text(json.dumps(committed["runs"]["output_error_window"][2]))
+    with pytest.raises(ValueError, match="not seeds 1..N"):
+        report.gather(tmp_path)
 
 
 def test_the_joint_angle_models_give_their_committed_figures():

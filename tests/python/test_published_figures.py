@@ -33,6 +33,16 @@ QUOTES = [
 ]
 
 
+def module_from(path, name):
+    """The Python file at `path` (a script outside the package: a report, an example) as a module."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
 def quoted_block(text, marker):
     begin, end = "<!-- %s: begin" % marker, "<!-- %s: end" % marker
     assert text.count(begin) == 1 and text.count(end) == 1, "one %s block expected" % marker
@@ -198,11 +208,7 @@ def test_the_benchmark_summary_is_the_committed_full_run():
     """docs/results/bench_summary.md is what bench/report.py makes of the committed full run's figures
     (bench/RESULTS.json, written by the same bench/run as bench/RESULTS.md): a quoted speed cannot
     drift from the run it names. (The speeds themselves are measured by bench/run, never in a test.)"""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("bench_report", ROOT / "bench" / "report.py")
-    report = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(report)
+    report = module_from(ROOT / "bench" / "report.py", "bench_report")
     flat = json.loads((ROOT / "bench" / "RESULTS.json").read_text())
     assert report.summary(flat) == (ROOT / "docs" / "results" / "bench_summary.md").read_text()
     results_md = (ROOT / "bench" / "RESULTS.md").read_text()
@@ -214,11 +220,7 @@ def test_the_soak_summary_is_the_committed_soak():
     (docs/results/soak.json, both written by scripts/soak.sh), and those are the full soak: 25 seeds
     of 1e8 samples, each configuration, each run's verdict its own checks'. (The 1e8-sample runs take
     an hour and more; ctest's soak/short and soak/short_window run the same checks on 2e6 samples.)"""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("soak_report", ROOT / "tests" / "soak" / "report.py")
-    report = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(report)
+    report = module_from(ROOT / "tests" / "soak" / "report.py", "soak_report")
     committed = json.loads((ROOT / "docs" / "results" / "soak.json").read_text())
     assert report.summary(committed) == (ROOT / "docs" / "results" / "soak_summary.md").read_text()
     assert committed["samples"] == 100_000_000 and committed["seeds"] == list(range(1, 26))
@@ -231,11 +233,7 @@ def test_the_soak_summary_is_the_committed_soak():
 def test_the_soak_report_refuses_an_incomplete_set_of_runs(tmp_path):
     """A run that wrote no figures (a crash) is missing from the gathered runs: the report says so
     instead of summarising the others."""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("soak_report", ROOT / "tests" / "soak" / "report.py")
-    report = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(report)
+    report = module_from(ROOT / "tests" / "soak" / "report.py", "soak_report")
     committed = json.loads((ROOT / "docs" / "results" / "soak.json").read_text())
     for seed in (1, 2):
         (tmp_path / ("seed_%d.json" % seed)).write_text(json.dumps(committed["runs"]["output_error"][seed - 1]))
@@ -251,10 +249,7 @@ def test_the_joint_angle_models_give_their_committed_figures():
     """docs/results/joint_angle.json (examples/joint_angle/joint_angle.py): the paper's four models on
     the simulated joint's angle, without and with an integrator, recomputed to FIGURE_REL; the table
     docs/explanation/plant.md quotes is the one the results give."""
-    import importlib.util
-    spec = importlib.util.spec_from_file_location("joint_angle", ROOT / "examples" / "joint_angle" / "joint_angle.py")
-    joint_angle = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(joint_angle)
+    joint_angle = module_from(ROOT / "examples" / "joint_angle" / "joint_angle.py", "joint_angle")
     committed = json.loads((ROOT / "docs" / "results" / "joint_angle.json").read_text())
     results = joint_angle.run()
     assert [(r["model"], r["ni"]) for r in results["rows"]] == [(r["model"], r["ni"]) for r in committed["rows"]]

@@ -30,7 +30,7 @@ def gather(runs_dir):
             match = pattern.fullmatch(path.name)
             if match:
                 found[int(match.group(1))] = json.loads(path.read_text())
-        if sorted(found) != list(range(1, len(found) + 1)) or not found:
+        if not found or sorted(found) != list(range(1, len(found) + 1)):
             raise ValueError("%s: the runs of %s are not seeds 1..N: %s" % (runs_dir, name, sorted(found)))
         runs[name] = [found[seed] for seed in sorted(found)]
     counts = {len(v) for v in runs.values()}
@@ -43,13 +43,9 @@ def count(n):
     return "{:,}".format(int(n))
 
 
-def seeds_where(runs, predicate):
-    return [run["seed"] for run in runs if predicate(run)]
-
-
 def column(runs):
     """One configuration's cells, by row."""
-    failed = seeds_where(runs, lambda run: not run["pass"])
+    failed = [run["seed"] for run in runs if not run["pass"]]
     cells = {}
     cells["result"] = "%d of %d pass%s" % (
         len(runs) - len(failed), len(runs), "; fail: seeds " + ", ".join(map(str, failed)) if failed else "")
@@ -71,13 +67,9 @@ def column(runs):
     cells["largest \\|theta\\| entry: median of the runs; runs above 1,000; largest"] = "%.3g; %d; %.3g (seed %d)" % (
         statistics.median(thetas), sum(t > 1000 for t in thetas), max(thetas),
         runs[thetas.index(max(thetas))]["seed"])
-    windows = [run["window_counts"] for run in runs if "window_counts" in run]
-    if windows:
-        swaps = [w["swaps"] for w in windows]
-        cells["window swaps per run: median (fewest to most)"] = "%s (%s to %s)" % (
-            count(statistics.median(swaps)), count(min(swaps)), count(max(swaps)))
-    else:
-        cells["window swaps per run: median (fewest to most)"] = "-"
+    swaps = [run["window_counts"]["swaps"] for run in runs if "window_counts" in run]
+    cells["window swaps per run: median (fewest to most)"] = "%s (%s to %s)" % (
+        count(statistics.median(swaps)), count(min(swaps)), count(max(swaps))) if swaps else "-"
     seconds = [run["seconds"] for run in runs]
     cells["wall time per run (two runs share the two cores)"] = "%.3g to %.3g s" % (min(seconds), max(seconds))
     return cells

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "../detail/damping.hpp"
+#include "../detail/normal_equations.hpp"
 #include "../detail/validate.hpp"
 #include "../models/poles.hpp"
 #include "record_view.hpp"
@@ -55,8 +56,8 @@ double simulation_cost(const Model& model, const Records<typename Model::Scalar>
 
 /// The Gauss-Newton normal equations of the simulation error e(k) = y(k) - y_sim(k) at the model's
 /// theta: normal = J'J and gradient = J'e with J(k, :) = d y_sim(k) / d theta, from one free run of
-/// each record from rest through the model's OutputErrorTerms with theta held fixed. The rows are
-/// gathered in blocks so that J'J is a matrix product, not one rank-one update per sample.
+/// each record from rest through the model's OutputErrorTerms with theta held fixed, gathered in
+/// blocks (detail::add_rows).
 /// Returns false if the run leaves the finite numbers.
 template <class Model, typename MatrixX>
 bool simulation_normal_equations(const Model& model, const Records<typename Model::Scalar>& records, MatrixX& normal,
@@ -72,8 +73,7 @@ bool simulation_normal_equations(const Model& model, const Records<typename Mode
   gradient.setZero(n);
   Eigen::Index filled = 0;
   const auto flush = [&] {
-    normal.template selfadjointView<Eigen::Lower>().rankUpdate(rows.topRows(filled).transpose());
-    gradient.noalias() += rows.topRows(filled).transpose() * errors.head(filled);
+    detail::add_rows(normal, gradient, rows.topRows(filled), errors.head(filled));
     filled = 0;
   };
   typename Model::OutputErrorTerms terms(model);

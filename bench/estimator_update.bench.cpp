@@ -94,8 +94,8 @@ void register_mismatches(const std::string& suffix) {
 }
 
 /// The worst single update over 1e6 updates of the output-error estimator at the paper's P-H-W
-/// orders, with the window refinement or without it. Each update is timed on its own, and the 1e6
-/// updates are run kRuns times from the same start: an update's own work is the same in every run
+/// orders, with its defaults (the window refinement from two starts) or its recursion alone. Each update is timed on
+/// its own, and the 1e6 updates are run kRuns times from the same start: an update's own work is the same in every run
 /// (the estimator is deterministic), while the machine's interrupts and preemptions fall on other
 /// updates each time, so the least of an update's kRuns times is its own cost. "worst_ns" is the
 /// largest such cost, "raw_worst_ns" the largest single timing of all (the machine's pauses in it:
@@ -134,8 +134,9 @@ void update_worst(benchmark::State& state, bool window) {
   }
 }
 
-/// The output-error update with the window refinement at the paper's P-H-W orders: the mean (as
-/// the other updates), and the worst single update (update_worst), beside the estimator's without it.
+/// The output-error update with its defaults (the window refinement from two starts) at the paper's
+/// P-H-W orders: the mean (as the other updates, which time the recursions alone), and the worst
+/// single update (update_worst), beside the recursion's alone.
 void register_window() {
   using Model = bonl::PaperPseudoHammersteinWiener;
   benchmark::RegisterBenchmark("update/PseudoHammersteinWiener/fixed/double/window", [](benchmark::State& s) {

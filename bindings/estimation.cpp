@@ -87,6 +87,7 @@ bonl::EstimatorOptions estimator_options(const OptionArguments& arguments) {
   options.recover_after = arguments.recover_after;
   options.stability_radius = arguments.stability_radius;
   options.window = arguments.window;
+  options.normalise = arguments.normalise;
   options.validate();
   return options;
 }
@@ -299,6 +300,19 @@ class AnyEstimator {
   double memory() const {
     return std::visit([](const auto& estimator) { return estimator.memory(); }, m_estimator);
   }
+  bool measuring_scale() const {
+    return std::visit([](const auto& estimator) { return estimator.measuring_scale(); }, m_estimator);
+  }
+  Eigen::Index pending_samples() const {
+    return std::visit([](const auto& estimator) { return estimator.pending_samples(); }, m_estimator);
+  }
+  std::pair<double, double> data_scale() const {
+    const auto scale = std::visit([](const auto& estimator) { return estimator.data_scale(); }, m_estimator);
+    return {scale.u, scale.y};
+  }
+  void catch_up() {
+    std::visit([](auto& estimator) { estimator.catch_up(); }, m_estimator);
+  }
   void start_recording(Eigen::Index capacity) {
     std::visit([&](auto& estimator) { estimator.start_recording(capacity); }, m_estimator);
   }
@@ -328,17 +342,17 @@ template <class Model>
 void def_estimator_init(py::class_<AnyEstimator>& cls) {
   cls.def(py::init([](const Model& model, const std::string& method, const Forgetting& forgetting,
                       std::optional<double> p0, std::optional<double> trace_ceiling, Eigen::Index recover_after,
-                      double stability_radius, std::optional<bonl::WindowRefinementOptions> window,
+                      double stability_radius, std::optional<bonl::WindowRefinementOptions> window, bool normalise,
                       std::optional<double> c0, std::optional<Eigen::Index> backlash_hold) {
             const bonl::EstimatorOptions options =
                 estimator_options({method, forgetting, p0, trace_ceiling, recover_after, stability_radius,
-                                   window.value_or(bonl::WindowRefinementOptions{})});
+                                   window.value_or(bonl::WindowRefinementOptions{}), normalise});
             return AnyEstimator(model, options, model_settings<Model>({c0, backlash_hold}));
           }),
           py::arg("model"), py::kw_only(), py::arg("method") = "output_error", py::arg("forgetting") = py::none(),
           py::arg("p0") = py::none(), py::arg("trace_ceiling") = py::none(), py::arg("recover_after") = 0,
-          py::arg("stability_radius") = 0.999, py::arg("window") = py::none(), py::arg("c0") = py::none(),
-          py::arg("backlash_hold") = py::none());
+          py::arg("stability_radius") = 0.999, py::arg("window") = py::none(), py::arg("normalise") = true,
+          py::arg("c0") = py::none(), py::arg("backlash_hold") = py::none());
 }
 
 }  // namespace
@@ -396,24 +410,30 @@ void bind_estimation(py::module_& m) {
       m, "WindowRefinementOptions",
       "The output-error method's window refinement (Estimator(..., window=...)): Levenberg-Marquardt on the\n"
       "free-run error of the newest samples, spread over the updates, its estimate swapped in where it\n"
-      "predicts the newest samples better. Off by default (docs/explanation/algorithm.md).")
-      .def(py::init([](bool enabled, Eigen::Index length, Eigen::Index work_per_sample) {
+      "predicts the newest samples better. On by default (docs/explanation/algorithm.md).")
+      .def(py::init([](bool enabled, Eigen::Index length, Eigen::Index work_per_sample, bool equation_error_start) {
              bonl::WindowRefinementOptions options;
              options.enabled = enabled;
              options.length = length;
              options.work_per_sample = work_per_sample;
+             options.equation_error_start = equation_error_start;
              return options;
            }),
            py::kw_only(), py::arg("enabled") = true, py::arg("length") = 4000, py::arg("work_per_sample") = 8,
-           "Window refinement options; ``enabled`` is True here (the estimator's default is off).\n\n"
+           py::arg("equation_error_start") = true,
+           "Window refinement options, the estimator's defaults unless given.\n\n"
            "Parameters\n----------\nenabled : bool, default True\n    Whether the refinement runs.\n"
            "length : int, default 4000\n    The most samples it fits at once (>= 100).\n"
-           "work_per_sample : int, default 8\n    Model steps of the refinement per update (>= 2).\n\n"
+           "work_per_sample : int, default 8\n    Model steps of the refinement per update (>= 2), for each window.\n"
+           "equation_error_start : bool, default True\n    A second window beside, started from an equation-error\n"
+           "    recursion's estimate (identify()'s second start); doubles the refinement's work.\n\n"
            "Returns\n-------\nWindowRefinementOptions\n    The options; the Estimator checks them.")
       .def_readwrite("enabled", &bonl::WindowRefinementOptions::enabled, "bool: whether the refinement runs")
       .def_readwrite("length", &bonl::WindowRefinementOptions::length, "int: the most samples it fits at once (>= 100)")
       .def_readwrite("work_per_sample", &bonl::WindowRefinementOptions::work_per_sample,
-                     "int: model steps of the refinement per update (>= 2)");
+                     "int: model steps of the refinement per update (>= 2), for each window")
+      .def_readwrite("equation_error_start", &bonl::WindowRefinementOptions::equation_error_start,
+                     "bool: a second window beside, started from an equation-error recursion's estimate");
 
   py::class_<bonl::WindowRefinementCounts>(m, "WindowRefinementCounts",
                                            "What the window refinement did since the Estimator's reset().")
@@ -462,8 +482,8 @@ void bind_estimation(py::module_& m) {
       "Online recursive estimator for one model.\n\nParameters\n----------\nmodel : one of bonl.MODELS\n"
       "    Gives the structure; the estimate starts from zero (P-H-W: c = c0 for equation_error and\n"
       "    paper, c = 0 for output_error).\n" +
-      option_docs({"method", "forgetting", "p0", "trace_ceiling", "recover_after", "stability_radius", "window", "c0",
-                   "backlash_hold"});
+      option_docs({"method", "forgetting", "p0", "trace_ceiling", "recover_after", "stability_radius", "window",
+                   "normalise", "c0", "backlash_hold"});
   py::class_<AnyEstimator> estimator(m, "Estimator", estimator_doc.c_str());
   bonl::for_each_model(bonl::Models{},
                        [&estimator](auto tag) { def_estimator_init<typename decltype(tag)::type>(estimator); });
@@ -543,6 +563,18 @@ theta0 : array_like, shape (num_params,), optional
                              "step schedule).")
       .def_property_readonly("health", &AnyEstimator::health,
                              "EstimatorHealth: what the numerical safeguards did since reset().")
+      .def_property_readonly("measuring_scale", &AnyEstimator::measuring_scale,
+                             "bool: the data's scale is still being measured (normalise=True): updates return "
+                             "no_information and the estimate stays where it started.")
+      .def_property_readonly("pending_samples", &AnyEstimator::pending_samples,
+                             "int: samples kept while the scale was measured that the recursion has yet to take "
+                             "(two per update); theta lags the data by them.")
+      .def_property_readonly("data_scale", &AnyEstimator::data_scale,
+                             "tuple[float, float]: the scale of u - u0 and y - y0 the recursion works in (their RMS "
+                             "over the samples measured; (1.0, 1.0) where not normalised or still measuring).")
+      .def("catch_up", &AnyEstimator::catch_up,
+           "Take now what the recursion has yet to: a scale measurement under way ends with what it has\n"
+           "measured, and every sample kept is processed (at a record's end; start_pass does it too).")
       .def("recover", &AnyEstimator::recover,
            "Leave the diverged state: P = p0 I, theta kept (a covariance reset); the counters in health stay.")
       .def("start_recording", &AnyEstimator::start_recording, py::arg("capacity"),

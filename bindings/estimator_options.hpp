@@ -28,6 +28,7 @@ struct OptionArguments {
   Eigen::Index recover_after = 0;
   double stability_radius = 0.999;
   bonl::WindowRefinementOptions window = {};
+  bool normalise = true;
 };
 
 /// The options, validated (std::invalid_argument, a ValueError, naming the bad one).

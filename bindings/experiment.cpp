@@ -385,7 +385,7 @@ void bind_experiment(py::module_& m) {
       "PrandtlIshlinskiiHammerstein, which the paper does not have) identified with the paper's orders\n"
       "(na = 3, nb = 2, nk = 8, r = r1 = 3; np = 3 plays, their thresholds spread over the identification\n"
       "input's half-range) by the output-error and the paper's methods and validated by free-run\n"
-      "simulation; also the online estimates alone (recursive estimator, one pass, no refinement). The\n"
+      "simulation; also the online estimates (the estimator with its defaults, one pass, no offline refinement). The\n"
       "GIL is released during the computation.\n\n"
       "Parameters\n----------\nparameters : bonl.plant.Parameters, optional\n"
       "    The plant; None: ``bonl.plant.Parameters.excavator_20t()``.\n"

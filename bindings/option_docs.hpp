@@ -42,17 +42,21 @@ inline constexpr OptionDoc kOptionDocs[] = {
      "output_error: the linear block's poles are kept inside this radius (updates shortened)."},
     {"window", "WindowRefinementOptions, optional",
      "output_error: the window refinement, Levenberg-Marquardt on the newest samples spread over the\n"
-     "updates (``bonl.WindowRefinementOptions()``); None: off."},
+     "updates, from the output-error recursion's estimate and from an equation-error recursion's beside.\n"
+     "None: the default (on); ``bonl.WindowRefinementOptions(enabled=False)``: the recursion alone."},
     {"refine_iterations", "int, default 100",
      "Levenberg-Marquardt iterations of the refinement that follows the recursive stage for\n"
      "'output_error' and 'equation_error' (0: none, the recursive estimate alone). It minimises the\n"
      "free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block\n"
      "stable."},
     {"normalise", "bool, default True",
-     "Where identify refines, work on u and y divided by the powers of two nearest their RMS and return\n"
-     "the model in the data's units, so that the settings mean the same whatever the units. The recursive\n"
-     "estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online\n"
-     "estimator's, in the data's units."},
+     "Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same\n"
+     "whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:\n"
+     "the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,\n"
+     "then the recursion runs over them and on in coordinates where the parameters are of order one.\n"
+     "identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model\n"
+     "returned in the data's units; the recursive estimate returned as it is ('paper',\n"
+     "refine_iterations=0, ARX least squares) is the online estimator's."},
     {"operating_point", "{None, 'mean', 'initial'}, default None",
      "The identified model's operating point (u0, y0): None keeps the structure's\n"
      "(Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the\n"
@@ -66,7 +70,8 @@ inline constexpr OptionDoc kOptionDocs[] = {
     // The model's own settings (its EstimatorSettings, bindings/model_settings.hpp): PseudoHammersteinWiener's.
     {"c0", "float, optional",
      "PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of\n"
-     "equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01."},
+     "equation_error and paper, in the output's units, or where the estimator normalises a fraction of\n"
+     "the output's scale (output_error starts at 0). Default: 0.01."},
     {"backlash_hold", "int, optional",
      "PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many\n"
      "samples after each start from rest. Default: 200."},

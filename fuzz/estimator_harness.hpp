@@ -210,10 +210,12 @@ bool options_valid(const FuzzedOptions& decoded) {
   const double p0_value = o.resolved_p0();
   const bool p0 = std::isfinite(p0_value) && p0_value > 0.0;
   const bool c0 = !uses_c0<Model>() || (std::isfinite(c0_value) && c0_value >= 0.0);
-  // In Scalar: P(0) = p0 I must be finite and positive, and (P-H-W, where the method starts from it:
-  // output_error starts at c = 0) c(0) = c0 finite.
+  // In Scalar: P(0) = p0 I must be finite and positive, and (P-H-W, where a recursion starts from it:
+  // output_error's own starts at c = 0, but its window's equation-error start, on by default, at c0)
+  // c(0) = c0 finite.
   const bool p0_scalar = p0 && std::isfinite(to_scalar<Scalar>(p0_value)) && to_scalar<Scalar>(p0_value) > Scalar(0);
-  const bool starts_from_c0 = uses_c0<Model>() && o.method != bonl::Method::OutputError;
+  const bool equation_error_start = o.window.enabled && o.window.equation_error_start;
+  const bool starts_from_c0 = uses_c0<Model>() && (o.method != bonl::Method::OutputError || equation_error_start);
   const bool c0_scalar = !starts_from_c0 || (c0 && std::isfinite(to_scalar<Scalar>(c0_value)));
   const bool safeguards = o.resolved_trace_ceiling() >= 1.0 && o.recover_after >= 0;  // the ceiling may be +inf
   return schedule && p0 && c0 && o.internal_refresh >= 1 && p0_scalar && c0_scalar && safeguards;
@@ -249,6 +251,7 @@ class Harness {
       } else if (op < 243) {
         reset_to(in);
       } else if (op < 246) {
+        m_est.catch_up();  // start_pass() takes the samples kept while the scale was measured first
         const Params theta = m_est.theta();
         const Covariance p = m_est.covariance();
         const bool diverged = m_est.diverged();
@@ -288,19 +291,25 @@ class Harness {
     return to_scalar<Scalar>(any_double(in));
   }
 
+  /// P = p0 I in the recursion's coordinates (EstimatorOptions::normalise: covariance() is in the data's).
   bool is_initial_covariance() const {
     const Covariance expected = Covariance::Identity(m_n, m_n) * to_scalar<Scalar>(m_est.options().resolved_p0());
-    return same(expected, m_est.covariance());
+    return same(expected, m_est.normalised_covariance());
   }
 
   void update(FuzzedDataProvider& in, std::uint8_t op) {
     const Scalar u = sample(in, op);
     const Scalar y = sample(in, op);
     const Params theta = m_est.theta();
-    const Covariance p = m_est.covariance();
+    const Covariance p = m_est.normalised_covariance();
     const Eigen::Index samples = m_est.samples();
     const bonl::EstimatorHealth health = m_est.health();
+    const bool measuring = m_est.measuring_scale();
     const bonl::UpdateStatus status = m_est.update(u, y);
+    // The samples the update took: one; none while the data's scale is measured; two while the
+    // recursion catches up on the measured ones, when the status is the second's and the first may
+    // have changed theta, P and the counts.
+    const Eigen::Index taken = m_est.samples() - samples;
     const auto status_index = static_cast<std::size_t>(status);
     if (status_index < 4) ++outcomes.status[status_index];
     if (verbose()) {
@@ -309,15 +318,24 @@ class Harness {
     }
     const bonl::EstimatorHealth& now = m_est.health();
     const bool finite = std::isfinite(u) && std::isfinite(y);
+    FUZZ_CHECK(taken >= 0 && taken <= 2);
+    // The update that ends the measurement sets the recursion's coordinates (and reads the method's
+    // own start in them: P-H-W's c(0) = c0 sy) before it takes its first sample.
+    if (taken == 2 || (measuring && !m_est.measuring_scale())) {
+      FUZZ_CHECK(finite && status != bonl::UpdateStatus::RejectedNonFinite);
+      FUZZ_CHECK(m_est.diverged() == m_est.health().diverged);
+      record(status, taken);
+      return;
+    }
     const bool same_theta = same(theta, m_est.theta());
     // P is kept, or (recover_after) reset to p0 I by an automatic recovery in this update.
     const bool recovered = now.recoveries == health.recoveries + 1;
     FUZZ_CHECK(now.recoveries == health.recoveries || recovered);
-    const bool kept_p = recovered ? is_initial_covariance() : same(p, m_est.covariance());
+    const bool kept_p = recovered ? is_initial_covariance() : same(p, m_est.normalised_covariance());
     switch (status) {
       case bonl::UpdateStatus::RejectedNonFinite:
         FUZZ_CHECK(!finite);
-        FUZZ_CHECK(same_theta && same(p, m_est.covariance()) && m_est.samples() == samples);
+        FUZZ_CHECK(same_theta && same(p, m_est.normalised_covariance()) && taken == 0);
         FUZZ_CHECK(now.diverged == health.diverged && now.failures == health.failures && !recovered);
         return;  // not recorded either
       case bonl::UpdateStatus::NumericalFailure:
@@ -333,10 +351,16 @@ class Harness {
         break;
       default: FUZZ_CHECK(false);
     }
-    FUZZ_CHECK(m_est.samples() == samples + 1);
+    // One sample taken, or none where the update was kept while the scale is measured (NoInformation).
+    FUZZ_CHECK(taken == 1 || (taken == 0 && status == bonl::UpdateStatus::NoInformation));
     FUZZ_CHECK(m_est.diverged() == now.diverged);
-    if (m_est.recording()) {  // the newest entry is this update
-      ++m_recorded;
+    record(status, taken);
+  }
+
+  /// The recording after an update that took `taken` samples: its newest entry is the last of them.
+  void record(bonl::UpdateStatus status, Eigen::Index taken) {
+    if (m_est.recording() && taken > 0) {
+      m_recorded += taken;
       const auto trajectory = m_est.trajectory();
       const auto count = static_cast<std::size_t>(std::min(m_recorded, m_capacity));
       FUZZ_CHECK(trajectory.status.size() == count && trajectory.sample.size() == count);
@@ -392,7 +416,7 @@ class Harness {
 
   void check_invariants() {
     const Params& theta = m_est.theta();
-    const Covariance p = m_est.covariance();
+    const Covariance p = m_est.normalised_covariance();  // the recursion's own P, which the safeguards keep
     FUZZ_CHECK(theta.size() == m_n && p.rows() == m_n && p.cols() == m_n);
     if (!theta.allFinite()) {
       std::fprintf(stderr, "theta is not finite\n");

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The soak figures of docs/lab/reliability.md: the full 1e8-sample soak (tests/soak/soak.cpp) on
-# seeds 1 to 25, the output-error method (the default) without and with its window refinement, two
-# runs at a time (about 80 minutes on two cores). Builds bonl_soak in build/soak (Release, portable),
+# seeds 1 to 25, the output-error method with its defaults (the window refinement on) and its
+# recursion alone, two runs at a time (about 80 minutes on two cores). Builds bonl_soak in build/soak (Release, portable),
 # writes each run's figures into build/soak/runs, gathers them (tests/soak/report.py) into
 # docs/results/soak.json and its table, docs/results/soak_summary.md, and splices the table into
 # docs/lab/reliability.md (tests/python/test_published_figures.py checks the copy and the table).
@@ -38,18 +38,20 @@ cmake --build build/soak -j2 --target bonl_soak
 runs=build/soak/runs
 rm -rf "$runs"
 mkdir -p "$runs"
-step "run bonl_soak: $seeds seeds x {output_error, output_error --window}, $samples samples each, two at a time"
+step "run bonl_soak: $seeds seeds x {output_error, output_error --no-window}, $samples samples each, two at a time"
 # Each run's exit status is its verdict (1: a check failed), which its JSON records; only a run
 # that wrote no JSON stops the script.
-run() {  # run SEED none|window
-  local name=seed_$1 flag=()
-  [[ $2 == window ]] && name+=_window flag=(--window)
+# seed_S.json is the recursion alone (--no-window), seed_S_window.json the defaults (the window on),
+# the names tests/soak/report.py reads.
+run() {  # run SEED defaults|no-window
+  local name=seed_$1 flag=(--no-window)
+  [[ $2 == defaults ]] && name+=_window flag=()
   build/soak/tests/bonl_soak --samples "$samples" --seed "$1" "${flag[@]}" --json "$runs/$name.json" \
     >"$runs/$name.log" || true
 }
 export -f run
 export samples runs
-for seed in $(seq 1 "$seeds"); do echo "$seed none $seed window"; done | xargs -n 2 -P 2 bash -c 'run "$@"' run
+for seed in $(seq 1 "$seeds"); do echo "$seed defaults $seed no-window"; done | xargs -n 2 -P 2 bash -c 'run "$@"' run
 
 step "gather the runs (tests/soak/report.py)"
 python3 tests/soak/report.py --runs "$runs" --json "$results/soak.json" --markdown "$results/soak_summary.md" \

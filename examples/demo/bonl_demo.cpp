@@ -303,7 +303,7 @@ void write_markdown(const std::string& path, const PaperExperimentResult& result
   };
   const std::vector<Row> rows = {
       {"bonl output_error, identify()", "with bonl's output_error identify()", header, false},
-      {"bonl output_error, online (one pass, no refinement)", "online", header, true},
+      {"bonl output_error, online (one pass, the estimator's defaults)", "online", header, true},
       {"bonl paper (eqs. 21-31, with the default trace ceiling)", "with the paper's method",
        columns(result.method(bonl::Method::Paper)), false}};
   const auto mse = [](const Column& c, bool online) { return online ? c.scores->online_mse : c.scores->mse; };

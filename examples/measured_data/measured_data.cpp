@@ -137,14 +137,17 @@ std::vector<Candidate> candidates(const Grid& grid, const std::vector<Offset>& o
 }
 
 /// The estimator settings: a model without internal variables (ARX) is a linear regression, by least
-/// squares (forgetting 1, P(0) = 1e6 I); the block models by the equation-error method with the
+/// squares (forgetting 1, P(0) = 1e6 I in the data's units); the block models by the equation-error method with the
 /// paper's settings, then refinement (the settings the published figures in docs/lab/measured_data.md
 /// were produced with; issue 18 redoes this example).
 template <class Model>
 bonl::IdentifyOptions settings() {
   bonl::IdentifyOptions options;
   options.method = bonl::Method::EquationError;
-  if (!Model::kHasInternalVariables) options.forgetting = bonl::ForgettingSchedule::constant(1.0);
+  if (!Model::kHasInternalVariables) {
+    options.forgetting = bonl::ForgettingSchedule::constant(1.0);
+    options.normalise = false;  // P(0) = 1e6 I in the data's units: the batch solution's regulariser
+  }
   return options;
 }
 

@@ -103,9 +103,10 @@ def structure(model: type, orders: dict):
 
 
 def settings(model: type) -> dict:
-    """The estimator settings (fixed; see the module docstring): ARX, a linear regression, by least squares."""
+    """The estimator settings (fixed; see the module docstring): ARX, a linear regression, by least squares
+    (P(0) = 1e6 I in the data's units: the batch solution's regulariser)."""
     if model is bonl.ARX:
-        return {"method": "equation_error", "forgetting": 1.0, "p0": 1e6}
+        return {"method": "equation_error", "forgetting": 1.0, "p0": 1e6, "normalise": False}
     return {"method": "equation_error"}  # the paper's forgetting, P(0), c(0), one pass; LM refinement
 
 

@@ -5,7 +5,8 @@
 // estimate refined by Levenberg-Marquardt on the simulation error), each judged by free-run
 // simulation on a fresh input against the noise-free output (NRMSE = ||y - y_sim|| / ||y - mean y||):
 // - noise-free, 4000 samples, random levels held 5 samples and the paper's multi-sine: NRMSE of the
-//   online output-error (without and with its window refinement), equation-error and paper methods
+//   online output-error (its recursion alone, and with its defaults: the window refinement from two
+//   starts), equation-error and paper methods
 //   and of identify(); P-H-W: |c - c_true| / c_true;
 // - white output noise of 2% and 10% of std(y), and AR(1) noise (pole 0.9) of 10%, random levels,
 //   10 seeds: the same five NRMSEs per seed;
@@ -13,10 +14,15 @@
 //   identify() limited to that many iterations (whether the window lacks iterations);
 // - tracking: constant forgetting 0.995, noise-free, 8000 samples, the input gain +30% (and c doubled)
 //   at sample 4000: samples after the change until the online model's NRMSE against the new system
-//   is below 1% (checked every 50 samples), without and with the window refinement.
+//   is below 1% (checked every 50 samples), without and with the window refinement;
+// - units: the same systems recorded with u and y multiplied independently by factors from 1e-3 to
+//   1e4 (the structure rescaled with them): noise-free, the default estimator's NRMSE against
+//   identify()'s on every pair of factors; under each noise at the four extreme pairs, the online
+//   over offline ratio of the median NRMSE over the seeds, against the ratio in the original units.
 //
 //   bonl_online_accuracy [--systems FILE] [--json FILE] [--markdown FILE] [--quick] [--check FILE]
-//     --quick       noise-free and tracking figures, and the noisy figures of seed 1 only
+//     --quick       noise-free and tracking figures, the noisy figures of seed 1 only, and of the units
+//                   the four extreme pairs noise-free and the first one's seed 1 under each noise
 //     --check FILE  compare what was computed with a results file written by --json (relative 2%,
 //                   values below 1e-9 count as equal); exit status 1 when one differs
 //
@@ -129,6 +135,7 @@ Json measure(const Model& truth, const Inputs& inputs, const VectorXd& y) {
   for (bonl::Method method : kMethods) {
     bonl::EstimatorOptions options;
     options.method = method;
+    options.window.enabled = false;  // output_error: the recursion alone
     try {
       const Model estimate = online(truth, inputs.u, y, options);
       out[bonl::to_string(method)] = number(nrmse(estimate, inputs.u_validation, y_validation));
@@ -142,9 +149,8 @@ Json measure(const Model& truth, const Inputs& inputs, const VectorXd& y) {
     }
   }
   bonl::EstimatorHealth health;
-  {  // the output-error method with its window refinement (off by default)
+  {  // the output-error method as it comes: with its window refinement
     bonl::EstimatorOptions options;
-    options.window.enabled = true;
     out["output_error_window"] =
         number(nrmse(online(truth, inputs.u, y, options, &health), inputs.u_validation, y_validation));
     out["window_iterations"] = health.window.iterations;
@@ -191,6 +197,72 @@ Json tracking(const Model& truth, bool window) {
   return out;
 }
 
+/// The factors u and y are multiplied by: the four extreme pairs first (the quick run's), then the
+/// rest of the grid of {1e-3, 1e-1, 1, 1e2, 1e4} for each.
+std::vector<std::pair<double, double>> unit_factors() {
+  std::vector<std::pair<double, double>> pairs = {{1e-3, 1e-3}, {1e4, 1e4}, {1e-3, 1e4}, {1e4, 1e-3}};
+  for (double fu : {1e-3, 1e-1, 1.0, 1e2, 1e4}) {
+    for (double fy : {1e-3, 1e-1, 1.0, 1e2, 1e4}) {
+      if (std::find(pairs.begin(), pairs.end(), std::make_pair(fu, fy)) == pairs.end()) pairs.emplace_back(fu, fy);
+    }
+  }
+  return pairs;
+}
+constexpr std::size_t kExtremePairs = 4;
+
+/// The default online estimator and identify() on a record in other units: u times fu, y times fy,
+/// the structure rescaled with them; NRMSE on the validation record in the same units.
+template <class Model>
+Json in_units(const Model& truth, const Inputs& inputs, const VectorXd& y, const VectorXd& y_validation, double fu,
+              double fy) {
+  const Model structure = bonl::rescaled(truth, fu, fy);
+  const VectorXd u = inputs.u * fu, u_validation = inputs.u_validation * fu;
+  const VectorXd y_scaled = y * fy, validation = y_validation * fy;
+  Json out;
+  out["online"] = number(nrmse(online(structure, u, y_scaled, bonl::EstimatorOptions{}), u_validation, validation));
+  try {
+    out["identify"] = number(nrmse(bonl::identify(structure, u, y_scaled), u_validation, validation));
+  } catch (const bonl::NumericalError&) {
+    out["identify"] = nullptr;
+  }
+  return out;
+}
+
+template <class Model>
+Json units(const Model& truth, bool quick) {
+  const auto factors = unit_factors();
+  Json result;
+  result["noise_free"] = Json::array();
+  {
+    const Inputs levels = random_levels(101, 202);
+    const VectorXd y = truth.simulate(levels.u), y_validation = truth.simulate(levels.u_validation);
+    for (std::size_t i = 0; i < (quick ? kExtremePairs : factors.size()); ++i) {
+      Json entry = in_units(truth, levels, y, y_validation, factors[i].first, factors[i].second);
+      entry["u_factor"] = factors[i].first;
+      entry["y_factor"] = factors[i].second;
+      result["noise_free"].push_back(entry);
+    }
+  }
+  result["noisy"] = Json::array();
+  for (std::size_t i = 0; i < (quick ? 1 : kExtremePairs); ++i) {
+    Json entry;
+    entry["u_factor"] = factors[i].first;
+    entry["y_factor"] = factors[i].second;
+    for (const Noise& noise : kNoises) {
+      Json seeds = Json::array();
+      for (int seed = 1; seed <= (quick ? 1 : kSeeds); ++seed) {
+        const Inputs levels = random_levels(1000 + seed, 2000 + seed);
+        const VectorXd clean = truth.simulate(levels.u);
+        seeds.push_back(in_units(truth, levels, clean + output_noise(clean, noise, 3000 + seed),
+                                 truth.simulate(levels.u_validation), factors[i].first, factors[i].second));
+      }
+      entry[noise.key] = seeds;
+    }
+    result["noisy"].push_back(entry);
+  }
+  return result;
+}
+
 template <class Model>
 Json evaluate(const Model& truth, bool quick) {
   Json result;
@@ -211,6 +283,7 @@ Json evaluate(const Model& truth, bool quick) {
   }
   result["tracking"] = tracking(truth, false);
   result["tracking_window"] = tracking(truth, true);
+  result["units"] = units(truth, quick);
   return result;
 }
 
@@ -246,12 +319,48 @@ double median_of(const Json& seeds, const char* key) {
   return median(values);
 }
 
+/// The units figures of one system: noise-free pairs of factors where the default estimator is at
+/// or below max(1e-6, identify()'s NRMSE) and how many there are; the largest relative difference of
+/// the online over offline ratio (median over the seeds) from the ratio in the original units, over
+/// the extreme pairs and the noises; the worst noise-free online NRMSE over the pairs.
+struct UnitsFigures {
+  int met = 0, pairs = 0;
+  double largest_ratio_change = 0.0;
+  double worst_online = 0.0, worst_identify = 0.0;
+};
+UnitsFigures units_figures(const Json& system) {
+  UnitsFigures out;
+  const Json& units = system.at("units");
+  for (const Json& entry : units.at("noise_free")) {
+    const double online = as_number(entry.at("online")), offline = as_number(entry.at("identify"));
+    ++out.pairs;
+    if (online <= std::max(1e-6, offline)) ++out.met;
+    out.worst_online = std::max(out.worst_online, online);
+    out.worst_identify = std::max(out.worst_identify, offline);
+  }
+  for (const Json& entry : units.at("noisy")) {
+    for (const Noise& noise : kNoises) {
+      const Json& original = system.at("noisy").at(noise.key);
+      const double reference = median_of(original, "output_error_window") / median_of(original, "identify");
+      const Json& seeds = entry.at(noise.key);
+      const double ratio = median_of(seeds, "online") / median_of(seeds, "identify");
+      const double change =
+          std::isfinite(ratio) && std::isfinite(reference) ? std::abs(ratio / reference - 1.0) : kInfinity;
+      out.largest_ratio_change = std::max(out.largest_ratio_change, change);
+    }
+  }
+  return out;
+}
+
 std::string format(double value, const char* spec = "%.2g") {
   if (!std::isfinite(value)) return "diverged";
   char text[32];
   std::snprintf(text, sizeof text, spec, value);
   return text;
 }
+
+/// A relative change as a percentage, or "diverged" where a ratio was not finite.
+std::string percent(double change) { return std::isfinite(change) ? format(100.0 * change, "%.2g") + "%" : "diverged"; }
 
 /// Against the online targets, the recursion alone and with the window refinement: the online over
 /// offline ratio of the median NRMSE under noise over every system-noise pair; the noise-free
@@ -264,8 +373,8 @@ std::string targets(const Json& results) {
     const char* tracking;
   };
   const Column columns[] = {
-      {"recursion alone (output_error)", "output_error", "tracking"},
-      {"with the window refinement", "output_error_window", "tracking_window"},
+      {"recursion alone (window off)", "output_error", "tracking"},
+      {"the default (the window refinement from two starts)", "output_error_window", "tracking_window"},
       {"offline: identify() with the window's iteration count", "identify_at_window_iterations", nullptr}};
   std::ostringstream out;
   const std::size_t systems = results.at("systems").size();
@@ -322,11 +431,12 @@ std::string summary(const Json& results) {
   };
   const char* estimators[] = {"output_error", "output_error_window", "equation_error", "paper", "identify"};
   std::ostringstream out;
-  out << "| models | condition | online output_error | output_error, window | online equation_error | online paper | "
+  out << "| models | condition | output_error, recursion alone | output_error, default | online equation_error | "
+         "online paper | "
          "identify() |\n"
       << "|---|---|---|---|---|---|---|\n";
   for (bool arx : {false, true}) {
-    const char* models = arx ? "ARX" : "block models";
+    const char* models = arx ? "ARX" : "other models";
     for (const char* input : {"random_levels", "multisine"}) {
       out << "| " << models << " | noise-free, "
           << (std::string(input) == "multisine" ? "multi-sine" : "random levels");
@@ -344,6 +454,27 @@ std::string summary(const Json& results) {
     }
   }
   out << "\n" << targets(results);
+  int met = 0, pairs = 0, within = 0, systems = 0;
+  double largest_change = 0.0;  // over the systems whose ratios stayed finite in every unit
+  int diverged = 0;
+  for (const Json& system : results.at("systems")) {
+    const UnitsFigures figures = units_figures(system);
+    met += figures.met;
+    pairs += figures.pairs;
+    within += figures.largest_ratio_change <= 0.05 ? 1 : 0;
+    if (std::isfinite(figures.largest_ratio_change)) {
+      largest_change = std::max(largest_change, figures.largest_ratio_change);
+    } else {
+      ++diverged;
+    }
+    ++systems;
+  }
+  out << "\n| units: u and y times 1e-3 to 1e4 | noise-free pairs at or below max(1e-6, identify()) | systems whose "
+         "noisy ratios stay within 5% of the original units' | largest change of a ratio where finite | "
+         "systems with a diverged run in some units |\n"
+      << "|---|---|---|---|---|\n"
+      << "| the default estimator | " << met << " of " << pairs << " | " << within << " of " << systems << " | "
+      << percent(largest_change) << " | " << diverged << " |\n";
   return out.str();
 }
 
@@ -354,16 +485,18 @@ std::string markdown(const Json& results) {
       << "Written by `bonl_online_accuracy` (examples/online_accuracy, `bash scripts/online_accuracy.sh`) from the\n"
       << "known systems of `tests/data/online_systems.json`; the numbers are in `online_accuracy.json` beside this\n"
       << "file, and ctest re-runs part of them (`examples/online_accuracy_quick`). NRMSE of free-run simulation on a\n"
-      << "fresh input against the noise-free output. \"online\": one pass of `Estimator::update` with its default\n"
-      << "settings; `identify()`: offline, the recursive estimate refined by Levenberg-Marquardt.\n\n";
+      << "fresh input against the noise-free output. \"online\": one pass of `Estimator::update`, \"default\" with\n"
+      << "its default settings (the window refinement from two starts), \"recursion alone\" with the window off;\n"
+      << "`identify()`: offline, the recursive estimates refined by Levenberg-Marquardt.\n\n";
   out << "## Summary\n\n"
-      << "Ranges over the systems of each kind (12 block models: 4 Hammerstein, 4 H-W, 4 P-H-W; 4 ARX) of the\n"
+      << "Ranges over the systems of each kind (ARX, and the other models: block, feedback and hysteresis ones) of "
+         "the\n"
       << "NRMSE, for noisy records of its median over the seeds. This table is also in docs/explanation/algorithm.md\n"
       << "(`online_accuracy_summary.md`).\n\n"
       << summary(results) << "\n";
   out << "## Noise-free, 4000 samples\n\n"
-      << "| system | random levels: output_error | window | equation_error | paper | identify() | P-H-W c error |"
-         " multi-sine: output_error | window | equation_error | paper | identify() | P-H-W c error |\n"
+      << "| system | random levels: recursion alone | default | equation_error | paper | identify() | P-H-W c error |"
+         " multi-sine: recursion alone | default | equation_error | paper | identify() | P-H-W c error |\n"
       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Json& system : results.at("systems")) {
     out << "| " << system.at("name").get<std::string>();
@@ -377,9 +510,9 @@ std::string markdown(const Json& results) {
     out << " |\n";
   }
   out << "\n## Output noise, random levels, 4000 samples, " << kSeeds << " seeds: median NRMSE\n\n"
-      << "The ratio is the online output-error median over identify()'s.\n\n"
-      << "| system | noise | online output_error | output_error, window | online equation_error | online paper | "
-         "identify() | ratio | ratio, window |\n"
+      << "The ratio is the online output-error median (the recursion alone, the default) over identify()'s.\n\n"
+      << "| system | noise | recursion alone | default | online equation_error | online paper | "
+         "identify() | ratio, recursion alone | ratio, default |\n"
       << "|---|---|---|---|---|---|---|---|---|\n";
   for (const Json& system : results.at("systems")) {
     for (const Noise& noise : kNoises) {
@@ -417,6 +550,19 @@ std::string markdown(const Json& results) {
           << format(median_of(seeds, "identify_at_window_iterations") / offline, "%.2f");
     }
     out << " |\n";
+  }
+  out << "\n## Units\n\n"
+      << "The noise-free random-level record and the noisy ones with u and y multiplied independently by 1e-3,\n"
+      << "1e-1, 1, 1e2 and 1e4 (25 pairs; under noise the four extreme pairs, " << kSeeds << " seeds), the structure\n"
+      << "rescaled with them, the default estimator and identify() judged in those units. \"ratio change\": the\n"
+      << "largest relative difference of the online over offline ratio of median NRMSEs from the original units'.\n\n"
+      << "| system | noise-free pairs met | worst online NRMSE | worst identify() NRMSE | ratio change under noise |\n"
+      << "|---|---|---|---|---|\n";
+  for (const Json& system : results.at("systems")) {
+    const UnitsFigures figures = units_figures(system);
+    out << "| " << system.at("name").get<std::string>() << " | " << figures.met << " of " << figures.pairs << " | "
+        << format(figures.worst_online) << " | " << format(figures.worst_identify) << " | "
+        << percent(figures.largest_ratio_change) << " |\n";
   }
   out << "\n## Tracking: constant forgetting 0.995, input gain +30% (P-H-W: and c doubled) at sample 4000\n\n"
       << "| system | samples until NRMSE < 1% | NRMSE at the end (4000 samples after) | window: samples | window: "

@@ -158,6 +158,13 @@ control::AdaptiveInverseOptions TrackingOptions::adaptive_defaults() {
   options.estimator.method = Method::OutputError;
   options.estimator.forgetting = ForgettingSchedule::constant(0.999);
   options.estimator.p0 = 0.01;
+  // The settings this experiment was designed with, on another reference: the recursion alone, in
+  // the data's units (p0 is in those units). With the estimator's later defaults (normalised
+  // coordinates, the window refinement on) the adaptive feedforward, measured on this reference,
+  // no longer recovers within 20% after the change: a finding about those defaults in closed loop,
+  // not a reason to retune the experiment on its own reference.
+  options.estimator.normalise = false;
+  options.estimator.window.enabled = false;
   options.rederive_every = 100;
   options.max_covariance_trace = 10.0;
   return options;

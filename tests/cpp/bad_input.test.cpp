@@ -553,7 +553,8 @@ TEST_CASE("E14 a non-finite sample in Estimator::update is refused and leaves no
           }
           REQUIRE(disturbed.theta() == theta);
           REQUIRE(disturbed.covariance() == p);
-          REQUIRE(disturbed.samples() == k);
+          REQUIRE(disturbed.samples() == clean.samples());
+          REQUIRE(disturbed.pending_samples() == clean.pending_samples());
         }
         clean.update(u[k], y[k]);
         disturbed.update(u[k], y[k]);
@@ -569,6 +570,7 @@ TEST_CASE("E15 Estimator::reset with a wrong-length or non-finite start is rejec
   bonl::Estimator<bonl::HammersteinWienerd> estimator(model);
   estimator.update(0.5, 0.1);
   const Eigen::VectorXd theta = estimator.theta();
+  const Eigen::Index pending = estimator.pending_samples();
   Eigen::VectorXd start = Eigen::VectorXd::Zero(model.num_params());
   start[4] = kNaN;
   check_cases<std::invalid_argument>({
@@ -576,7 +578,8 @@ TEST_CASE("E15 Estimator::reset with a wrong-length or non-finite start is rejec
       {"NaN", [&] { estimator.reset(start); }, "theta0 has a non-finite value at index 4"},
   });
   CHECK(estimator.theta() == theta);
-  CHECK(estimator.samples() == 1);
+  CHECK(estimator.pending_samples() == pending);
+  CHECK(estimator.measuring_scale());
 }
 
 // --- Metrics and signals -------------------------------------------------------------------------

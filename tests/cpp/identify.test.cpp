@@ -92,7 +92,9 @@ TEMPLATE_LIST_TEST_CASE(
         // the output-error method is not, and meets the block models' bound.
         const bool least_squares = !TestType::kHasInternalVariables && method == bonl::Method::EquationError;
         CHECK(ours.validation_nrmse <= (least_squares ? 0.05 : 0.25 * eta));
-        CHECK(ours.validation_nrmse <= paper.validation_nrmse);
+        // ARX least squares is the paper's estimator, on the data in their own scale: the same to the
+        // weight of P(0) (measured: 2e-6 relative).
+        CHECK(ours.validation_nrmse <= paper.validation_nrmse * (least_squares ? 1.0 + 1e-5 : 1.0));
         if constexpr (is_phw<TestType>) CHECK(ours.c_relative_error <= 0.02);
       }
     }
@@ -108,8 +110,12 @@ TEST_CASE("ARX: the equation-error and paper methods are the same least-squares 
   const bonl::PaperARX a = bonl::identify(truth, u, y, paper);
   bonl::IdentifyOptions equation_error;
   equation_error.method = bonl::Method::EquationError;
+  equation_error.normalise = false;  // in the data's units, as the paper's method is
   const bonl::PaperARX b = bonl::identify(truth, u, y, equation_error);
   CHECK(a.theta() == b.theta());
+  // In the data's own scale (the default) the same least squares, P(0)'s weight aside.
+  equation_error.normalise = true;
+  CHECK(near(bonl::identify(truth, u, y, equation_error).theta(), a.theta(), 1e-6));
 }
 
 TEST_CASE("the paper's method on noise-free P-H-W data does not recover c (algorithm.md)", "[identify]") {

@@ -30,6 +30,7 @@ bonl::EstimatorOptions options_for(bonl::Method method) {
   options.method = method;
   options.p0 = kP0;
   options.forgetting = bonl::ForgettingSchedule::paper();  // 0.98 for 200 samples, then 1
+  options.normalise = false;  // the algorithm in the data's units, from the first sample: the references'
   return options;
 }
 

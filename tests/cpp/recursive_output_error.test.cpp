@@ -48,13 +48,22 @@ Eigen::MatrixXd sensitivities(const Model& model, const Eigen::VectorXd& u, Eige
 }
 
 /// The known systems of tests/data/online_systems.json.
-std::vector<std::pair<std::string, bonl::io::AnyModel>> online_systems() {
+/// A known online system: its name, its model, and the NRMSE one noise-free pass of the default
+/// estimator stays within (the file's one_pass_nrmse where a system converges slower, else 1e-9).
+struct OnlineSystem {
+  std::string name;
+  bonl::io::AnyModel model;
+  double one_pass_nrmse;
+};
+
+std::vector<OnlineSystem> online_systems() {
   std::ifstream in(std::string(bonl_test::data_dir()) + "/online_systems.json");
   REQUIRE(in);
   const nlohmann::json document = nlohmann::json::parse(in);
-  std::vector<std::pair<std::string, bonl::io::AnyModel>> out;
+  std::vector<OnlineSystem> out;
   for (const auto& entry : document.at("systems")) {
-    out.emplace_back(entry.at("name").get<std::string>(), bonl::io::load_model(entry.at("model").dump()));
+    out.push_back({entry.at("name").get<std::string>(), bonl::io::load_model(entry.at("model").dump()),
+                   entry.value("one_pass_nrmse", 1e-9)});
   }
   return out;
 }
@@ -106,32 +115,36 @@ TEMPLATE_LIST_TEST_CASE("fixed orders: the output-error sensitivities are the si
 }
 
 TEST_CASE("noise-free records of the known online systems are recovered exactly", "[output_error]") {
-  // One pass of 4000 samples of random levels (held 5 samples), default settings. Measured: 15 of the
-  // 16 systems at 3.6e-7 or below and c within 1.3e-9; P-H-W slow 1 converges slower, 1.2e-3 and c
-  // within 0.34% at the end of the pass (docs/results/online_accuracy.md).
+  // One pass of 4000 samples of random levels (held 5 samples), default settings. Measured: 21 of the
+  // 23 systems at 1e-13 or below and c within 1e-13; the Wiener-Hammerstein model and the integrating
+  // friction drive converge slower (their one_pass_nrmse; docs/results/online_accuracy.md).
   const Eigen::VectorXd u = bonl::signals::random_levels(4000, 5, 1.0, 101);
   const Eigen::VectorXd u_validation = bonl::signals::random_levels(4000, 5, 1.0, 202);
-  for (const auto& [name, any] : online_systems()) {
+  for (const OnlineSystem& system : online_systems()) {
     std::visit(
-        [&, name = name](const auto& truth) {
+        [&](const auto& truth) {
           using Model = std::decay_t<decltype(truth)>;
           const Model estimate = online_estimate(truth, u, truth.simulate(u));
           const double error = bonl::metrics::nrmse(truth.simulate(u_validation), estimate.simulate(u_validation));
-          INFO(name << ": validation NRMSE " << error);
-          const bool slower = name == "PseudoHammersteinWiener slow 1";
-          CHECK(error <= (slower ? 1e-2 : 1e-4));
+          INFO(system.name << ": validation NRMSE " << error);
+          CHECK(error <= system.one_pass_nrmse);
           if constexpr (std::is_same_v<Model, bonl::PseudoHammersteinWienerd>) {
-            CHECK(std::abs(estimate.c() - truth.c()) <= (slower ? 1e-2 : 1e-3) * truth.c());
+            CHECK(std::abs(estimate.c() - truth.c()) <= 1e-9 * truth.c());
           }
         },
-        any);
+        system.model);
   }
 }
 
 TEMPLATE_LIST_TEST_CASE("under white output noise the online error shrinks like 1 / sqrt(N)", "[output_error]",
                         bonl::Models) {
-  // A consistent estimator's simulation error falls by sqrt(4) = 2 when the record grows four-fold.
-  // Median over 5 seeds of 2% white noise; measured ratios 0.43 (Hammerstein) to 0.62 (ARX), bound 0.65.
+  // A consistent estimator's simulation error keeps falling as the record grows. By sqrt(4) = 2 when
+  // it grows four-fold offline; online by less: at 4000 samples the window refinement's estimate is
+  // already near identify()'s, and the adaptive memory keeps about half the samples seen, so from
+  // 4000 to 16000 the error falls by about sqrt(8000 / 4000). Median over 5 seeds of 2% white noise;
+  // measured ratios 0.40 (Wiener-Hammerstein, not yet converged at 4000) to 0.90 (Wiener), bound
+  // 0.95. (With the window capping the memory at its 4000 samples, the error at 16000 was above the
+  // one at 4000: 1.1 to 2.0.)
   const TestType truth = known<TestType>();
   const Eigen::VectorXd u_validation = bonl::signals::random_levels(4000, 5, 1.0, 77);
   const Eigen::VectorXd y_validation = truth.simulate(u_validation);
@@ -149,7 +162,7 @@ TEMPLATE_LIST_TEST_CASE("under white output noise the online error shrinks like 
   };
   const double short_record = median_error(4000), long_record = median_error(16000);
   INFO(TestType::kName << ": median NRMSE " << short_record << " at 4000 samples, " << long_record << " at 16000");
-  CHECK(long_record <= 0.65 * short_record);
+  CHECK(long_record <= 0.95 * short_record);
   CHECK(long_record >= 0.3 * short_record);  // not faster either: that would be an error, not noise
 }
 
@@ -195,7 +208,9 @@ TEMPLATE_LIST_TEST_CASE("started at the truth, the output-error update predicts 
   const TestType truth = known<TestType>();
   const Eigen::VectorXd u = bonl::signals::random_levels(2000, 5, 1.0, 51);
   const Eigen::VectorXd y = truth.simulate(u);
-  bonl::Estimator<TestType> estimator(truth);
+  bonl::EstimatorOptions options;
+  options.normalise = false;  // one sample per update: its prediction is this sample's
+  bonl::Estimator<TestType> estimator(truth, options);
   estimator.reset(truth.theta());
   double largest_difference = 0.0;
   for (Eigen::Index k = 0; k < u.size(); ++k) {

@@ -195,6 +195,7 @@ TEST_CASE("the model estimator with lambda = 1 equals batch least squares on the
   options.method = bonl::Method::EquationError;  // for ARX: least squares on its regressor
   options.forgetting = bonl::ForgettingSchedule::constant(1.0);
   options.p0 = p0;
+  options.normalise = false;  // P(0) = p0 I in the data's units, as the batch solution has it
   bonl::Estimator<bonl::PaperARX> estimator(truth, options);
   Problem problem{Eigen::MatrixXd::Zero(u.size(), 6), y};
   for (Eigen::Index k = 0; k < u.size(); ++k) {

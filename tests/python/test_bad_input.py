@@ -326,7 +326,8 @@ def test_e14_a_non_finite_sample_is_refused_without_a_trace(name, method):
                 assert disturbed.update(bad_u, bad_y) == bonl.UpdateStatus.rejected_non_finite
             np.testing.assert_array_equal(disturbed.theta, theta)
             np.testing.assert_array_equal(disturbed.covariance, p)
-            assert disturbed.samples == k
+            assert disturbed.samples == clean.samples
+            assert disturbed.pending_samples == clean.pending_samples
         clean.update(u[k], y[k])
         disturbed.update(u[k], y[k])
     np.testing.assert_array_equal(disturbed.theta, clean.theta)
@@ -336,14 +337,14 @@ def test_e15_e16_estimator_reset_and_update_arguments():
     model = models()["HammersteinWiener"]
     estimator = bonl.Estimator(model)
     estimator.update(0.5, 0.1)
-    theta = estimator.theta
+    theta, pending = estimator.theta, estimator.pending_samples
     raises(ValueError, "theta0 must have 11 entries, got 1", estimator.reset, [1.0])
     start = np.zeros(11)
     start[4] = NAN
     raises(ValueError, "theta0 has a non-finite value at index 4", estimator.reset, start)
     raises(ValueError, "theta0 must be a 1-D array of real numbers, got str", estimator.reset, "0")
     np.testing.assert_array_equal(estimator.theta, theta)
-    assert estimator.samples == 1
+    assert estimator.pending_samples == pending and estimator.measuring_scale
     raises(TypeError, "incompatible function arguments", estimator.update, "0.5", 0.1)
     raises(TypeError, "incompatible function arguments", estimator.update, 0.5, None)
 

@@ -47,9 +47,10 @@ def test_noisy_default_beats_paper(noise):
 def test_settings_are_passed_through():
     truth = known_models()["ARX"]
     u, y = _record(truth, 5, 0.01)
-    a = bonl.identify(truth, u, y, method="equation_error", forgetting=1.0, p0=10.0)
-    b = bonl.identify(truth, u, y, method="equation_error", forgetting=(1.0, 0, 1.0), p0=10.0)
-    c = bonl.identify(truth, u, y, method="equation_error")
+    # In the data's units (normalise=False), so that P(0) = p0 I is the batch solution's regulariser.
+    a = bonl.identify(truth, u, y, method="equation_error", forgetting=1.0, p0=10.0, normalise=False)
+    b = bonl.identify(truth, u, y, method="equation_error", forgetting=(1.0, 0, 1.0), p0=10.0, normalise=False)
+    c = bonl.identify(truth, u, y, method="equation_error", normalise=False)
     np.testing.assert_array_equal(a.theta, b.theta)
     assert not np.array_equal(a.theta, c.theta)
     # ARX's least squares with lambda = 1 equals the regularised batch solution.

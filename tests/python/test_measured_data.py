@@ -91,7 +91,7 @@ def test_arx_on_the_actuator_is_batch_least_squares(orders):
     act = md.load_actuator()
     u, y = act["u"][:512], act["y"][:512]
     settings = md.settings(bonl.ARX)
-    assert settings == {"method": "equation_error", "forgetting": 1.0, "p0": 1e6}
+    assert settings == {"method": "equation_error", "forgetting": 1.0, "p0": 1e6, "normalise": False}
     model = bonl.identify(bonl.ARX(*orders), u, y, **settings)
     expected = batch_least_squares(u, y, *orders, p0=settings["p0"])
     theta = np.asarray(model.theta).ravel()

@@ -87,7 +87,7 @@ def test_the_plant_experiment_summary_is_its_results_file():
     rows = table_rows(summary)
     scores = {
         "bonl output_error, identify()": committed["methods"]["output_error"]["mse"],
-        "bonl output_error, online (one pass, no refinement)": committed["online"]["output_error"],
+        "bonl output_error, online (one pass, the estimator's defaults)": committed["online"]["output_error"],
         "bonl paper (eqs. 21-31, with the default trace ceiling)": committed["methods"]["paper"]["mse"],
     }
     for row, mse in scores.items():

@@ -1,5 +1,7 @@
 """The online estimator's numerical safeguards, seen from Python: the covariance trace ceiling, the
-divergence state and its recovery, and the recorded trajectories."""
+divergence state and its recovery, and the recorded trajectories. They check the recursion's mechanics
+sample by sample in the data's units (normalise=False); the normalised recursion is the same algorithm
+on the data in their own scale (test_estimator.py)."""
 
 import math
 
@@ -52,7 +54,7 @@ def test_divergence_is_reported_and_recover_resets_the_covariance():
     y = truth.simulate(u)
     # The equation-error method: the huge input stays in its regressor for nb + 1 samples. (Under
     # output_error it also enters the simulated state and is refused for longer.)
-    estimator = bonl.Estimator(truth, method="equation_error", p0=100.0)
+    estimator = bonl.Estimator(truth, method="equation_error", p0=100.0, normalise=False)
     for k in range(500):
         estimator.update(u[k], y[k])
     estimator.update(1e200, 0.0)  # reaches the regressor nk = 8 samples later; phi' P phi overflows
@@ -72,7 +74,7 @@ def test_recover_after_resets_automatically():
     truth = known_models()["ARX"]
     u = levels(1000, 2)
     y = truth.simulate(u)
-    estimator = bonl.Estimator(truth, method="equation_error", recover_after=3)
+    estimator = bonl.Estimator(truth, method="equation_error", recover_after=3, normalise=False)
     for k in range(500):
         estimator.update(u[k], y[k])
     estimator.update(1e200, 0.0)
@@ -89,7 +91,7 @@ def test_output_error_restarts_its_simulation_after_an_absurd_input():
     truth = known_models()["ARX"]
     u = levels(1000, 2)
     y = truth.simulate(u)
-    estimator = bonl.Estimator(truth, recover_after=3)
+    estimator = bonl.Estimator(truth, recover_after=3, normalise=False)
     for k in range(500):
         estimator.update(u[k], y[k])
     estimator.update(1e200, 0.0)
@@ -106,8 +108,8 @@ def test_recording_matches_a_replay():
     truth = known_models()["PseudoHammersteinWiener"]
     u = levels(60, 3)
     y = truth.simulate(u)
-    recorded = bonl.Estimator(truth)
-    replay = bonl.Estimator(truth)
+    recorded = bonl.Estimator(truth, normalise=False)
+    replay = bonl.Estimator(truth, normalise=False)
     recorded.start_recording(25)
     assert recorded.recording
     thetas, statuses, predictions = [], [], []
@@ -132,7 +134,7 @@ def test_recording_matches_a_replay():
 
 
 def test_arx_records_no_internal_variable():
-    estimator = bonl.Estimator(bonl.ARX(2, 1, 0))
+    estimator = bonl.Estimator(bonl.ARX(2, 1, 0), normalise=False)
     estimator.start_recording(3)
     estimator.update(1.0, 0.5)
     assert math.isnan(estimator.trajectory().internal[0])

@@ -3,8 +3,8 @@ table docs/lab/reliability.md quotes (docs/results/soak_summary.md).
 
     python3 tests/soak/report.py --runs DIR --json FILE --markdown FILE [--command TEXT]
 
-DIR holds seed_<S>.json (the output-error method) and seed_<S>_window.json (with its window
-refinement) for S = 1..N, the same N for both. tests/python/test_published_figures.py renders the
+DIR holds seed_<S>.json (the output-error method's recursion alone, bonl_soak --no-window) and
+seed_<S>_window.json (its defaults: with the window refinement) for S = 1..N, the same N for both. tests/python/test_published_figures.py renders the
 committed JSON with summary() and compares it with the committed table."""
 
 import argparse

@@ -16,8 +16,9 @@
 // docs/lab/reliability.md.
 //
 //   bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X] [--seed S]
-//             [--method output_error|equation_error|paper] [--window] [--json FILE]
-//   --window  the output-error method with its window refinement (EstimatorOptions::window)
+//             [--method output_error|equation_error|paper] [--no-window] [--json FILE]
+//   --no-window  the output-error method's recursion alone, without its window refinement (on by
+//                default: EstimatorOptions::window)
 
 #include <bonl/bonl.hpp>
 
@@ -49,14 +50,14 @@ struct Settings {
   bonl::Method method = bonl::Method::OutputError;
   unsigned seed = 2026;
   std::string json;
-  bool window = false;  // the output-error method's window refinement on
+  bool window = true;  // the output-error method's window refinement, as the estimator's default
 };
 
 [[noreturn]] void usage(const std::string& problem) {
   std::cerr
       << "bonl_soak: " << problem
       << "\nusage: bonl_soak [--samples N] [--phase-length L] [--check-every C] [--no-ceiling | --trace-ceiling X]"
-         " [--seed S] [--method output_error|equation_error|paper] [--window] [--json FILE]\n";
+         " [--seed S] [--method output_error|equation_error|paper] [--no-window] [--json FILE]\n";
   std::exit(2);
 }
 
@@ -89,8 +90,8 @@ Settings parse(int argc, char** argv) {
       s.seed = static_cast<unsigned>(parse_count(value(), "--seed"));
     else if (arg == "--json")
       s.json = value();
-    else if (arg == "--window")
-      s.window = true;
+    else if (arg == "--no-window")
+      s.window = false;
     else if (arg == "--no-ceiling")
       s.trace_ceiling = std::numeric_limits<double>::infinity();
     else if (arg == "--trace-ceiling") {
@@ -291,7 +292,7 @@ int main(int argc, char** argv) {
 
     if ((k + 1) % settings.check_every == 0) {
       ++checks;
-      const auto p = estimator.covariance();
+      const auto p = estimator.normalised_covariance();  // the coordinates the ceiling bounds
       if (!p.allFinite()) {
         report_problem(k, "P is not finite");
         continue;
@@ -349,7 +350,8 @@ int main(int argc, char** argv) {
   const bonl::EstimatorHealth& health = estimator.health();
 
   std::printf("bonl_soak: %lld samples of P-H-W online identification, %s method%s, lambda = 0.98, trace ceiling %g\n",
-              settings.samples, bonl::to_string(settings.method), settings.window ? " with the window refinement" : "",
+              settings.samples, bonl::to_string(settings.method),
+              settings.window && settings.method == bonl::Method::OutputError ? " with the window refinement" : "",
               options.resolved_trace_ceiling());
   std::printf("  phases of %lld samples: rich, constant, rich, zero; %lld outliers of +-%.2f\n", settings.phase_length,
               outliers, outlier_size);

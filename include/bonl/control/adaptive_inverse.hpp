@@ -120,7 +120,8 @@ class AdaptiveInverse {
   /// \return true when the new inverse is in use
   bool rederive() {
     if (m_estimator.diverged()) return refuse(m_health.refused_diverged, "the estimator diverged");
-    const double trace = static_cast<double>(m_estimator.covariance().trace());
+    // The recursion's own P, in the coordinates p0 is in (EstimatorOptions::normalise).
+    const double trace = static_cast<double>(m_estimator.normalised_covariance().trace());
     const double limit = m_options.max_covariance_trace * static_cast<double>(m_estimator.theta().size()) *
                          m_estimator.options().resolved_p0();
     if (!(trace <= limit))

@@ -34,7 +34,8 @@ Model estimate_recursively(const Model& structure, const CheckedRecords<typename
       const auto& u = records[r].u;
       const auto& y = records[r].y;
       for (Eigen::Index k = 0; k < u.size(); ++k) {
-        if (estimator.update(u[k], y[k]) == UpdateStatus::NumericalFailure) {
+        estimator.update(u[k], y[k]);
+        if (estimator.diverged()) {  // also where the refused sample was one of two an update caught up on
           const std::string record = records.size() > 1 ? " of record " + std::to_string(r) : "";
           throw NumericalError("bonl: the covariance lost positiveness at sample " + std::to_string(k) + record +
                                " of pass " + std::to_string(pass + 1) + " (method " + to_string(options.method) +
@@ -42,6 +43,12 @@ Model estimate_recursively(const Model& structure, const CheckedRecords<typename
         }
       }
     }
+  }
+  // A scale measurement's samples not yet taken (a record shorter than about two measurements).
+  estimator.catch_up();
+  if (estimator.diverged()) {
+    throw NumericalError(std::string("bonl: the covariance lost positiveness at the end of the records (method ") +
+                         to_string(options.method) + "); try a smaller p0 or better-scaled data");
   }
   return estimator.model();
 }

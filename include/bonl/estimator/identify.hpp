@@ -18,6 +18,7 @@
 #include "../models/rescale.hpp"
 #include "estimate_recursively.hpp"
 #include "identify_options.hpp"
+#include "normalisation.hpp"
 #include "output_error.hpp"
 #include "record_view.hpp"
 #include "recursive_estimator.hpp"
@@ -25,41 +26,6 @@
 namespace bonl {
 
 namespace detail {
-
-/// The powers of two nearest the RMS of the records' deviations from (u0, y0), input and output
-/// (1 for a signal that is all zero): identify()'s units. With ni integrators the output's is the RMS
-/// of its ni-th difference, the signal the estimated denominator and a fed-back velocity see: an
-/// integrated output's own RMS measures its drift, and in its units the velocity's curve came out
-/// too small for the refinement to move (measured on the integrating friction system: NRMSE 0.035
-/// against 2e-15 without normalising).
-struct DataScale {
-  double u = 1.0;
-  double y = 1.0;
-};
-
-template <typename Scalar>
-DataScale data_scale(const CheckedRecords<Scalar>& records, double u0, double y0, Eigen::Index ni = 0) {
-  double u_squares = 0.0, y_squares = 0.0, samples = 0.0;
-  for (const auto& record : records) {
-    u_squares += static_cast<double>((record.u.array() - static_cast<Scalar>(u0)).matrix().squaredNorm());
-    const auto deviations = (record.y.array() - static_cast<Scalar>(y0)).matrix();
-    if (ni == 0) {
-      y_squares += static_cast<double>(deviations.squaredNorm());
-    } else {  // the ni-th difference, its mean square counted over the record's length
-      Eigen::Matrix<Scalar, Eigen::Dynamic, 1> y = deviations;
-      for (Eigen::Index n = 0; n < ni && y.size() > 1; ++n) y = (y.tail(y.size() - 1) - y.head(y.size() - 1)).eval();
-      double squares = static_cast<double>(y.squaredNorm());
-      if (y.size() != record.y.size()) squares *= static_cast<double>(record.y.size()) / static_cast<double>(y.size());
-      y_squares += squares;
-    }
-    samples += static_cast<double>(record.u.size());
-  }
-  const auto nearest_power_of_two = [samples](double squares) {
-    const double rms = std::sqrt(squares / samples);
-    return rms > 0.0 && std::isfinite(rms) ? std::exp2(std::round(std::log2(rms))) : 1.0;
-  };
-  return {nearest_power_of_two(u_squares), nearest_power_of_two(y_squares)};
-}
 
 /// The records less (u0, y0) and divided by `scale`, owned, with views for identification. New
 /// numbers, so checked (a deviation of finite values can overflow).

@@ -24,18 +24,12 @@ inline const char* to_string(OperatingPointSource source) {
   return "structure";
 }
 
-/// What identify() is told: the recursive estimator's options (the base), its passes over the
-/// records, the refinement's iterations, whether the data are normalised, where the operating point
-/// comes from, and the refinement's state-initialisation window.
+/// What identify() is told: the recursive estimator's options (the base, whose `normalise` says
+/// whether the data are normalised), its passes over the records, the refinement's iterations, where
+/// the operating point comes from, and the refinement's state-initialisation window.
 struct IdentifyOptions : EstimatorOptions {
   int passes = 1;               ///< passes of the recursive estimator over the record (paper's step 5)
   int refine_iterations = 100;  ///< Levenberg-Marquardt iterations of the refinement (0: none)
-  /// Where identify refines (below), run on the data divided by the power of two nearest each
-  /// signal's RMS (u and y, over all records) and return the model in the data's units (rescaled()),
-  /// so that the estimators' settings (p0, c0, the forgetting) mean the same on volts, newtons or
-  /// micrometres. Powers of two make the scaling exact in floating point. Where identify returns the
-  /// recursive estimate as it is, that estimate is the online estimator's, in the data's units.
-  bool normalise = true;
   OperatingPointSource operating_point =
       OperatingPointSource::Structure;  ///< where the operating point (u0, y0) comes from
   /// Where identify refines: each record's free run starts after its first initialisation_window

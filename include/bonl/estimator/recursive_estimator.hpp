@@ -14,10 +14,12 @@
 #include <utility>
 #include <vector>
 
+#include "../detail/indirect.hpp"
 #include "../detail/validate.hpp"
 #include "../models/model_steps.hpp"
 #include "forgetting_schedule.hpp"
 #include "method.hpp"
+#include "normalisation.hpp"
 #include "rls.hpp"
 #include "window_refinement.hpp"
 
@@ -30,9 +32,11 @@ struct EstimatorOptions {
   /// Unset, the method's default: ForgettingSchedule::adaptive_memory() for output_error, the
   /// paper's schedule (0.98 for 200 samples, then 1) for equation_error and paper.
   std::optional<ForgettingSchedule> forgetting;
-  /// P(0) = p0 I. Unset, the method's default: 10 for output_error (its regressor is a gradient of the
-  /// simulated output, and larger first steps destabilise the simulation it is taken along), the
-  /// paper's 1e6 for equation_error and paper (linear regressions: P(0) large says "no prior").
+  /// P(0) = p0 I, in the recursion's coordinates (normalised ones unless `normalise` is false or the
+  /// method is the paper's: EstimatorOptions::normalise). Unset, the method's default: 10 for
+  /// output_error (its regressor is a gradient of the simulated output, and larger first steps
+  /// destabilise the simulation it is taken along), the paper's 1e6 for equation_error and paper
+  /// (linear regressions: P(0) large says "no prior").
   std::optional<double> p0;
   /// Method::EquationError only: the internal variables are computed from a copy of theta refreshed
   /// every `internal_refresh` samples, not from the running estimate (see Estimator::update).
@@ -61,6 +65,18 @@ struct EstimatorOptions {
   /// Levenberg-Marquardt over windows of recent samples, in slices beside the recursion, whose
   /// estimate it replaces where it simulates newer data better (estimator/window_refinement.hpp).
   WindowRefinementOptions window;
+
+  /// Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the
+  /// same on volts, milliamperes, bar or pascals (estimator/normalisation.hpp). The estimator: the
+  /// RMS of u - u0 and y - y0 (with integrators, of y's differences) is measured over the first
+  /// Estimator::kScaleSamples samples from the first whose input moves (updates return
+  /// NoInformation meanwhile); then the recursion runs over them from rest, two samples per update
+  /// until it has caught up, in coordinates where every parameter is of order one for data of that
+  /// scale, and the results come back in the data's units. identify(): where it
+  /// refines, on the data divided by the power of two nearest each signal's RMS over all records,
+  /// the model returned in the data's units (rescaled()). Method::Paper is the paper's algorithm as
+  /// written, in the data's units: it is never normalised.
+  bool normalise = true;
 
   /// The forgetting schedule, p0 and trace ceiling in force: the ones set, or the method's defaults.
   /// \return the forgetting schedule
@@ -140,7 +156,9 @@ struct is_model<M,
 /// The online estimator of a model's parameters, one sample per update() (the paper's recursive
 /// identification, section 4, and the output-error method): Model is one of the models (the
 /// concept's members are checked at compile time), the per-sample update allocation-free and
-/// noexcept, with numerical safeguards (docs/reference/numerical_safeguards.md).
+/// noexcept, with numerical safeguards (docs/reference/numerical_safeguards.md). By default it works
+/// in the data's own scale (EstimatorOptions::normalise) and refines its estimate over windows of
+/// recent samples from two starts (EstimatorOptions::window).
 template <class Model>
 class Estimator {
   static_assert(
@@ -157,16 +175,21 @@ class Estimator {
 
   /// `structure` gives the orders; `settings` are the model's own (P-H-W: c0 and backlash_hold). The
   /// estimate starts from zero for the output-error method and from the model's initial_estimate
-  /// (P-H-W: c = c0) for the equation-error and paper methods.
+  /// (P-H-W: c = c0, a fraction of the output's scale where normalised) for the equation-error and
+  /// paper methods. Allocates here (the window's buffers, the equation-error recursion beside), never
+  /// in update().
   /// \param structure the model whose orders (and knots, thresholds) are estimated; its parameters are not used
   /// \param options the method, forgetting, P(0) and safeguards; checked here (std::invalid_argument)
   /// \param settings the model's own estimator settings; checked here (std::invalid_argument)
   explicit Estimator(const Model& structure, const EstimatorOptions& options = {}, const Settings& settings = {})
       : m_model(validated(structure, options, settings)), m_terms(structure, key_term_method(options.method)),
         m_outputs(detail::output_error_terms(structure, settings)),
-        m_rls(structure.num_params(), Scalar(options.resolved_p0())),
-        m_theta_internal(Params::Zero(structure.num_params())), m_step(m_theta_internal), m_options(options),
-        m_settings(settings), m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()) {
+        m_rls(structure.num_params(), Scalar(options.resolved_p0())), m_theta(Params::Zero(structure.num_params())),
+        m_theta_internal(m_theta), m_step(m_theta), m_phi(m_theta), m_parameter_scale(Params::Ones(m_theta.size())),
+        m_regressor_scale(m_parameter_scale), m_inverse_parameter_scale(m_parameter_scale), m_options(options),
+        m_settings(settings), m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()),
+        m_units(structure), m_measurement(kScaleSamples, structure.ni()),
+        m_normalised(options.normalise && options.method != Method::Paper) {
     m_u0 = static_cast<Scalar>(structure.u0());
     m_y0 = static_cast<Scalar>(structure.y0());
     if (options.method == Method::OutputError) {
@@ -174,28 +197,42 @@ class Estimator {
       if (options.window.enabled) {
         // The window keeps to a forgetting the caller chose, not to the adaptive memory's.
         m_window.emplace(structure, options.window, settings, options.stability_radius, m_p0, !m_forgetting.adaptive());
+        if (options.window.equation_error_start) {
+          // identify()'s second start: an equation-error recursion beside, with the caller's
+          // forgetting (else its method's) and its method's other defaults, and a second window
+          // that starts from its estimate.
+          EstimatorOptions second;
+          second.method = Method::EquationError;
+          second.forgetting = options.forgetting;
+          second.normalise = options.normalise;
+          second.window.enabled = false;
+          m_equation_error.emplace(structure, second, settings);
+          m_second_window.emplace(structure, options.window, settings, options.stability_radius, m_p0,
+                                  !m_forgetting.adaptive());
+        }
       }
     }
     reset();
   }
 
-  /// Everything back to the start: initial theta, P = p0 I, internals at rest.
+  /// Everything back to the start: initial theta, P = p0 I, internals at rest; where normalised, the
+  /// data's scale measured anew.
   void reset() {
-    m_rls.reset(m_options.method == Method::OutputError ? Params::Zero(m_rls.size())
-                                                        : detail::initial_estimate(m_model, m_settings),
-                Scalar(m_p0));
-    start_pass();
-    clear_history();
+    restart_from(m_options.method == Method::OutputError ? Params::Zero(m_rls.size())
+                                                         : detail::initial_estimate(m_model, m_settings));
+    m_default_start = true;
+    if (m_equation_error) m_equation_error->reset();
   }
 
   /// Restarts from a given estimate (a warm start, e.g. a previously identified model's theta):
-  /// P = p0 I, internals at rest.
+  /// P = p0 I, internals at rest; where normalised, the data's scale measured anew, the estimate
+  /// held at theta0 meanwhile.
   /// \param theta0 the estimate to start from, num_params() finite values in the model's parameter order
   template <typename T>
   void reset(const Eigen::MatrixBase<T>& theta0) {
-    m_rls.reset(theta0, Scalar(m_p0));
-    start_pass();
-    clear_history();
+    restart_from(theta0);
+    m_default_start = false;
+    if (m_equation_error) m_equation_error->reset(theta0);
   }
 
   /// Leaves the diverged state: P = p0 I, theta kept (the standard covariance reset); the internal
@@ -251,23 +288,80 @@ class Estimator {
   /// A new pass over a record (the paper's step 5, "return to step 2"): theta and P carry on from
   /// where the last pass ended; the forgetting schedule and the internal variables restart from rest.
   /// (Resetting P instead made each pass a fresh start from a 100-sample estimate; for P-H-W that
-  /// diverged over passes.)
+  /// diverged over passes.) The samples of the last record the recursion has yet to take are taken
+  /// first (catch_up()).
   void start_pass() {
+    catch_up();
     restart_internals();
     m_sample = 0;
+    if (m_equation_error) m_equation_error->start_pass();
   }
 
+  /// Takes now what the recursion has yet to: a scale measurement under way ends with the samples
+  /// measured so far, and every sample kept is processed (update() does it two samples per update).
+  /// For a record's end offline; start_pass() calls it. Never throws; does not allocate.
+  void catch_up() noexcept {
+    if (m_measuring) start_recursion();
+    while (m_measurement.pending() > 0) take_pending();
+    if (m_equation_error) m_equation_error->catch_up();
+  }
+
+  /// Whether the estimator is still measuring the data's scale (EstimatorOptions::normalise): its
+  /// updates return NoInformation and the estimate stays where it started.
+  /// \return true until kScaleSamples samples have been measured from the first moving input
+  bool measuring_scale() const noexcept { return m_measuring; }
+  /// The samples the recursion has yet to take: kept while the scale was measured, taken two per
+  /// update after it; theta() lags the data by them.
+  /// \return the count, 0 once caught up (and always where not normalised)
+  Eigen::Index pending_samples() const noexcept { return m_measurement.pending(); }
+  /// The data's scale the recursion works in: the RMS of u - u0 and of y - y0 (with integrators, of
+  /// its differences) over the samples measured; 1 and 1 where not normalised or still measuring.
+  /// \return the input's and the output's scale
+  detail::DataScale data_scale() const noexcept { return m_scale; }
+
+  /// The samples, from the first whose input moves, that the data's scale is measured over before
+  /// the recursion starts (EstimatorOptions::normalise). Why 100: a few level changes of a typical
+  /// identification input and the output's response to them; the scale needs to be right to a
+  /// factor of a few, not more, and the recursion lags the data by as many samples for as many
+  /// updates after.
+  static constexpr Eigen::Index kScaleSamples = 100;
+
   /// One sample. Never throws and, for fixed sizes, never allocates. A non-finite u or y is
-  /// rejected and leaves the state untouched.
+  /// rejected and leaves the state untouched. Where normalised, the first samples are kept until
+  /// the data's scale is measured and then taken two per update (measuring_scale(),
+  /// pending_samples()): what the update returns is then about the last sample it took.
   /// \param u the input u(k), the command that drove the sample
   /// \param y the measured output y(k)
   /// \return what the update did with the sample (Updated, NoInformation, RejectedNonFinite,
   /// NumericalFailure)
   UpdateStatus update(Scalar u, Scalar y) noexcept {
     if (!std::isfinite(u) || !std::isfinite(y)) return UpdateStatus::RejectedNonFinite;
+    if (m_equation_error) m_equation_error->update(u, y);
     // The model's blocks see the deviations from its operating point (0, 0 unless set).
     u -= m_u0;
     y -= m_y0;
+    if (m_measuring) {
+      m_measurement.push(u, y);
+      if (!m_measurement.complete()) return UpdateStatus::NoInformation;
+      start_recursion();
+      return take_pending();
+    }
+    if (m_measurement.pending() == 0) return process(u, y);
+    // Catching up on the samples kept while measuring: this one behind them, two taken per update.
+    m_measurement.queue(u, y);
+    // The second one's window slice is skipped (its samples are pushed): an update does one slice's
+    // work, as it does when caught up.
+    const UpdateStatus status = take_pending();
+    if (m_measurement.pending() == 0) return status;
+    m_skip_window_slice = true;
+    const UpdateStatus second = take_pending();
+    m_skip_window_slice = false;
+    return second;
+  }
+
+ private:
+  /// One sample (deviations from the operating point) through the recursion.
+  UpdateStatus process(Scalar u, Scalar y) noexcept {
     const Method method = m_options.method;
     if (method == Method::OutputError) return update_output_error(u, y);
     // Paper: internal variables from the running estimate, as eqs. (24)-(27) write it. Default: from
@@ -277,15 +371,21 @@ class Estimator {
     // truth within 50 samples). With the copy, each block is a linear least-squares problem.
     // The paper's method stores the previous sample's internal variables a posteriori with this
     // theta, the estimate after the previous update (eq. 24).
-    const Params& theta = method == Method::Paper ? m_rls.theta() : m_theta_internal;
+    const Params& theta = method == Method::Paper ? m_theta : m_theta_internal;
     const auto regression = m_terms.step(theta, u, y);
     if (!std::isfinite(regression.internal)) return internal_divergence(regression.internal);
     m_prediction = regression.prediction;
     UpdateStatus status = UpdateStatus::NoInformation;
     if (regression.informative) {
-      if (m_rls.update(regression.regressor, regression.target, forgetting_factor(y, y - m_prediction), m_max_trace)) {
+      m_phi = regression.regressor.cwiseProduct(m_regressor_scale);
+      if (m_rls.update(m_phi, regression.target * m_inverse_output_scale, forgetting_factor(y, y - m_prediction),
+                       m_max_trace)) {
+        m_theta = m_rls.theta().cwiseProduct(m_parameter_scale);
         // The paper's algorithm lets c go negative (it simulates as c = 0); the others keep theta valid.
-        if (method != Method::Paper) m_model.constrain(m_rls.mutable_theta());
+        if (method != Method::Paper) {
+          m_model.constrain(m_theta);
+          store_theta();
+        }
         status = UpdateStatus::Updated;
         m_health.consecutive_failures = 0;
         if (m_rls.forgetting_limited()) ++m_health.forgetting_limited;
@@ -294,12 +394,35 @@ class Estimator {
       }
     }
     if (method != Method::Paper && ++m_since_refresh >= m_options.internal_refresh) {
-      m_theta_internal = m_rls.theta();
+      m_theta_internal = m_theta;
       m_since_refresh = 0;
     }
     return finish(status, regression.internal);
   }
 
+  /// The oldest sample kept while measuring, through the recursion.
+  UpdateStatus take_pending() noexcept {
+    Scalar u, y;
+    m_measurement.pop(u, y);
+    return process(u, y);
+  }
+
+  /// The measurement is over (or cut short): the recursion starts in the coordinates of the scale
+  /// measured, from the estimate it was given.
+  void start_recursion() noexcept {
+    m_measuring = false;
+    set_scales(m_measurement.scale());
+    // The method's own start (reset() without an estimate: P-H-W's c0, the Bouc-Wen feedback model's
+    // alpha) is read in the recursion's coordinates, the same part of the data's scale in any units:
+    // P-H-W's c(0) = c0 sy. (Read in the output's units, c0 = 0.01 moved the figures under noise by
+    // 6% between units 1e3 apart on a P-H-W known system.)
+    if (m_default_start) m_theta = m_theta.cwiseProduct(m_parameter_scale);
+    m_rls.reset_covariance(Scalar(m_p0));
+    store_theta();
+    m_theta_internal = m_theta;
+  }
+
+ public:
   /// A record in one call: update(u[k], y[k]) for k = 0, 1, ... in order, and after each
   /// on_sample(k, status), where last_prediction() and theta() are that sample's. The same, bit for
   /// bit, as the loop; no allocation of its own. u and y: vectors of equal length, else
@@ -322,11 +445,22 @@ class Estimator {
   /// (estimator/window_refinement.hpp).
   /// \return num_params() values, valid until the next update or reset
   const Params& theta() const noexcept {
-    return m_window && m_window->has_estimate() ? m_window->estimate() : m_rls.theta();
+    if (m_window && m_window->has_estimate()) return m_window->estimate();
+    return m_second_window && m_second_window->has_estimate() ? m_second_window->estimate() : m_theta;
   }
-  /// The current covariance P of the recursion (exactly symmetric), also where theta() is the window's
+  /// The current covariance P of the recursion (exactly symmetric), also where theta() is the window's,
+  /// in the data's units: the P of the recursion on the data as they are (normalised, D P_n D / sy^2,
+  /// with theta = D theta_n).
   /// \return a copy of P, num_params() x num_params()
-  Covariance covariance() const { return m_rls.covariance(); }
+  Covariance covariance() const {
+    Covariance P = m_rls.covariance();
+    return (P.array() * (m_regressor_scale * m_regressor_scale.transpose()).array()).matrix();
+  }
+  /// The recursion's own P, in its normalised coordinates (theta = d .* theta_n, estimator/normalisation.hpp):
+  /// what the trace ceiling bounds and the safeguards keep positive definite; covariance() where not
+  /// normalised.
+  /// \return a copy of P_n, num_params() x num_params()
+  Covariance normalised_covariance() const { return m_rls.covariance(); }
   /// The current estimate as a model, projected onto the model's valid set (the paper method's
   /// P-H-W estimate can have c < 0, which simulates as c = 0).
   /// \return a copy of the structure with the projected estimate
@@ -375,6 +509,19 @@ class Estimator {
     return structure;
   }
 
+  /// reset(theta0) but for the equation-error recursion beside.
+  template <typename T>
+  void restart_from(const Eigen::MatrixBase<T>& theta0) {
+    m_rls.reset(theta0, Scalar(m_p0));  // checks theta0
+    m_theta = theta0;
+    m_measuring = false;
+    m_measurement.reset();
+    set_scales(detail::DataScale{});
+    start_pass();
+    clear_history();
+    m_measuring = m_normalised;
+  }
+
   void clear_history() {
     m_health = EstimatorHealth{};
     m_max_trace = Scalar(m_options.resolved_trace_ceiling() * m_p0 * double(m_rls.size()));
@@ -382,7 +529,8 @@ class Estimator {
     m_recorded = 0;
     m_total_samples = 0;
     m_prediction = Scalar(0);
-    if (m_window) m_window->reset(m_rls.theta(), m_outputs);
+    if (m_window) m_window->reset(m_theta, m_outputs);
+    if (m_second_window) m_second_window->reset(m_theta, m_outputs);
   }
 
   void restart_internals() noexcept {
@@ -391,16 +539,17 @@ class Estimator {
     m_memory.reset(m_forgetting);
     m_error_scale = Scalar(0);
     m_last_outlier = false;
-    m_theta_internal = m_rls.theta();
+    m_theta_internal = m_theta;
     m_since_refresh = 0;
-    if (m_window) m_window->restart(m_rls.theta(), m_outputs);
+    if (m_window) m_window->restart(m_theta, m_outputs);
+    if (m_second_window) m_second_window->restart(m_theta, m_outputs);
   }
 
   /// recover() without clearing diverged(). The data histories are kept: they are fine unless
   /// non-finite, which update() handles itself. Cannot throw: p0 was validated, P keeps its size.
   void reset_covariance() noexcept {
     m_rls.reset_covariance(Scalar(m_p0));
-    m_theta_internal = m_rls.theta();
+    m_theta_internal = m_theta;
     m_since_refresh = 0;
     m_health.consecutive_failures = 0;
   }
@@ -414,12 +563,27 @@ class Estimator {
     return Scalar(m_forgetting.at(m_sample));
   }
 
+  /// The recursion's coordinates for data of the given scale: theta = d theta_n, phi_n = phi d / sy,
+  /// e_n = e / sy (estimator/normalisation.hpp).
+  void set_scales(detail::DataScale scale) noexcept {
+    m_scale = scale;
+    m_units.scales(scale, m_parameter_scale);
+    m_inverse_parameter_scale = m_parameter_scale.cwiseInverse();
+    m_inverse_output_scale = Scalar(1.0 / scale.y);
+    m_regressor_scale = m_parameter_scale * m_inverse_output_scale;
+    if (m_window) m_window->set_scales(m_parameter_scale, m_inverse_output_scale);
+    if (m_second_window) m_second_window->set_scales(m_parameter_scale, m_inverse_output_scale);
+  }
+
+  /// theta_n = theta / d: the recursion's estimate from m_theta after a projection.
+  void store_theta() noexcept { m_rls.mutable_theta() = m_theta.cwiseProduct(m_inverse_parameter_scale); }
+
   /// Method::OutputError (docs/explanation/algorithm.md): simulate the model one step with the current estimate,
   /// take one Gauss-Newton step on the simulation error with the output's sensitivities as the
   /// regressor, keep the estimate valid (c >= 0, the linear block stable), then store the step and
   /// move the stored simulation to first order along the change of the estimate.
   UpdateStatus update_output_error(Scalar u, Scalar y) noexcept {
-    const auto simulated = m_outputs.step(m_rls.theta(), u);
+    const auto simulated = m_outputs.step(m_theta, u);
     const Scalar prediction = simulated.output;
     if (!std::isfinite(prediction)) return internal_divergence(prediction);
     m_prediction = prediction;
@@ -439,13 +603,15 @@ class Estimator {
     m_last_outlier = outlier;
     m_error_scale = m_error_scale > Scalar(0) ? m_error_scale + (std::abs(error) - m_error_scale) * Scalar(kErrorRate)
                                               : std::abs(error);
-    m_step = m_rls.theta();
+    m_step = m_theta;
     UpdateStatus status = UpdateStatus::Updated;
-    if (m_rls.update_with_error(simulated.sensitivity, used, lambda, m_max_trace)) {
-      Params& theta = m_rls.mutable_theta();
-      m_model.constrain(theta);
-      m_step = theta - m_step;  // the step taken; theta = previous + m_step from here on
-      if (!m_outputs.stable(theta, Scalar(m_options.stability_radius))) shorten_step(theta);
+    m_phi = simulated.sensitivity.cwiseProduct(m_regressor_scale);
+    if (m_rls.update_with_error(m_phi, used * m_inverse_output_scale, lambda, m_max_trace)) {
+      m_theta = m_rls.theta().cwiseProduct(m_parameter_scale);
+      m_model.constrain(m_theta);
+      m_step = m_theta - m_step;  // the step taken; theta = previous + m_step from here on
+      if (!m_outputs.stable(m_theta, Scalar(m_options.stability_radius))) shorten_step(m_theta);
+      store_theta();
       m_health.consecutive_failures = 0;
       if (m_rls.forgetting_limited()) ++m_health.forgetting_limited;
     } else {
@@ -467,17 +633,28 @@ class Estimator {
   /// The window refinement's slice for this sample, and its swap where it has one: its estimate,
   /// covariance (within the trace ceiling) and free run replace the recursion's.
   void refine_window(Scalar u, Scalar y, Scalar error, Scalar lambda) noexcept {
-    m_window->push(u, y, error);
     const double memory =
         lambda < Scalar(1) ? 1.0 / (1.0 - static_cast<double>(lambda)) : std::numeric_limits<double>::infinity();
-    if (m_window->advance(m_rls.theta(), m_outputs, memory)) {
-      const auto& covariance = m_window->covariance();
-      const Scalar trace = covariance.trace();
-      const Scalar factor = trace > m_max_trace ? m_max_trace / trace : Scalar(1);
-      m_rls.assign(m_window->theta(), factor * covariance);
-      m_outputs = m_window->run();
-    }
+    m_window->push(u, y, error);
+    if (m_second_window) m_second_window->push(u, y, error);
+    if (m_skip_window_slice) return;
+    if (m_window->advance(m_theta, m_outputs, memory)) adopt(*m_window);
     m_health.window = m_window->counts();
+    if (m_second_window) {
+      if (m_second_window->advance(m_theta, m_outputs, memory, &m_equation_error->theta())) adopt(*m_second_window);
+      m_health.window += m_second_window->counts();
+    }
+  }
+
+  /// A window's swap: its estimate, covariance (within the trace ceiling) and free run replace the
+  /// recursion's.
+  void adopt(const WindowRefinement<Model>& window) noexcept {
+    const auto& covariance = window.covariance();  // in the recursion's coordinates
+    const Scalar trace = covariance.trace();
+    const Scalar factor = trace > m_max_trace ? m_max_trace / trace : Scalar(1);
+    m_theta = window.theta();
+    m_rls.assign(m_theta.cwiseProduct(m_inverse_parameter_scale), factor * covariance);
+    m_outputs = window.run();
   }
 
   /// theta = previous + m_step left the stability region: halve the step until it is back inside
@@ -549,13 +726,30 @@ class Estimator {
   typename Model::KeyTerms m_terms;                 // equation_error and paper
   typename Model::OutputErrorTerms m_outputs;       // output_error
   std::optional<WindowRefinement<Model>> m_window;  // output_error, unless options.window.enabled is false
+  // With the window, unless options.window.equation_error_start is false: the equation-error
+  // recursion beside and the window that starts from its estimate.
+  detail::Indirect<Estimator> m_equation_error;
+  std::optional<WindowRefinement<Model>> m_second_window;
   Rls<Scalar, Model::kNumParams> m_rls;
+  Params m_theta;           // the estimate in the data's units; the recursion's is m_theta / m_parameter_scale
   Params m_theta_internal;  // equation_error: the copy of theta the internal variables use
   Params m_step;            // output_error: the change of theta in the current update
+  Params m_phi;             // the regressor in the recursion's coordinates
+  // Normalisation (estimator/normalisation.hpp): theta = m_parameter_scale .* theta_n, phi_n =
+  // m_regressor_scale .* phi, e_n = e * m_inverse_output_scale; all 1 where not normalised.
+  Params m_parameter_scale, m_regressor_scale, m_inverse_parameter_scale;
+  Scalar m_inverse_output_scale = Scalar(1);
   EstimatorOptions m_options;
   Settings m_settings;
   ForgettingSchedule m_forgetting;  // resolved from the options
   double m_p0;                      // resolved from the options
+  detail::ParameterUnitPowers<Model> m_units;
+  detail::ScaleMeasurement<Scalar> m_measurement;
+  detail::DataScale m_scale;
+  bool m_normalised;                 // options.normalise, for a method it applies to
+  bool m_measuring = false;          // the data's scale is being measured: samples kept, no updates
+  bool m_skip_window_slice = false;  // catching up: this sample's window slices are skipped
+  bool m_default_start = true;       // reset() without an estimate: the method's start
   detail::AdaptiveMemory m_memory;
   Scalar m_error_scale = Scalar(0);  // output_error: running mean absolute prediction error (0: none yet)
   bool m_last_outlier = false;       // output_error: the last sample's error was bounded

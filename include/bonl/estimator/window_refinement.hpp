@@ -39,10 +39,12 @@
 // Every phase advances by at most `work_per_sample` model steps per update; a solve is an update's
 // slice of its own.
 //
-// Off by default: on the known systems it brings the online error under noise and the tracking of a
-// change closer to identify()'s than the recursion alone, but it costs several times the recursion's
-// update, and it is still short of the online targets on some of them (under AR(1) noise, and
-// noise-free on the multi-sine); docs/explanation/algorithm.md has the table.
+// The window works in the recursion's normalised coordinates (set_scales, estimator/normalisation.hpp):
+// its Jacobian, errors, steps, damping and covariance are the same in any units of the data.
+// The estimator runs two by default: one starting from the output-error recursion's estimate and one
+// from an equation-error recursion's beside it (advance()'s `start`), as identify() refines from both
+// (the criterion is not convex). On by default; docs/explanation/algorithm.md has the known systems'
+// figures with and without it.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -53,6 +55,7 @@
 #include <vector>
 
 #include "../detail/damping.hpp"
+#include "../detail/normal_equations.hpp"
 #include "../detail/validate.hpp"
 #include "../models/estimator_settings.hpp"
 
@@ -61,10 +64,9 @@ namespace bonl {
 /// The output-error estimator's window refinement (estimator/window_refinement.hpp), chosen at
 /// construction; EstimatorOptions::window.
 struct WindowRefinementOptions {
-  /// Off by default: it costs several times the recursion's update, and it is still short of the
-  /// online targets on some known systems (docs/explanation/algorithm.md). Used by the output-error
-  /// method only.
-  bool enabled = false;
+  /// On by default (docs/explanation/algorithm.md has the known systems' figures with and without
+  /// it). Used by the output-error method only.
+  bool enabled = true;
   /// The most samples the refinement fits at once (>= 100): its memory. Under a forgetting factor
   /// the caller chose (a Steps schedule) it is 2 / (1 - lambda) where that is shorter. The ring buffer
   /// holds twice as many.
@@ -72,6 +74,11 @@ struct WindowRefinementOptions {
   /// Model steps of the refinement per update (>= 2): the bound on one update's extra work. One
   /// iteration over a window of N samples takes N / work_per_sample updates.
   Eigen::Index work_per_sample = 8;
+  /// A second window beside, started from an equation-error recursion's estimate instead of the
+  /// output-error recursion's: identify()'s two starts (the criterion is not convex, and from the
+  /// output-error recursion alone the window settled in a wrong minimum on some records). Doubles
+  /// the window's work and adds the equation-error update.
+  bool equation_error_start = true;
 
   /// Throws std::invalid_argument for a setting out of range.
   void validate() const {
@@ -94,6 +101,20 @@ struct WindowRefinementCounts {
                              ///< better and the window worse (a change)
   Eigen::Index overruns =
       0;  ///< restarts because the slices fell behind the ring buffer or a run left the finite numbers
+
+  /// Both windows' counts together (the estimator's second window, EstimatorOptions::window).
+  /// \param other the counts to add
+  /// \return this, the sums
+  WindowRefinementCounts& operator+=(const WindowRefinementCounts& other) noexcept {
+    iterations += other.iterations;
+    refused_steps += other.refused_steps;
+    swaps += other.swaps;
+    refusals += other.refusals;
+    undetermined += other.undetermined;
+    reseeds += other.reseeds;
+    overruns += other.overruns;
+    return *this;
+  }
 };
 
 /// The window refinement for one Model's output-error estimator. push() each sample (deviations from
@@ -141,6 +162,8 @@ class WindowRefinement {
     m_gradient = m_theta;
     m_trial_gradient = m_theta;
     m_scale = m_theta;
+    m_parameter_scale = Params::Ones(n);
+    m_regressor_scale = m_parameter_scale;
     m_normal = Matrix::Zero(n, n);
     m_trial_normal = m_normal;
     m_recent_normal = m_normal;
@@ -149,6 +172,21 @@ class WindowRefinement {
     m_ldlt.compute(Matrix::Identity(n, n));  // sizes its storage once
     m_rows.resize(kBlock, n);
     m_errors.resize(kBlock);
+  }
+
+  /// The estimator's coordinates (estimator/normalisation.hpp): the window's Jacobian, errors,
+  /// steps and covariance are the recursion's, theta = parameter_scale .* theta_n and errors times
+  /// inverse_output_scale, so that its damping and its tests mean the same in any units. Set before
+  /// samples are scored (the samples pushed are kept in the data's units).
+  /// \param parameter_scale d, num_params() positive values
+  /// \param inverse_output_scale 1 / sy
+  void set_scales(const Params& parameter_scale, Scalar inverse_output_scale) noexcept {
+    m_parameter_scale = parameter_scale;
+    m_inverse_output_scale = inverse_output_scale;
+    m_regressor_scale = parameter_scale * inverse_output_scale;
+    // The recursion starts estimating now: its estimate is a start worth refining once it has had
+    // as many samples as a window's first pass needs (the samples it waited for are in the window).
+    m_first_pass = m_count + m_minimum;
   }
 
   /// Starts over after the sample in hand: the window begins with the next sample, from the run
@@ -166,6 +204,7 @@ class WindowRefinement {
     m_reseed_pass = false;
     m_clearly_worse = 0;
     m_has_estimate = false;
+    m_idle = false;
     m_damping = kInitialDamping;
     m_phase = Phase::Collect;
   }
@@ -180,7 +219,7 @@ class WindowRefinement {
   }
 
   /// One sample: u and y as the model's blocks see them (deviations from the operating point), and
-  /// the recursion's a-priori prediction error of y.
+  /// the recursion's a-priori prediction error of y, all in the data's units.
   /// \param u the input's deviation u(k) - u0
   /// \param y the output's deviation y(k) - y0
   /// \param recursion_error the recursion's a-priori error of y(k)
@@ -197,9 +236,25 @@ class WindowRefinement {
   /// \param run the recursion's run after this sample
   /// \param memory the recursion's forgetting's memory in samples, 1 / (1 - lambda) (infinity without
   /// forgetting)
+  /// \param start the estimate a first pass and a re-seeded pass start from; null: the recursion's
+  /// (the estimator's second window starts from its equation-error recursion's)
   /// \return true when a refined estimate is to be swapped in: theta(), covariance() and run() hold it
-  bool advance(const Params& recursion, const Run& run, double memory) noexcept {
+  bool advance(const Params& recursion, const Run& run, double memory, const Params* start = nullptr) noexcept {
     m_memory = memory;
+    m_start_estimate = start ? start : &recursion;
+    if (!m_follow_memory && memory > static_cast<double>(m_options.length)) {
+      // The adaptive memory keeps more samples than a window may hold: the recursion's estimate is
+      // then the better informed one, and swapped or reported, the window's would cap it at
+      // `length` samples' worth (measured: under 2% noise the error at 16000 samples was above the
+      // one at 4000). The window idles until the memory is cut back (a change), then starts afresh.
+      m_idle = true;
+      m_has_estimate = false;
+      return false;
+    }
+    if (m_idle) {
+      restart(recursion, run);
+      return false;
+    }
     if (m_count - m_start > m_capacity) {  // the window's first samples are being overwritten
       ++m_counts.overruns;
       restart(recursion, run);
@@ -209,8 +264,8 @@ class WindowRefinement {
     while (budget > 0) {
       switch (m_phase) {
         case Phase::Collect:
-          if (m_count - m_start < m_minimum) return false;
-          m_trial_theta = recursion;  // the first pass: the recursion's estimate, kept whatever it scores
+          if (m_count - m_start < m_minimum || m_count < m_first_pass) return false;
+          m_trial_theta = *m_start_estimate;  // the first pass: the start, kept whatever it scores
           begin_pass(recursion, run);
           break;
         case Phase::Pass:
@@ -275,6 +330,10 @@ class WindowRefinement {
   /// 1e-7 to 1e-2), and refusing them moved no figure; on the soak's constant and zero inputs they
   /// are zero or negative, rounding's.
   static constexpr double kRankTolerance = 1e-10;
+  /// The least information a window's data give per sample for it to say anything (informative()): in
+  /// the normalised coordinates an exciting input gives each parameter a sensitivity of order 1, its
+  /// J'J diagonal of order 1 per sample; 1e-6 is sensitivities of 1e-3 of that.
+  static constexpr double kMinimumInformation = 1e-6;
   /// The smallest pivot of the swapped information matrix, relative to its largest: below it the
   /// inverse's smallest eigenvalues are rounding's.
   static constexpr double kPositiveTolerance = 1e-13;
@@ -334,8 +393,8 @@ class WindowRefinement {
       }
       const auto index = slot(m_position);
       const auto step = m_trial.step(m_trial_theta, m_u[index]);
-      const Scalar error = m_y[index] - step.output;
-      m_rows.row(m_filled) = step.sensitivity.transpose();
+      const Scalar error = (m_y[index] - step.output) * m_inverse_output_scale;
+      m_rows.row(m_filled) = step.sensitivity.cwiseProduct(m_regressor_scale).transpose();
       m_errors[m_filled] = error;
       if (++m_filled == kBlock) flush_rows(m_trial_normal, m_trial_gradient);
       m_trial.accept();
@@ -346,14 +405,11 @@ class WindowRefinement {
     return std::max<Eigen::Index>(samples, 1);
   }
 
-  /// J'J and J'e gathered a block of rows at a time: a matrix product instead of a rank-one update
-  /// per sample (about three times faster at the paper's 14 parameters).
+  /// J'J and J'e gathered a block of rows at a time (detail::add_rows).
   /// \param normal the J'J (lower triangle) the rows are added to
   /// \param gradient the J'e they are added to
   void flush_rows(Matrix& normal, Params& gradient) noexcept {
-    const auto rows = m_rows.topRows(m_filled);
-    normal.template selfadjointView<Eigen::Lower>().rankUpdate(rows.transpose());
-    gradient.noalias() += rows.transpose() * m_errors.head(m_filled);
+    detail::add_rows(normal, gradient, m_rows.topRows(m_filled), m_errors.head(m_filled));
     m_filled = 0;
   }
 
@@ -421,14 +477,14 @@ class WindowRefinement {
     for (Eigen::Index i = 0; i < samples; ++i, ++m_position) {
       const auto index = slot(m_position);
       const auto step = m_catch_up.step(m_theta, m_u[index]);
-      const Scalar error = m_y[index] - step.output;
-      m_rows.row(m_filled) = step.sensitivity.transpose();
+      const Scalar error = (m_y[index] - step.output) * m_inverse_output_scale;
+      m_rows.row(m_filled) = step.sensitivity.cwiseProduct(m_regressor_scale).transpose();
       m_errors[m_filled] = error;
       if (++m_filled == kBlock) flush_rows(m_recent_normal, m_recent_gradient);
       m_catch_up.accept();
       if (m_position < scored_from) continue;
       m_sse_recent += squared(error);
-      m_sse_recent_recursion += squared(m_e[index]);
+      m_sse_recent_recursion += squared(m_e[index] * m_inverse_output_scale);
       ++m_scored;
     }
     if (m_position == m_count - m_start) flush_rows(m_recent_normal, m_recent_gradient);
@@ -463,7 +519,7 @@ class WindowRefinement {
     if (!m_follow_memory && m_clearly_worse >= kConfirmations) {
       m_clearly_worse = 0;
       m_reseed_pass = true;
-      m_trial_theta = recursion;
+      m_trial_theta = *m_start_estimate;
       begin_pass(recursion, run);
       return false;
     }
@@ -490,29 +546,41 @@ class WindowRefinement {
     m_system.diagonal() += Scalar(m_damping) * m_scale;
     m_ldlt.compute(m_system);
     m_delta = m_ldlt.solve(m_shift);  // m_delta and m_scale are set afresh by the next solve()
-    m_estimate = m_theta + m_delta;
+    m_estimate = m_theta + m_delta.cwiseProduct(m_parameter_scale);
     m_model.constrain(m_estimate);
     if (!m_estimate.allFinite() || !m_catch_up.stable(m_estimate, m_radius)) m_estimate = m_theta;
   }
 
-  /// Whether the window's J'J has full numerical rank on the parameters its data reach (those with a
-  /// sensitivity that is not exactly zero: a parameter held, like the backlash's c after a start, is
-  /// left out): its pivoted LDLT's smallest pivot above kRankTolerance of its largest. Why: under a
+  /// Whether the window's J'J has full numerical rank: its pivoted LDLT's smallest pivot above
+  /// kRankTolerance of its largest, on data that say anything at all (informative()). Why: under a
   /// constant or zero input the window's data leave directions undetermined (in P-H-W, the gain
   /// between the nonlinearity and the linear block), its estimate wanders along them from pass to
   /// pass, and swapped in, that walk became the recursion's: on the soak |theta| grew to 4e5 and the
   /// swapped covariance lost its positive definiteness. The recursion's own estimate is the better
-  /// one to keep there.
+  /// one to keep there. A parameter the data do not reach at all (a zero pivot) is undetermined too:
+  /// left out of the test, it let a window of zero input, which reaches P-H-W's f_0 alone, swap in
+  /// b_1 = -2804 (bonl_soak, seed 10); the backlash's c, held at 0 for its first 200 samples after a
+  /// start, is reached by every window longer than that.
   bool determines_every_parameter() noexcept {
+    if (!informative()) return false;
     m_ldlt.compute(m_normal);
     const auto pivots = m_ldlt.vectorD();
     const double largest = static_cast<double>(pivots.maxCoeff());
     if (!(largest > 0.0) || !std::isfinite(largest)) return false;
     for (Eigen::Index i = 0; i < pivots.size(); ++i) {
       const double pivot = static_cast<double>(pivots[i]);
-      if (pivot != 0.0 && !(pivot > kRankTolerance * largest)) return false;
+      if (!(pivot > kRankTolerance * largest)) return false;
     }
     return true;
+  }
+
+  /// Whether the window's data say anything at all: the largest diagonal entry of its J'J, in the
+  /// recursion's normalised coordinates, above kMinimumInformation per sample. The relative tests
+  /// (determines_every_parameter, the steps' gain ratio) cannot see a window without information:
+  /// under a zero input the sensitivities decay to 1e-190, steps fitted to that rounding were kept,
+  /// their rank test passed, and one swapped b1 = -2804 into the recursion (bonl_soak, seed 10).
+  bool informative() const noexcept {
+    return static_cast<double>(m_normal.diagonal().maxCoeff()) > kMinimumInformation * static_cast<double>(m_length);
   }
 
   /// The covariance the recursion would hold after the window's samples: the window's information,
@@ -536,6 +604,7 @@ class WindowRefinement {
   /// One damped Gauss-Newton step from the estimate, and the pass of its trial. After kMaxTrials
   /// refused steps in a row the estimate itself is re-scored on the grown window.
   void solve(const Params& recursion, const Run& run) noexcept {
+    if (!informative()) m_trials = kMaxTrials;  // no step on data that say nothing: re-scored as it is
     if (m_trials >= kMaxTrials) {
       // The estimate is taken as converged: the grown window is a new problem, started with the
       // initial damping. Carried on, the damping that refused steps raised (under a constant input,
@@ -553,12 +622,16 @@ class WindowRefinement {
     m_system.diagonal() += Scalar(m_damping) * m_scale;
     m_ldlt.compute(m_system);
     m_delta = m_ldlt.solve(m_gradient);
-    m_trial_theta = m_theta + m_delta;
+    m_trial_theta = m_theta + m_delta.cwiseProduct(m_parameter_scale);
     m_model.constrain(m_trial_theta);
-    m_delta = m_trial_theta - m_theta;
+    m_delta = (m_trial_theta - m_theta).cwiseQuotient(m_parameter_scale);
     if (!m_trial_theta.allFinite() || !m_trial.stable(m_trial_theta, m_radius)) {
+      // A step too long to keep the linear block stable: a shorter one, with more damping, until
+      // one is (the estimate is stable, so a short enough step is). Not a trial that the data
+      // refused: counted toward kMaxTrials, the damping's reset would undo its growth, and from a
+      // poor start every step stayed too long (measured: a window held at the recursion's first
+      // estimate for 4000 samples).
       ++m_counts.refused_steps;
-      ++m_trials;
       m_damping = std::min(m_damping * 4.0, 1e12);
       return;  // solved again in the next update
     }
@@ -572,6 +645,7 @@ class WindowRefinement {
   bool m_follow_memory;  // the window keeps to 2 m_memory samples (set at construction)
   Eigen::Index m_capacity;
   Eigen::Index m_minimum = 100;       // samples in a window before its first pass
+  Eigen::Index m_first_pass = 0;      // and the sample count the first pass waits for (set_scales)
   std::vector<Scalar> m_u, m_y, m_e;  // the ring buffer: inputs, outputs, the recursion's a-priori errors
   Eigen::Index m_count = 0;           // samples pushed since the last reset
   Eigen::Index m_start = 0;           // the window's first sample
@@ -586,10 +660,13 @@ class WindowRefinement {
   Run m_catch_up;    // the estimate's run on to the sample in hand
   Params m_theta;    // the window's estimate
   Params m_start_theta, m_trial_theta, m_half_theta, m_half_trial_theta;
-  Params m_delta, m_shift, m_gradient, m_trial_gradient, m_scale;
-  Matrix m_normal, m_trial_normal;  // J'J at the estimate and at the trial
-  Matrix m_recent_normal;           // J'J over the samples since the window's end, at the estimate
-  Params m_recent_gradient;         // J'e there
+  Params m_delta, m_shift, m_gradient, m_trial_gradient, m_scale;  // m_delta in the recursion's coordinates
+  Params m_parameter_scale, m_regressor_scale;                     // set_scales(); 1 where not normalised
+  Scalar m_inverse_output_scale = Scalar(1);
+  const Params* m_start_estimate = nullptr;  // where passes start from, for the duration of advance()
+  Matrix m_normal, m_trial_normal;           // J'J at the estimate and at the trial
+  Matrix m_recent_normal;                    // J'J over the samples since the window's end, at the estimate
+  Params m_recent_gradient;                  // J'e there
   Eigen::Matrix<Scalar, Eigen::Dynamic, Model::kNumParams, Model::kNumParams == 1 ? Eigen::ColMajor : Eigen::RowMajor>
       m_rows;                                         // Jacobian rows not yet in J'J
   Eigen::Matrix<Scalar, Eigen::Dynamic, 1> m_errors;  // their errors
@@ -608,6 +685,7 @@ class WindowRefinement {
   bool m_reseed_pass = false;            // the pass scores the recursion's estimate on the window
   Params m_estimate;                     // the window's estimate as of its last judgement ...
   bool m_has_estimate = false;           // ... and whether it is the one to report
+  bool m_idle = false;                   // the recursion's memory is longer than the window may be
   int m_clearly_worse = 0;               // judgements in a row the recursion predicted clearly better
   int m_trials = 0;
   Eigen::Index m_scored = 0;  // the samples the swap test scores

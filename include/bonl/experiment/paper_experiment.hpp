@@ -2,9 +2,9 @@
 // The paper's experiment (section 5) on the simulated plant: the records of records.hpp, then
 // every model of PaperModels identified with the paper's orders and settings by both methods
 // (bonl's default, output error, and the paper's), validated by free-run simulation, the online
-// estimate alone (one pass, no refinement) validated the same way, and a robustness check on eight
-// further trajectories. One call, run_paper_experiment, gives all of it in one PaperExperimentResult;
-// bonl_demo and `python -m bonl demo` only format that result.
+// estimate (one pass, the estimator's defaults, no offline refinement) validated the same way, and
+// a robustness check on eight further trajectories. One call, run_paper_experiment, gives all of it
+// in one PaperExperimentResult; bonl_demo and `python -m bonl demo` only format that result.
 
 #include <Eigen/Core>
 #include <array>
@@ -95,7 +95,7 @@ std::vector<std::pair<std::string, double>> labelled_parameters(const Model& mod
 struct ModelScores {
   double mse = 0.0;                    ///< validation MSE of the velocity, free-run [(rad/s)^2]; inf: unstable on it
   Eigen::VectorXd simulated;           ///< the free-run validation velocity [rad/s]; NaN when unstable
-  double online_mse = 0.0;             ///< the same for the recursive estimate alone (one pass, no refinement)
+  double online_mse = 0.0;             ///< the same for the online estimate (one pass, the estimator's defaults)
   std::vector<double> robustness_mse;  ///< validation MSE on each robustness trajectory, in order
   double seconds = 0.0;                ///< wall time of identify() [s]
   double online_seconds = 0.0;         ///< wall time of the one-pass recursive estimate [s]

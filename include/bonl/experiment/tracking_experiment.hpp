@@ -51,8 +51,9 @@ struct TrackingOptions {
   /// is replaced by the experiment's (the valve's command range, the band of backlash_band_per_c).
   control::AdaptiveInverseOptions adaptive = adaptive_defaults();
 
-  /// The output-error estimator (bonl's default method) with a constant forgetting of 0.999 (a
-  /// memory of 10 s), P(0) = 0.01 I around the identified model, the inverse derived every second.
+  /// The output-error estimator (bonl's default method), its recursion alone in the data's units
+  /// (normalise and the window refinement off), with a constant forgetting of 0.999 (a memory of
+  /// 10 s), P(0) = 0.01 I around the identified model, the inverse derived every second.
   /// \return the options
   static control::AdaptiveInverseOptions adaptive_defaults();
   /// Throws std::invalid_argument naming the first bad option.

@@ -2284,11 +2284,11 @@ class WindowRefinementOptions:
     """
     The output-error method's window refinement (Estimator(..., window=...)): Levenberg-Marquardt on the
     free-run error of the newest samples, spread over the updates, its estimate swapped in where it
-    predicts the newest samples better. Off by default (docs/explanation/algorithm.md).
+    predicts the newest samples better. On by default (docs/explanation/algorithm.md).
     """
-    def __init__(self, *, enabled: bool = True, length: typing.SupportsInt | typing.SupportsIndex = 4000, work_per_sample: typing.SupportsInt | typing.SupportsIndex = 8) -> None:
+    def __init__(self, *, enabled: bool = True, length: typing.SupportsInt | typing.SupportsIndex = 4000, work_per_sample: typing.SupportsInt | typing.SupportsIndex = 8, equation_error_start: bool = True) -> None:
         """
-        Window refinement options; ``enabled`` is True here (the estimator's default is off).
+        Window refinement options, the estimator's defaults unless given.
         
         Parameters
         ----------
@@ -2297,7 +2297,10 @@ class WindowRefinementOptions:
         length : int, default 4000
             The most samples it fits at once (>= 100).
         work_per_sample : int, default 8
-            Model steps of the refinement per update (>= 2).
+            Model steps of the refinement per update (>= 2), for each window.
+        equation_error_start : bool, default True
+            A second window beside, started from an equation-error
+            recursion's estimate (identify()'s second start); doubles the refinement's work.
         
         Returns
         -------
@@ -2313,6 +2316,14 @@ class WindowRefinementOptions:
     def enabled(self, arg0: bool) -> None:
         ...
     @property
+    def equation_error_start(self) -> bool:
+        """
+        bool: a second window beside, started from an equation-error recursion's estimate
+        """
+    @equation_error_start.setter
+    def equation_error_start(self, arg0: bool) -> None:
+        ...
+    @property
     def length(self) -> int:
         """
         int: the most samples it fits at once (>= 100)
@@ -2323,7 +2334,7 @@ class WindowRefinementOptions:
     @property
     def work_per_sample(self) -> int:
         """
-        int: model steps of the refinement per update (>= 2)
+        int: model steps of the refinement per update (>= 2), for each window
         """
     @work_per_sample.setter
     def work_per_sample(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
@@ -2443,41 +2454,56 @@ class Estimator:
         output_error: the linear block's poles are kept inside this radius (updates shortened).
     window : WindowRefinementOptions, optional
         output_error: the window refinement, Levenberg-Marquardt on the newest samples spread over the
-        updates (``bonl.WindowRefinementOptions()``); None: off.
+        updates, from the output-error recursion's estimate and from an equation-error recursion's beside.
+        None: the default (on); ``bonl.WindowRefinementOptions(enabled=False)``: the recursion alone.
+    normalise : bool, default True
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
     """
     @typing.overload
-    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: ARX, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: Hammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: HammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: PseudoHammersteinWiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: Wiener, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: WienerHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: NonlinearFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: PrandtlIshlinskiiHammerstein, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     @typing.overload
-    def __init__(self, model: BoucWenFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, model: BoucWenFeedback, *, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, trace_ceiling: typing.SupportsFloat | typing.SupportsIndex | None = None, recover_after: typing.SupportsInt | typing.SupportsIndex = 0, stability_radius: typing.SupportsFloat | typing.SupportsIndex = 0.999, window: WindowRefinementOptions | None = None, normalise: bool = True, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
+    def catch_up(self) -> None:
+        """
+        Take now what the recursion has yet to: a scale measurement under way ends with what it has
+        measured, and every sample kept is processed (at a record's end; start_pass does it too).
+        """
     def recover(self) -> None:
         """
         Leave the diverged state: P = p0 I, theta kept (a covariance reset); the counters in health stay.
@@ -2561,6 +2587,11 @@ class Estimator:
         numpy.ndarray: current P of the recursion (symmetric).
         """
     @property
+    def data_scale(self) -> tuple[float, float]:
+        """
+        tuple[float, float]: the scale of u - u0 and y - y0 the recursion works in (their RMS over the samples measured; (1.0, 1.0) where not normalised or still measuring).
+        """
+    @property
     def diverged(self) -> bool:
         """
         bool: an update was refused for numerical reasons.
@@ -2576,6 +2607,11 @@ class Estimator:
         float: the prediction of the last sample's y, made before the update (y - last_prediction is the innovation); for output_error the simulated output.
         """
     @property
+    def measuring_scale(self) -> bool:
+        """
+        bool: the data's scale is still being measured (normalise=True): updates return no_information and the estimate stays where it started.
+        """
+    @property
     def memory(self) -> float:
         """
         float: the adaptive memory's current length 1 / (1 - lambda) in samples (NaN for a step schedule).
@@ -2584,6 +2620,11 @@ class Estimator:
     def model(self) -> ARX | Hammerstein | HammersteinWiener | PseudoHammersteinWiener | Wiener | WienerHammerstein | NonlinearFeedback | PrandtlIshlinskiiHammerstein | BoucWenFeedback:
         """
         The current estimate as a model.
+        """
+    @property
+    def pending_samples(self) -> int:
+        """
+        int: samples kept while the scale was measured that the recursion has yet to take (two per update); theta lags the data by them.
         """
     @property
     def recording(self) -> bool:
@@ -2782,10 +2823,13 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -2798,7 +2842,8 @@ def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typin
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
@@ -2859,10 +2904,13 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -2875,7 +2923,8 @@ def identify(model: Hammerstein, u: numpy.typing.ArrayLike | None = None, y: num
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
@@ -2936,10 +2985,13 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -2952,7 +3004,8 @@ def identify(model: HammersteinWiener, u: numpy.typing.ArrayLike | None = None, 
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
@@ -3013,10 +3066,13 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -3029,7 +3085,8 @@ def identify(model: PseudoHammersteinWiener, u: numpy.typing.ArrayLike | None = 
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
@@ -3090,10 +3147,13 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -3106,7 +3166,8 @@ def identify(model: Wiener, u: numpy.typing.ArrayLike | None = None, y: numpy.ty
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
@@ -3167,10 +3228,13 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -3183,7 +3247,8 @@ def identify(model: WienerHammerstein, u: numpy.typing.ArrayLike | None = None, 
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
@@ -3244,10 +3309,13 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -3260,7 +3328,8 @@ def identify(model: NonlinearFeedback, u: numpy.typing.ArrayLike | None = None, 
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
@@ -3321,10 +3390,13 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -3337,7 +3409,8 @@ def identify(model: PrandtlIshlinskiiHammerstein, u: numpy.typing.ArrayLike | No
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.
@@ -3398,10 +3471,13 @@ def identify(model: BoucWenFeedback, u: numpy.typing.ArrayLike | None = None, y:
         free-run simulation error with the analytic Jacobian of the simulation and keeps the linear block
         stable.
     normalise : bool, default True
-        Where identify refines, work on u and y divided by the powers of two nearest their RMS and return
-        the model in the data's units, so that the settings mean the same whatever the units. The recursive
-        estimate returned as it is ('paper', refine_iterations=0, ARX least squares) is the online
-        estimator's, in the data's units.
+        Work in the data's own scale, so that p0, the trace ceiling and the window's damping mean the same
+        whatever the units ('paper' never: it is the paper's algorithm in the data's units). Estimator:
+        the RMS of u - u0 and y - y0 is measured over the first 100 samples from the first moving input,
+        then the recursion runs over them and on in coordinates where the parameters are of order one.
+        identify: where it refines, on u and y divided by the powers of two nearest their RMS, the model
+        returned in the data's units; the recursive estimate returned as it is ('paper',
+        refine_iterations=0, ARX least squares) is the online estimator's.
     operating_point : {None, 'mean', 'initial'}, default None
         The identified model's operating point (u0, y0): None keeps the structure's
         (Model.operating_point); 'mean' takes the mean input and output over all records; 'initial' the
@@ -3414,7 +3490,8 @@ def identify(model: BoucWenFeedback, u: numpy.typing.ArrayLike | None = None, y:
         whose position keeps any transient of the start). Shorter than every record.
     c0 : float, optional
         PseudoHammersteinWiener only (another model: ValueError): the initial backlash half-width c(0) of
-        equation_error and paper, in the output's units (output_error starts at 0). Default: 0.01.
+        equation_error and paper, in the output's units, or where the estimator normalises a fraction of
+        the output's scale (output_error starts at 0). Default: 0.01.
     backlash_hold : int, optional
         PseudoHammersteinWiener only (another model: ValueError): output_error holds c at 0 for this many
         samples after each start from rest. Default: 200.

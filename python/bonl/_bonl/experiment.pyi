@@ -430,7 +430,7 @@ def run_paper_experiment(parameters: bonl._bonl.plant.Parameters | None = None, 
     PrandtlIshlinskiiHammerstein, which the paper does not have) identified with the paper's orders
     (na = 3, nb = 2, nk = 8, r = r1 = 3; np = 3 plays, their thresholds spread over the identification
     input's half-range) by the output-error and the paper's methods and validated by free-run
-    simulation; also the online estimates alone (recursive estimator, one pass, no refinement). The
+    simulation; also the online estimates (the estimator with its defaults, one pass, no offline refinement). The
     GIL is released during the computation.
     
     Parameters

@@ -105,11 +105,21 @@ struct Candidate {
   Offset offset = Offset::None;
 };
 
+/// Is the i-th order of Model an optional one (ni) at its default? Such an order is left out of the
+/// candidates' names and the selection's JSON, as the Python example and model files leave it out.
+template <class Model>
+bool at_default(std::size_t i, Eigen::Index value) {
+  const auto& order = Model::kDescription.orders[i];
+  return order.default_value != bonl::OrderDescription::kRequired && value == order.default_value;
+}
+
 template <class Model>
 std::string describe(const Candidate& c) {
   std::string text;
   for (std::size_t i = 0; i < c.orders.size(); ++i) {
-    text += std::string(i == 0 ? "" : " ") + Model::kDescription.orders[i].name + "=" + std::to_string(c.orders[i]);
+    if (at_default<Model>(i, c.orders[i])) continue;
+    text +=
+        std::string(text.empty() ? "" : " ") + Model::kDescription.orders[i].name + "=" + std::to_string(c.orders[i]);
   }
   if (c.offset != Offset::None) text += std::string(", offset ") + to_string(c.offset);
   return text;
@@ -119,8 +129,21 @@ std::string describe(const Candidate& c) {
 /// them, the last fastest, then the offset).
 template <class Model>
 std::vector<Candidate> candidates(const Grid& grid, const std::vector<Offset>& offsets) {
+  // An order the grid does not search (the integrators ni) takes the model's default, as in the
+  // Python example; one without a default must be in the grid.
+  std::vector<std::vector<Eigen::Index>> defaults;
+  defaults.reserve(Model::kDescription.orders.size());  // the pointers below stay valid
   std::vector<const std::vector<Eigen::Index>*> values;
-  for (const auto& order : Model::kDescription.orders) values.push_back(&grid.at(order.name));
+  for (const auto& order : Model::kDescription.orders) {
+    const auto searched = grid.find(order.name);
+    if (searched != grid.end()) {
+      values.push_back(&searched->second);
+    } else if (order.default_value != bonl::OrderDescription::kRequired) {
+      values.push_back(&defaults.emplace_back(1, order.default_value));
+    } else {
+      throw std::invalid_argument(std::string("measured_data: the grid has no values for the order ") + order.name);
+    }
+  }
   std::vector<Candidate> result;
   std::vector<std::size_t> index(values.size(), 0);
   while (true) {
@@ -379,9 +402,13 @@ int main(int argc, char** argv) {
   std::string selection = "{\n";
   std::string markdown;
   std::map<std::string, std::vector<std::string>> order_names;
+  std::map<std::string, std::vector<Eigen::Index>> order_defaults;  // kRequired, or an optional order's default
   bonl::for_each_model(MeasuredModels{}, [&](auto tag) {
     using Model = typename decltype(tag)::type;
     for (const auto& order : Model::kDescription.orders) order_names[Model::kName].push_back(order.name);
+    for (std::size_t i = 0; i < Model::kDescription.orders.size(); ++i) {
+      order_defaults[Model::kName].push_back(Model::kDescription.orders[i].default_value);
+    }
   });
   const std::pair<const char*, const char*> headers[] = {{"actuator", "actuator, samples 513-1024"},
                                                          {"cascaded_tanks", "cascaded tanks, validation record [V]"}};
@@ -393,7 +420,9 @@ int main(int argc, char** argv) {
       const Result& r = results[key][names[m]];
       std::string orders;
       for (std::size_t i = 0; i < r.chosen.orders.size(); ++i) {
-        orders += std::string(i == 0 ? "" : ", ") + "\"" + order_names[names[m]][i] +
+        const Eigen::Index fallback = order_defaults[names[m]][i];
+        if (fallback != bonl::OrderDescription::kRequired && r.chosen.orders[i] == fallback) continue;  // as at_default
+        orders += std::string(orders.empty() ? "" : ", ") + "\"" + order_names[names[m]][i] +
                   "\": " + std::to_string(r.chosen.orders[i]);
       }
       selection += "    \"" + names[m] + "\": {\"orders\": {" + orders + "}, \"offset\": \"" +

@@ -7,7 +7,7 @@
 //   back (models/rescale.hpp), exactly;
 // - the recursive estimator keeps the model in the data's units and runs its recursion in
 //   normalised coordinates theta_n = theta / d, with d the size of each parameter for data of those
-//   scales (its units in the model's description, parameter_scales), the regressor phi d / sy and the
+//   scales (its units in the model's description, ParameterUnitPowers), the regressor phi d / sy and the
 //   error e / sy. That recursion is the one on the data divided by their scales, and it needs no
 //   change of the model's state when the scales are set: they are measured over the first samples
 //   (ScaleMeasurement), which the recursion then catches up on.

@@ -529,8 +529,7 @@ class Estimator {
     m_recorded = 0;
     m_total_samples = 0;
     m_prediction = Scalar(0);
-    if (m_window) m_window->reset(m_theta, m_outputs);
-    if (m_second_window) m_second_window->reset(m_theta, m_outputs);
+    each_window([this](WindowRefinement<Model>& window) { window.reset(m_theta, m_outputs); });
   }
 
   void restart_internals() noexcept {
@@ -541,8 +540,7 @@ class Estimator {
     m_last_outlier = false;
     m_theta_internal = m_theta;
     m_since_refresh = 0;
-    if (m_window) m_window->restart(m_theta, m_outputs);
-    if (m_second_window) m_second_window->restart(m_theta, m_outputs);
+    each_window([this](WindowRefinement<Model>& window) { window.restart(m_theta, m_outputs); });
   }
 
   /// recover() without clearing diverged(). The data histories are kept: they are fine unless
@@ -571,8 +569,8 @@ class Estimator {
     m_inverse_parameter_scale = m_parameter_scale.cwiseInverse();
     m_inverse_output_scale = Scalar(1.0 / scale.y);
     m_regressor_scale = m_parameter_scale * m_inverse_output_scale;
-    if (m_window) m_window->set_scales(m_parameter_scale, m_inverse_output_scale);
-    if (m_second_window) m_second_window->set_scales(m_parameter_scale, m_inverse_output_scale);
+    each_window(
+        [this](WindowRefinement<Model>& window) { window.set_scales(m_parameter_scale, m_inverse_output_scale); });
   }
 
   /// theta_n = theta / d: the recursion's estimate from m_theta after a projection.
@@ -635,8 +633,7 @@ class Estimator {
   void refine_window(Scalar u, Scalar y, Scalar error, Scalar lambda) noexcept {
     const double memory =
         lambda < Scalar(1) ? 1.0 / (1.0 - static_cast<double>(lambda)) : std::numeric_limits<double>::infinity();
-    m_window->push(u, y, error);
-    if (m_second_window) m_second_window->push(u, y, error);
+    each_window([&](WindowRefinement<Model>& window) { window.push(u, y, error); });
     if (m_skip_window_slice) return;
     if (m_window->advance(m_theta, m_outputs, memory)) adopt(*m_window);
     m_health.window = m_window->counts();
@@ -644,6 +641,13 @@ class Estimator {
       if (m_second_window->advance(m_theta, m_outputs, memory, &m_equation_error->theta())) adopt(*m_second_window);
       m_health.window += m_second_window->counts();
     }
+  }
+
+  /// f(window) for each window refinement the estimator runs (none, one, or two).
+  template <typename F>
+  void each_window(F f) noexcept {
+    if (m_window) f(*m_window);
+    if (m_second_window) f(*m_second_window);
   }
 
   /// A window's swap: its estimate, covariance (within the trace ceiling) and free run replace the

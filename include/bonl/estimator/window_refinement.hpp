@@ -264,7 +264,7 @@ class WindowRefinement {
     while (budget > 0) {
       switch (m_phase) {
         case Phase::Collect:
-          if (m_count - m_start < m_minimum || m_count < m_first_pass) return false;
+          if (m_count - m_start < m_minimum || m_count < m_first_pass || !stable_start()) return false;
           m_trial_theta = *m_start_estimate;  // the first pass: the start, kept whatever it scores
           begin_pass(recursion, run);
           break;
@@ -343,6 +343,14 @@ class WindowRefinement {
   static double squared(Scalar e) noexcept { return static_cast<double>(e) * static_cast<double>(e); }
   std::size_t slot(Eigen::Index k) const noexcept { return static_cast<std::size_t>((m_start + k) % m_capacity); }
   double num_params() const noexcept { return static_cast<double>(m_theta.size()); }
+
+  /// Whether the start may begin a pass: finite, and its linear blocks within the stability radius,
+  /// as every step the window keeps. Why: the recursions' estimates are not held to that test (the
+  /// equation-error one's least of all), a first pass keeps its start whatever it scores, and from an
+  /// unstable estimate no step is stable: the window refused a step on every update for good
+  /// (measured: 3,819 in 4,000 samples, a Wiener-Hammerstein system under 2% noise). The window
+  /// waits for a stable start instead.
+  bool stable_start() noexcept { return m_start_estimate->allFinite() && m_trial.stable(*m_start_estimate, m_radius); }
 
   /// The most samples the window holds now: `length`, or where it follows the recursion's memory,
   /// 2 memory samples, at least twice the fewest a pass starts with.
@@ -516,7 +524,7 @@ class WindowRefinement {
     const bool clearly_worse = m_sse_recent_recursion + kSignificance * num_params() * variance < m_sse_recent;
     report(determined && !clearly_worse);
     m_clearly_worse = clearly_worse ? m_clearly_worse + 1 : 0;
-    if (!m_follow_memory && m_clearly_worse >= kConfirmations) {
+    if (!m_follow_memory && m_clearly_worse >= kConfirmations && stable_start()) {
       m_clearly_worse = 0;
       m_reseed_pass = true;
       m_trial_theta = *m_start_estimate;

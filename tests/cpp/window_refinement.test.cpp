@@ -223,7 +223,7 @@ TEST_CASE("window refinement: a model of 51 parameters runs and refines", "[wind
   CHECK(bonl::metrics::nrmse(truth.simulate(fresh), model.simulate(fresh)) <= 0.05);
 }
 
-TEST_CASE("window refinement: an unstable start is not taken; the window waits for a stable one", "[window]") {
+TEST_CASE("window refinement: an unstable start is not taken, the window waits for a stable one", "[window]") {
   // The recursions' estimates are not held to the stability test every kept step passes, and the
   // equation-error recursion's (the second window's start) left it early on a Wiener-Hammerstein
   // record under 2% noise. A first pass keeps its start whatever it scores, and from an unstable

@@ -260,9 +260,9 @@ TEST_CASE("window refinement: an unstable start is not taken, the window waits f
   }
   // Given a stable start (the true system: its window fits it exactly), the window runs.
   INFO("iterations " << window.counts().iterations << ", refused steps " << window.counts().refused_steps << ", swaps "
-                      << window.counts().swaps << ", refusals " << window.counts().refusals << ", undetermined "
-                      << window.counts().undetermined << ", restarts " << window.counts().reseeds << ", overruns "
-                      << window.counts().overruns);
+                     << window.counts().swaps << ", refusals " << window.counts().refusals << ", undetermined "
+                     << window.counts().undetermined << ", restarts " << window.counts().reseeds << ", overruns "
+                     << window.counts().overruns);
   CHECK(window.has_estimate());
   CHECK((window.estimate() - recursion).norm() <= 1e-8 * recursion.norm());
 }

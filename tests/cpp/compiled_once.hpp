@@ -1,9 +1,9 @@
 #pragma once
-// Build time only: the heavy function templates every property suite calls for every model
-// (identify, select, the refinement, the recursive estimate, the known systems) are compiled once,
-// in compiled_once.cpp, and declared `extern template` here so that the suites that include
-// test_support.hpp do not compile them again. They were compiled in up to 20 suites each, which
-// cost the CI's two builds about a quarter of their time (docs/lab/performance.md, "The CI's time").
+// Build time only: the heavy templates every property suite uses for every model (identify, select,
+// the refinement, the recursive estimate, the known systems, the estimators) are compiled once, in
+// compiled_once.cpp and compiled_once_estimators.cpp, and declared `extern template` here so that
+// the suites that include test_support.hpp do not compile them again (docs/lab/performance.md,
+// "The CI's build time").
 //
 // They are instantiated for every model of bonl::Models, and known_system for every model at the
 // paper's fixed orders (bonl::PaperOrders) too, by the model's index: an explicit instantiation names
@@ -57,3 +57,21 @@ using PaperModelAt = bonl::WithOrders<ModelAt<I>, bonl::PaperOrders>;
   BONL_TEST_KNOWN_SYSTEM(bonl_test::PaperModelAt<I>)
 
 BONL_TEST_EACH_MODEL(BONL_TEST_COMPILED_ONCE)
+
+// The estimators (their constructor and update, defined outside the class for this:
+// bonl/estimator/recursive_estimator.hpp), for both orders of every model: most of a suite's
+// compile time where it builds estimators. Compiled in compiled_once_estimators.cpp, which defines
+// BONL_TEST_EXTERN_ESTIMATOR as empty (the two files split the work between two compiler jobs). A
+// suite that must compile its own defines BONL_TEST_OWN_ESTIMATORS before including this header:
+// allocation.test.cpp, whose Eigen counts allocations through its own eigen_assert.
+#ifndef BONL_TEST_EXTERN_ESTIMATOR
+#define BONL_TEST_EXTERN_ESTIMATOR extern
+#endif
+
+#define BONL_TEST_ESTIMATORS(I)                                                     \
+  BONL_TEST_EXTERN_ESTIMATOR template class bonl::Estimator<bonl_test::ModelAt<I>>; \
+  BONL_TEST_EXTERN_ESTIMATOR template class bonl::Estimator<bonl_test::PaperModelAt<I>>;
+
+#ifndef BONL_TEST_OWN_ESTIMATORS
+BONL_TEST_EACH_MODEL(BONL_TEST_ESTIMATORS)
+#endif

@@ -181,48 +181,11 @@ class Estimator {
   /// \param structure the model whose orders (and knots, thresholds) are estimated; its parameters are not used
   /// \param options the method, forgetting, P(0) and safeguards; checked here (std::invalid_argument)
   /// \param settings the model's own estimator settings; checked here (std::invalid_argument)
-  explicit Estimator(const Model& structure, const EstimatorOptions& options = {}, const Settings& settings = {})
-      : m_model(validated(structure, options, settings)), m_terms(structure, key_term_method(options.method)),
-        m_outputs(detail::output_error_terms(structure, settings)),
-        m_rls(structure.num_params(), Scalar(options.resolved_p0())), m_theta(Params::Zero(structure.num_params())),
-        m_theta_internal(m_theta), m_step(m_theta), m_phi(m_theta), m_parameter_scale(Params::Ones(m_theta.size())),
-        m_regressor_scale(m_parameter_scale), m_inverse_parameter_scale(m_parameter_scale), m_options(options),
-        m_settings(settings), m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()),
-        m_units(structure), m_measurement(kScaleSamples, structure.ni()),
-        m_normalised(options.normalise && options.method != Method::Paper) {
-    m_u0 = static_cast<Scalar>(structure.u0());
-    m_y0 = static_cast<Scalar>(structure.y0());
-    if (options.method == Method::OutputError) {
-      m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
-      if (options.window.enabled) {
-        // The window keeps to a forgetting the caller chose, not to the adaptive memory's.
-        m_window.emplace(structure, options.window, settings, options.stability_radius, m_p0, !m_forgetting.adaptive());
-        if (options.window.equation_error_start) {
-          // identify()'s second start: an equation-error recursion beside, with the caller's
-          // forgetting (else its method's) and its method's other defaults, and a second window
-          // that starts from its estimate.
-          EstimatorOptions second;
-          second.method = Method::EquationError;
-          second.forgetting = options.forgetting;
-          second.normalise = options.normalise;
-          second.window.enabled = false;
-          m_equation_error.emplace(structure, second, settings);
-          m_second_window.emplace(structure, options.window, settings, options.stability_radius, m_p0,
-                                  !m_forgetting.adaptive());
-        }
-      }
-    }
-    reset();
-  }
+  explicit Estimator(const Model& structure, const EstimatorOptions& options = {}, const Settings& settings = {});
 
   /// Everything back to the start: initial theta, P = p0 I, internals at rest; where normalised, the
   /// data's scale measured anew.
-  void reset() {
-    restart_from(m_options.method == Method::OutputError ? Params::Zero(m_rls.size())
-                                                         : detail::initial_estimate(m_model, m_settings));
-    m_default_start = true;
-    if (m_equation_error) m_equation_error->reset();
-  }
+  void reset();
 
   /// Restarts from a given estimate (a warm start, e.g. a previously identified model's theta):
   /// P = p0 I, internals at rest; where normalised, the data's scale measured anew, the estimate
@@ -290,21 +253,12 @@ class Estimator {
   /// (Resetting P instead made each pass a fresh start from a 100-sample estimate; for P-H-W that
   /// diverged over passes.) The samples of the last record the recursion has yet to take are taken
   /// first (catch_up()).
-  void start_pass() {
-    catch_up();
-    restart_internals();
-    m_sample = 0;
-    if (m_equation_error) m_equation_error->start_pass();
-  }
+  void start_pass();
 
   /// Takes now what the recursion has yet to: a scale measurement under way ends with the samples
   /// measured so far, and every sample kept is processed (update() does it two samples per update).
   /// For a record's end offline; start_pass() calls it. Never throws; does not allocate.
-  void catch_up() noexcept {
-    if (m_measuring) start_recursion();
-    while (m_measurement.pending() > 0) take_pending();
-    if (m_equation_error) m_equation_error->catch_up();
-  }
+  void catch_up() noexcept;
 
   /// Whether the estimator is still measuring the data's scale (EstimatorOptions::normalise): its
   /// updates return NoInformation and the estimate stays where it started.
@@ -334,30 +288,7 @@ class Estimator {
   /// \param y the measured output y(k)
   /// \return what the update did with the sample (Updated, NoInformation, RejectedNonFinite,
   /// NumericalFailure)
-  UpdateStatus update(Scalar u, Scalar y) noexcept {
-    if (!std::isfinite(u) || !std::isfinite(y)) return UpdateStatus::RejectedNonFinite;
-    if (m_equation_error) m_equation_error->update(u, y);
-    // The model's blocks see the deviations from its operating point (0, 0 unless set).
-    u -= m_u0;
-    y -= m_y0;
-    if (m_measuring) {
-      m_measurement.push(u, y);
-      if (!m_measurement.complete()) return UpdateStatus::NoInformation;
-      start_recursion();
-      return take_pending();
-    }
-    if (m_measurement.pending() == 0) return process(u, y);
-    // Catching up on the samples kept while measuring: this one behind them, two taken per update.
-    m_measurement.queue(u, y);
-    // The second one's window slice is skipped (its samples are pushed): an update does one slice's
-    // work, as it does when caught up.
-    const UpdateStatus status = take_pending();
-    if (m_measurement.pending() == 0) return status;
-    m_skip_window_slice = true;
-    const UpdateStatus second = take_pending();
-    m_skip_window_slice = false;
-    return second;
-  }
+  UpdateStatus update(Scalar u, Scalar y) noexcept;
 
  private:
   /// One sample (deviations from the operating point) through the recursion.
@@ -770,5 +701,96 @@ class Estimator {
   Eigen::Index m_record_next = 0;
   Eigen::Index m_recorded = 0;
 };
+
+// The constructor and the members that reach the whole update (reset, start_pass, catch_up, update)
+// are defined here, outside the class, so that they are not inline: a program that builds
+// estimators of the same model in many files can compile them in one (`template class
+// bonl::Estimator<M>;` there, `extern template class bonl::Estimator<M>;` in the others; the C++
+// tests do, tests/cpp/compiled_once.hpp), which an in-class (inline) definition would not allow.
+// Compiled where used, they are as fast.
+
+template <class Model>
+Estimator<Model>::Estimator(const Model& structure, const EstimatorOptions& options, const Settings& settings)
+    : m_model(validated(structure, options, settings)), m_terms(structure, key_term_method(options.method)),
+      m_outputs(detail::output_error_terms(structure, settings)),
+      m_rls(structure.num_params(), Scalar(options.resolved_p0())), m_theta(Params::Zero(structure.num_params())),
+      m_theta_internal(m_theta), m_step(m_theta), m_phi(m_theta), m_parameter_scale(Params::Ones(m_theta.size())),
+      m_regressor_scale(m_parameter_scale), m_inverse_parameter_scale(m_parameter_scale), m_options(options),
+      m_settings(settings), m_forgetting(options.resolved_forgetting()), m_p0(options.resolved_p0()),
+      m_units(structure), m_measurement(kScaleSamples, structure.ni()),
+      m_normalised(options.normalise && options.method != Method::Paper) {
+  m_u0 = static_cast<Scalar>(structure.u0());
+  m_y0 = static_cast<Scalar>(structure.y0());
+  if (options.method == Method::OutputError) {
+    m_rls.set_process_noise(Scalar(kProcessNoise * m_p0));
+    if (options.window.enabled) {
+      // The window keeps to a forgetting the caller chose, not to the adaptive memory's.
+      m_window.emplace(structure, options.window, settings, options.stability_radius, m_p0, !m_forgetting.adaptive());
+      if (options.window.equation_error_start) {
+        // identify()'s second start: an equation-error recursion beside, with the caller's
+        // forgetting (else its method's) and its method's other defaults, and a second window
+        // that starts from its estimate.
+        EstimatorOptions second;
+        second.method = Method::EquationError;
+        second.forgetting = options.forgetting;
+        second.normalise = options.normalise;
+        second.window.enabled = false;
+        m_equation_error.emplace(structure, second, settings);
+        m_second_window.emplace(structure, options.window, settings, options.stability_radius, m_p0,
+                                !m_forgetting.adaptive());
+      }
+    }
+  }
+  reset();
+}
+
+template <class Model>
+void Estimator<Model>::reset() {
+  restart_from(m_options.method == Method::OutputError ? Params::Zero(m_rls.size())
+                                                       : detail::initial_estimate(m_model, m_settings));
+  m_default_start = true;
+  if (m_equation_error) m_equation_error->reset();
+}
+
+template <class Model>
+void Estimator<Model>::start_pass() {
+  catch_up();
+  restart_internals();
+  m_sample = 0;
+  if (m_equation_error) m_equation_error->start_pass();
+}
+
+template <class Model>
+void Estimator<Model>::catch_up() noexcept {
+  if (m_measuring) start_recursion();
+  while (m_measurement.pending() > 0) take_pending();
+  if (m_equation_error) m_equation_error->catch_up();
+}
+
+template <class Model>
+UpdateStatus Estimator<Model>::update(Scalar u, Scalar y) noexcept {
+  if (!std::isfinite(u) || !std::isfinite(y)) return UpdateStatus::RejectedNonFinite;
+  if (m_equation_error) m_equation_error->update(u, y);
+  // The model's blocks see the deviations from its operating point (0, 0 unless set).
+  u -= m_u0;
+  y -= m_y0;
+  if (m_measuring) {
+    m_measurement.push(u, y);
+    if (!m_measurement.complete()) return UpdateStatus::NoInformation;
+    start_recursion();
+    return take_pending();
+  }
+  if (m_measurement.pending() == 0) return process(u, y);
+  // Catching up on the samples kept while measuring: this one behind them, two taken per update.
+  m_measurement.queue(u, y);
+  // The second one's window slice is skipped (its samples are pushed): an update does one slice's
+  // work, as it does when caught up.
+  const UpdateStatus status = take_pending();
+  if (m_measurement.pending() == 0) return status;
+  m_skip_window_slice = true;
+  const UpdateStatus second = take_pending();
+  m_skip_window_slice = false;
+  return second;
+}
 
 }  // namespace bonl

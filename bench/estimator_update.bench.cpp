@@ -1,7 +1,8 @@
 // Cost of one online estimator update (Estimator<Model>::update) per model at the paper's orders
 // (na = 3, nb = 2, nk = 8, r = r1 = 3), on a recorded noisy response of the known P-H-W system:
-// fixed (paper-order template) sizes and run-time (Eigen::Dynamic) sizes, double and float, each
-// method: output_error (the default), equation_error, paper. One benchmark iteration is one sample.
+// fixed (paper-order template) sizes and run-time (Eigen::Dynamic) sizes, double and float (the
+// float ones in estimator_update_float.bench.cpp), each method: output_error (the default),
+// equation_error, paper. One benchmark iteration is one sample.
 //
 // Names: update/<Model::kName>/<fixed|dynamic>/<double|float>[/equation_error|/paper] (no suffix:
 // the output-error method). The counter `updated` is the fraction of samples that ran the RLS step
@@ -24,61 +25,13 @@
 #include <vector>
 
 #include "bench_data.hpp"
+#include "estimator_update.hpp"
 
 namespace {
 
 using bonl_bench::record;
-
-template <class Model>
-void update(benchmark::State& state, bonl::Method method, const bonl_bench::Record<typename Model::Scalar>& data,
-            bool window = false) {
-  using Scalar = typename Model::Scalar;
-  const Model structure = bonl_bench::make_structure<Model>();
-  bonl::EstimatorOptions options;
-  options.method = method;
-  options.window.enabled = window;
-  // In float the paper's P(0) = 1e6 I breaks down within 60 samples of this record (the covariance
-  // loses positiveness and every later update is refused, which would time a cheap rejection, not an
-  // update); 1e4 keeps every model's float estimator updating.
-  if constexpr (std::is_same_v<Scalar, float>) {
-    if (method != bonl::Method::OutputError) options.p0 = 1e4;  // the output-error default, 10, is fine
-  }
-  const bonl_bench::PassCounts counts = bonl_bench::count_updates(structure, options, data);
-  const auto fraction = [&](long count) { return static_cast<double>(count) / static_cast<double>(data.u.size()); };
-  bonl::Estimator<Model> estimator(structure, options);
-  Eigen::Index k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(estimator.update(data.u[k], data.y[k]));
-    if (++k == data.u.size()) {
-      // Start over from zero, so the timing is that of a first pass from the paper's initial values
-      // (repeated passes over a short record are not what an online estimator sees).
-      state.PauseTiming();
-      k = 0;
-      estimator.reset();
-      state.ResumeTiming();
-    }
-  }
-  benchmark::DoNotOptimize(estimator.theta().data());
-  benchmark::ClobberMemory();
-  state.SetItemsProcessed(state.iterations());
-  state.counters["updated"] = fraction(counts.updated);
-  state.counters["limited"] = fraction(counts.forgetting_limited);
-  state.counters["projected"] = fraction(counts.projections);
-  state.counters["params"] = static_cast<double>(structure.num_params());
-}
-
-template <typename S, bool Fixed>
-void register_sizes(const std::string& suffix) {
-  bonl::for_each_model(bonl_bench::PaperOrderModels<S, Fixed>{}, [&](auto tag) {
-    using Model = typename decltype(tag)::type;
-    for (const bonl::Method method : {bonl::Method::OutputError, bonl::Method::EquationError, bonl::Method::Paper}) {
-      const std::string extra = method == bonl::Method::OutputError ? "" : std::string("/") + bonl::to_string(method);
-      benchmark::RegisterBenchmark(
-          (std::string("update/") + Model::kName + "/" + suffix + extra).c_str(),
-          [method](benchmark::State& s) { update<Model>(s, method, bonl_bench::record<S>()); });
-    }
-  });
-}
+using bonl_bench::register_sizes;
+using bonl_bench::update;
 
 /// The default (output-error) P-H-W update on the records it does not fit.
 template <bool Fixed>
@@ -154,9 +107,7 @@ void register_window() {
 const int registered = [] {
   register_window();
   register_sizes<double, true>("fixed/double");
-  register_sizes<float, true>("fixed/float");
   register_sizes<double, false>("dynamic/double");
-  register_sizes<float, false>("dynamic/float");
   register_mismatches<true>("fixed/double");
   register_mismatches<false>("dynamic/double");
   return 0;

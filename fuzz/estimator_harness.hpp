@@ -496,9 +496,12 @@ void fuzz_model_at(List models, int index, FuzzedDataProvider& in) {
 }
 
 /// The kinds after the run-time models of bonl::Models: every model at the paper's fixed orders
-/// (bonl::PaperOrders), in double, then in float (instantiated in fuzz_estimator_update_more.cpp, to
-/// split the compile).
+/// (bonl::PaperOrders), in double, then in float (instantiated in fuzz_estimator_update_more.cpp
+/// and fuzz_estimator_update_float.cpp: each is as long to compile as the run-time kinds, and the
+/// three files compile side by side).
 inline constexpr int kFixedKinds = 2 * static_cast<int>(bonl::Models::size);
 void fuzz_fixed_kind(int kind, FuzzedDataProvider& in);
+/// The float kinds of fuzz_fixed_kind: model `index` of bonl::PaperOrderModels in float.
+void fuzz_fixed_float_kind(int index, FuzzedDataProvider& in);
 
 }  // namespace bonl_fuzz

@@ -1,4 +1,5 @@
-// Second translation unit of fuzz_estimator_update: the fixed-order kinds (see estimator_harness.hpp).
+// Second translation unit of fuzz_estimator_update: the fixed-order kinds in double (see
+// estimator_harness.hpp; fuzz_estimator_update_float.cpp has those in float).
 
 #include "estimator_harness.hpp"
 
@@ -9,7 +10,7 @@ void fuzz_fixed_kind(int kind, FuzzedDataProvider& in) {
   if (kind < kModels) {
     fuzz_model_at(bonl::PaperOrderModels{}, kind, in);
   } else {
-    fuzz_model_at(bonl::ModelsWithScalar<bonl::PaperOrderModels, float>::type{}, kind - kModels, in);
+    fuzz_fixed_float_kind(kind - kModels, in);
   }
 }
 

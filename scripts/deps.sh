@@ -3,15 +3,16 @@
 BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev nlohmann-json3-dev python3 python3-pip python3-venv doxygen ccache)
 # scripts/fuzz.sh only: clang and its runtimes (libclang_rt.fuzzer, asan, ubsan).
 BONL_FUZZ_APT_PACKAGES=(clang-14 libclang-rt-14-dev)
-# scripts/clang.sh only: clang, and the OpenMP that Debian's SUNDIALSConfig.cmake looks for.
-BONL_CLANG_APT_PACKAGES=(clang-14 libomp-14-dev)
+# scripts/sanitize.sh only: clang, its sanitizer runtimes, and the OpenMP that Debian's
+# SUNDIALSConfig.cmake looks for.
+BONL_CLANG_APT_PACKAGES=(clang-14 libclang-rt-14-dev libomp-14-dev)
 # scripts/format.sh only: clang-format for C++, and ruff for Python from PyPI (pinned: its rules
 # change between versions), which scripts/test.sh installs into build/venv too.
 BONL_FORMAT_APT_PACKAGES=(clang-format-14)
 BONL_RUFF=ruff==0.17.6
 
-# The compiler cache: every CMake build the scripts make (build/ci, build/asan, build/clang,
-# build/fuzz, the Python extension's, examples/consumer's, ...) compiles through ccache when it is
+# The compiler cache: every CMake build the scripts make (build/ci, build/asan, build/fuzz,
+# the Python extension's, examples/consumer's, ...) compiles through ccache when it is
 # installed; CMake (3.17 and later) reads CMAKE_CXX_COMPILER_LAUNCHER from the environment when it
 # first configures a build folder. Paths under the clone are hashed relative to the compiler's
 # working folder and that folder itself is not hashed, so a fresh clone in another folder hits
@@ -48,7 +49,7 @@ bonl_apt_install() {
 }
 
 # apt-get update + install of the given packages when dpkg says one of them is missing, else no apt
-# at all: bonl_ensure_packages PACKAGE... (scripts/fuzz.sh: BONL_FUZZ_APT_PACKAGES, scripts/clang.sh:
+# at all: bonl_ensure_packages PACKAGE... (scripts/fuzz.sh: BONL_FUZZ_APT_PACKAGES, scripts/sanitize.sh:
 # BONL_CLANG_APT_PACKAGES, scripts/format.sh: BONL_FORMAT_APT_PACKAGES).
 bonl_ensure_packages() {
   local missing=() p sudo=()

@@ -3,8 +3,8 @@
 BONL_APT_PACKAGES=(build-essential cmake ninja-build libeigen3-dev libsundials-dev catch2 libbenchmark-dev nlohmann-json3-dev python3 python3-pip python3-venv doxygen ccache)
 # scripts/fuzz.sh only: clang and its runtimes (libclang_rt.fuzzer, asan, ubsan).
 BONL_FUZZ_APT_PACKAGES=(clang-14 libclang-rt-14-dev)
-# scripts/sanitize.sh only: clang, its sanitizer runtimes, and the OpenMP that Debian's
-# SUNDIALSConfig.cmake looks for.
+# scripts/sanitize.sh and scripts/figure_spread.sh: clang, its sanitizer runtimes, and the OpenMP
+# that Debian's SUNDIALSConfig.cmake looks for.
 BONL_CLANG_APT_PACKAGES=(clang-14 libclang-rt-14-dev libomp-14-dev)
 # scripts/format.sh only: clang-format for C++, and ruff for Python from PyPI (pinned: its rules
 # change between versions), which scripts/test.sh installs into build/venv too.

@@ -63,7 +63,8 @@ BONL_TEST_EACH_MODEL(BONL_TEST_COMPILED_ONCE)
 // compile time where it builds estimators. Compiled in compiled_once_estimators.cpp, which defines
 // BONL_TEST_EXTERN_ESTIMATOR as empty (the two files split the work between two compiler jobs). A
 // suite that must compile its own defines BONL_TEST_OWN_ESTIMATORS before including this header:
-// allocation.test.cpp, whose Eigen counts allocations through its own eigen_assert.
+// allocation.test.cpp and control_allocation.test.cpp, whose Eigen counts allocations through
+// their own eigen_assert.
 #ifndef BONL_TEST_EXTERN_ESTIMATOR
 #define BONL_TEST_EXTERN_ESTIMATOR extern
 #endif

@@ -466,6 +466,8 @@ void bind_estimation(py::module_& m) {
                     "int: internal variables restarted because they became non-finite")
       .def_readonly("projections", &bonl::EstimatorHealth::projections,
                     "int: output_error updates shortened to keep the linear block stable")
+      .def_readonly("checkpoint_returns", &bonl::EstimatorHealth::checkpoint_returns,
+                    "int: output_error returns to the checkpoint, which predicted far better")
       .def("__repr__", [](const bonl::EstimatorHealth& h) {
         return "EstimatorHealth(diverged=" + std::string(h.diverged ? "True" : "False") +
                ", failures=" + std::to_string(h.failures) +
@@ -473,7 +475,8 @@ void bind_estimation(py::module_& m) {
                ", forgetting_limited=" + std::to_string(h.forgetting_limited) +
                ", recoveries=" + std::to_string(h.recoveries) +
                ", internal_restarts=" + std::to_string(h.internal_restarts) +
-               ", projections=" + std::to_string(h.projections) + ")";
+               ", projections=" + std::to_string(h.projections) +
+               ", checkpoint_returns=" + std::to_string(h.checkpoint_returns) + ")";
       });
 
   bonl::for_each_model(bonl::Models{}, [&m](auto tag) { def_identify<typename decltype(tag)::type>(m); });

@@ -323,6 +323,7 @@ int main(int argc, char** argv) {
     ++failures;
     problems.push_back(std::to_string(not_recovered) + " rich phases did not recover within their first half");
   }
+  const double plant_theta = truth.theta().cwiseAbs().maxCoeff();  // the table compares the largest |theta| with it
   if (stalled_phases > 0) {
     ++failures;
     problems.push_back(std::to_string(stalled_phases) +
@@ -362,6 +363,7 @@ int main(int argc, char** argv) {
   std::printf("  health: forgetting limited on %lld updates, %lld failures, %lld internal restarts\n",
               static_cast<long long>(health.forgetting_limited), static_cast<long long>(health.failures),
               static_cast<long long>(health.internal_restarts));
+  std::printf("  checkpoint: %lld returns\n", static_cast<long long>(health.checkpoint_returns));
   if (settings.window) {
     const bonl::WindowRefinementCounts& w = health.window;
     std::printf(
@@ -399,9 +401,11 @@ int main(int argc, char** argv) {
         << ", \"seconds\": " << seconds << ", \"outliers\": " << outliers << ", \"updated\": " << status_counts[0]
         << ", \"largest_abs_p\": " << largest_p << ", \"largest_trace\": " << largest_trace
         << ", \"smallest_eigenvalue\": " << smallest_eigenvalue << ", \"largest_abs_theta\": " << largest_theta
-        << ", \"failures\": " << failures << ", \"forgetting_limited\": " << health.forgetting_limited
-        << ", \"numerical_failures\": " << health.failures << ", \"rich_phases_after_poor\": " << recoveries.size()
-        << ", \"not_recovered\": " << not_recovered << ", \"recovery_after_constant\": " << numbers(after_constant)
+        << ", \"plant_largest_abs_theta\": " << plant_theta << ", \"failures\": " << failures
+        << ", \"forgetting_limited\": " << health.forgetting_limited << ", \"numerical_failures\": " << health.failures
+        << ", \"checkpoint_returns\": " << health.checkpoint_returns
+        << ", \"rich_phases_after_poor\": " << recoveries.size() << ", \"not_recovered\": " << not_recovered
+        << ", \"recovery_after_constant\": " << numbers(after_constant)
         << ", \"recovery_after_zero\": " << numbers(after_zero) << ", \"stalled_rich_phases\": " << stalled_phases;
     if (settings.window) {
       const bonl::WindowRefinementCounts& w = health.window;

@@ -27,7 +27,11 @@ template <class Model>
 Model estimate_recursively(const Model& structure, const CheckedRecords<typename Model::Scalar>& records,
                            const IdentifyOptions& options, const ModelSettings<Model>& settings = {}) {
   detail::require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
-  Estimator<Model> estimator(structure, options, settings);
+  // Without the checkpoint: a start for the refinement, which sees every record whole, from the
+  // recursion as it runs (with it, the tanks' H-W start changed and refined to a worse model).
+  EstimatorOptions recursion = options;
+  recursion.checkpoint = false;
+  Estimator<Model> estimator(structure, recursion, settings);
   for (int pass = 0; pass < options.passes; ++pass) {
     for (std::size_t r = 0; r < records.size(); ++r) {
       if (pass > 0 || r > 0) estimator.start_pass();

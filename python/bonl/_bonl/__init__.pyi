@@ -2385,6 +2385,11 @@ class EstimatorHealth:
     def __repr__(self) -> str:
         ...
     @property
+    def checkpoint_returns(self) -> int:
+        """
+        int: output_error returns to the checkpoint, which predicted far better
+        """
+    @property
     def consecutive_failures(self) -> int:
         """
         int: refused in a row, up to the last update

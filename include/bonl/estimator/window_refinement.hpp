@@ -200,6 +200,7 @@ class WindowRefinement {
     m_start = m_count;
     m_length = 0;
     m_have_iterate = false;
+    m_determined = false;
     m_have_half = false;
     m_reseed_pass = false;
     m_clearly_worse = 0;
@@ -452,6 +453,9 @@ class WindowRefinement {
       m_length = m_pass_length;
       m_normal = m_trial_normal;
       m_normal.template triangularView<Eigen::StrictlyUpper>() = m_normal.transpose();
+      // The rank test of the J'J the next judgement uses, here rather than in that judgement: the
+      // judgement that swaps already factorises twice and inverts, and was the costliest update.
+      m_determined = determines_every_parameter();
       m_gradient = m_trial_gradient;
       m_have_iterate = true;
       m_trials = 0;
@@ -510,7 +514,7 @@ class WindowRefinement {
     }
     if (recent < kMinimumRecent || m_scored == 0) return false;
     const double variance = m_sse_recent_recursion / static_cast<double>(m_scored);
-    const bool determined = determines_every_parameter();
+    const bool determined = m_determined;
     if (m_sse_recent < m_sse_recent_recursion) {
       report(determined);
       if (!determined || !swap_covariance()) {
@@ -687,6 +691,7 @@ class WindowRefinement {
   double m_damping = kInitialDamping;
   double m_memory = std::numeric_limits<double>::infinity();  // the recursion's, in samples
   bool m_have_iterate = false;
+  bool m_determined = false;  // determines_every_parameter() of m_normal, taken where m_normal was set
   bool m_have_half = false;
   Eigen::Index m_half_offset = 0;        // where m_half_run is, from m_start
   Eigen::Index m_half_offset_trial = 0;  // where this pass keeps m_half_trial (0: nowhere)

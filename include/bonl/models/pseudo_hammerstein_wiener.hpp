@@ -220,8 +220,10 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     /// \copydoc ARX::OutputErrorTerms::OutputErrorTerms
     /// \param hold the number of first samples after a start from rest for which c is held
     explicit OutputErrorTerms(const PseudoHammersteinWiener& model, Eigen::Index hold = 0)
-        : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()), m_last(model.num_params() - 1),
-          m_psi(Params::Zero(model.num_params())), m_dy(m_psi), m_hold(hold) {}
+        : m_front(model.na(), model.nb(), model.nk(), model.r(), model.ni()),
+          m_last(model.num_params() - 1), m_sensitivities{Params::Zero(model.num_params()),
+                                                          Params::Zero(model.num_params())},
+          m_hold(hold) {}
     /// The estimator's: hold = settings.backlash_hold.
     /// \param model the model whose orders the run has; only its orders are read
     /// \param settings the estimator settings, of which backlash_hold is read
@@ -231,42 +233,52 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     void reset() noexcept {
       m_front.reset();
       m_y = Scalar(0);
-      m_dy.setZero();
+      m_sensitivities[m_stored].setZero();
+      m_next = m_stored;
       m_samples = 0;
     }
     /// \copydoc ARX::OutputErrorTerms::step
     SimulationStep<Scalar, Params> step(const Params& theta, Scalar u) noexcept {
       const Scalar x = m_front.step(theta, u);
       const Scalar c = std::max(theta[m_last], Scalar(0));
+      // The step's sensitivity goes into the buffer that is not the stored y(k-1)'s, so that
+      // accept() swaps the two instead of copying (a copy per step was a tenth of the window
+      // refinement's time); inside the gap the step's sensitivity is the stored one itself.
+      m_next = 1 - m_stored;
+      Params& psi = m_sensitivities[m_next];
       if (x - c > m_y || (c == Scalar(0) && x >= m_y)) {
-        m_psi.head(m_last) = m_front.sensitivity();
-        m_psi[m_last] = Scalar(-1);
+        psi.head(m_last) = m_front.sensitivity();
+        psi[m_last] = Scalar(-1);
         m_output = x - c;
       } else if (x + c < m_y) {
-        m_psi.head(m_last) = m_front.sensitivity();
-        m_psi[m_last] = Scalar(1);
+        psi.head(m_last) = m_front.sensitivity();
+        psi[m_last] = Scalar(1);
         m_output = x + c;
       } else {
-        m_psi = m_dy;
+        m_next = m_stored;
         m_output = m_y;
       }
       if (m_samples < m_hold) {
-        m_psi[m_last] = Scalar(0);
+        if (m_next == m_stored) {  // never write into the stored sensitivity before accept()
+          psi = m_sensitivities[m_stored];
+          m_next = 1 - m_stored;
+        }
+        psi[m_last] = Scalar(0);
         ++m_samples;
       }
-      return {m_output, m_psi, x};
+      return {m_output, m_sensitivities[m_next], x};
     }
     /// Stores the step: x and its sensitivity in the front, y(k) and its sensitivity as the
     /// backlash memory.
     void accept() noexcept {
       m_front.commit();
       m_y = m_output;
-      m_dy = m_psi;
+      m_stored = m_next;
     }
     /// \copydoc ARX::OutputErrorTerms::correct
     void correct(const Params& delta) noexcept {
       m_front.correct(delta.head(m_last));
-      m_y += m_dy.dot(delta);
+      m_y += m_sensitivities[m_stored].dot(delta);
     }
     /// \copydoc ARX::OutputErrorTerms::stable
     bool stable(const Params& theta, Scalar radius) noexcept { return m_front.stable(theta, radius); }
@@ -274,9 +286,12 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
    private:
     detail::FrontOutputError<Scalar, Na_, Nb_, R_> m_front;
     Eigen::Index m_last;
-    Params m_psi;  // d y(k) / d theta of the last step
-    Params m_dy;   // the model's own y(k-1), the backlash memory, and its sensitivity
-    Scalar m_y = Scalar(0);
+    // d y / d theta: the stored y(k-1)'s (the backlash memory's) and the last step's, two buffers
+    // whose roles m_stored and m_next name
+    Params m_sensitivities[2];
+    int m_stored = 0;
+    int m_next = 0;
+    Scalar m_y = Scalar(0);       // the model's own y(k-1), the backlash memory
     Scalar m_output = Scalar(0);  // y(k) of the last step
     Eigen::Index m_hold;
     Eigen::Index m_samples = 0;

@@ -64,9 +64,14 @@ def column(runs):
     cells["smallest eigenvalue of P (every 10,000 samples)"] = "%.1e at the lowest" % min(
         run["smallest_eigenvalue"] for run in runs)
     thetas = [run["largest_abs_theta"] for run in runs]
-    cells["largest \\|theta\\| entry: median of the runs; runs above 1,000; largest"] = "%.3g; %d; %.3g (seed %d)" % (
-        statistics.median(thetas), sum(t > 1000 for t in thetas), max(thetas),
-        runs[thetas.index(max(thetas))]["seed"])
+    plant = runs[0]["plant_largest_abs_theta"]
+    cells["largest \\|theta\\| entry: median of the runs; runs above 10 times the plant's; largest"] = (
+        "%.3g; %d; %.3g (seed %d); the plant's %.3g" % (
+            statistics.median(thetas), sum(t > 10 * plant for t in thetas), max(thetas),
+            runs[thetas.index(max(thetas))]["seed"], plant))
+    returns = [run["checkpoint_returns"] for run in runs]
+    cells["returns to the checkpoint per run: median (fewest to most)"] = "%s (%s to %s)" % (
+        count(statistics.median(returns)), count(min(returns)), count(max(returns)))
     swaps = [run["window_counts"]["swaps"] for run in runs if "window_counts" in run]
     cells["window swaps per run: median (fewest to most)"] = "%s (%s to %s)" % (
         count(statistics.median(swaps)), count(min(swaps)), count(max(swaps))) if swaps else "-"

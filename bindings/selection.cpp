@@ -1,6 +1,7 @@
 // Selection in Python: bonl.select (python/bonl/selection.py) checks its data once into a
 // _SelectionData and runs C++'s bonl::score_candidate on each candidate (_score_candidate, the GIL
-// released) on its executors; _select is C++'s whole bonl::select, which tests compare it with.
+// released) on its executors, then bonl::refit on the best (_refit); _select is C++'s whole
+// bonl::select, which tests compare it with.
 
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
@@ -88,6 +89,19 @@ void def_selection(py::module_& m) {
       py::arg("structure"), py::arg("data"),
       "bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. "
       "Returns (score, fit_mse, validation_mse or None, error or None, model or None).");
+  m.def(
+      "_refit",
+      [](const Model& structure, const SelectionArguments& selection) {
+        std::string why;
+        const auto model = [&] {
+          py::gil_scoped_release release;
+          return bonl::refit(structure, *selection.data, why);
+        }();
+        return py::make_tuple(model ? py::cast(*model) : py::none(), why.empty() ? py::none() : py::cast(why));
+      },
+      py::arg("structure"), py::arg("data"),
+      "bonl::refit: the structure identified on all of data's records where its free run there is bounded. "
+      "Returns (model or None, why not or None).");
   m.def(
       "_select",
       [](const std::vector<Model>& candidates, const SelectionArguments& selection) {

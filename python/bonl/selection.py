@@ -10,8 +10,12 @@ of a grid and ranks them.
   tail simulated after its first n samples as a test record with a state-initialisation window is);
   ``criterion="aic"`` or ``"bic"`` fits on all the data and scores ``N log(mse) + 2 p`` or
   ``N log(mse) + p log(N)`` of the free-run simulation. The best candidate is refitted on all the
-  data. Each candidate is scored by C++'s ``bonl::score_candidate`` (``include/bonl/estimator/select.hpp``,
-  the scoring C++'s ``bonl::select`` runs too), which releases the GIL; Python runs the candidates in
+  data. A model whose free run is not bounded is never chosen: from rest on every record's input, and
+  on it stretched 1.25 times about the model's input operating point, its output must stay within
+  10 half-ranges of the measured output's middle; a candidate that fails it is ranked last with the
+  reason, and where the best fails it once refitted, the next is refitted. Each candidate is scored
+  by C++'s ``bonl::score_candidate`` (``include/bonl/estimator/select.hpp``, the scoring C++'s
+  ``bonl::select`` runs too), which releases the GIL; Python runs the candidates in
   parallel: on the local cores by default, or on any :class:`concurrent.futures.Executor`, such as a
   Dask cluster's (``distributed.Client(...).get_executor()``).
 
@@ -50,12 +54,12 @@ class Candidate:
     name: str                       #: the model's class name
     orders: Dict[str, int]          #: its orders by name
     num_params: int
-    score: float                    #: the criterion (lower is better; inf when the fit failed)
+    score: float                    #: the criterion (lower is better; inf when the fit failed or was refused)
     fit_mse: float                  #: free-run simulation MSE on the data it was fitted on, run as fitted
     validation_mse: Optional[float]  #: on the held-out parts (criterion "validation"), else None
     seconds: float                  #: wall time of its identification
-    error: Optional[str]            #: why the fit failed, None when it did not
-    model: Any                      #: the identified model (None when the fit failed)
+    error: Optional[str]            #: why the fit failed or was refused, None when it was not
+    model: Any                      #: the identified model (None when the fit failed; kept when refused)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -65,6 +69,11 @@ class Selection:
     criterion: str
     table: List[Candidate]          #: best first
     best: Any                       #: the best structure identified on all the data
+
+    @property
+    def chosen(self) -> Candidate:
+        """The row of the structure ``best`` is: the table's first."""
+        return self.table[0]
 
     def __str__(self) -> str:
         lines = [f"{'rank':>4}  {'model':<24} {'orders':<32} {'params':>6} {'score':>12}"]
@@ -153,6 +162,90 @@ def _progress(total: int, progress: Optional[bool]):
     return tqdm(total=total, desc="bonl.select", unit="model")
 
 
+def _score_all(jobs: Sequence[Tuple[Any, Any]], executor: Optional[concurrent.futures.Executor] = None,
+              progress: Optional[bool] = None) -> List[Candidate]:
+    """Scores each (structure, data) pair, data from ``_bonl._selection_data``: the candidates' rows, in
+    their order (bonl.select's work).
+
+    Parameters
+    ----------
+    jobs : sequence of (structure, data)
+        The candidates, each with the checked records and options it is scored on.
+    executor : concurrent.futures.Executor, optional
+        Where they run; default: threads on the local cores.
+    progress : bool, optional
+        A tqdm progress bar; default: when standard error is a terminal.
+
+    Returns
+    -------
+    list of Candidate
+        One row per job, in the jobs' order (a job the executor lost: its row says so).
+    """
+    own = executor is None
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) if own else executor
+    bar = _progress(len(jobs), progress)
+    try:
+        futures = [pool.submit(_score, structure, data) for structure, data in jobs]
+        index = {future: i for i, future in enumerate(futures)}
+        rows: List[Optional[Candidate]] = [None] * len(futures)
+        for future in concurrent.futures.as_completed(futures):
+            i = index[future]
+            try:
+                rows[i] = future.result()
+            except Exception as error:  # the executor lost this candidate: report it, keep the rest
+                rows[i] = _failed(jobs[i][0], f"executor: {type(error).__name__}: {error}", math.nan)
+            if bar is not None:
+                bar.update(1)
+    finally:
+        if own:
+            pool.shutdown()
+        if bar is not None:
+            bar.close()
+    return rows
+
+
+def _refit_best(table: List[Candidate], structures: Sequence[Any],
+               data: Sequence[Any]) -> Tuple[List[Candidate], Any, Candidate]:
+    """The best of a ranked table refitted on all of its data's records, as bonl::select does it
+    (bonl::refit): where that one's free run there is not bounded, the next, its row given the reason.
+
+    Parameters
+    ----------
+    table : list of Candidate
+        Best first.
+    structures : sequence of bonl models
+        The structure of each row, in the table's order.
+    data : sequence
+        Each row's checked records and options (``_bonl._selection_data``) to refit on.
+
+    Returns
+    -------
+    (list of Candidate, model, Candidate)
+        The table again, refused refits moved down with the failed rows (by score, stably); the model;
+        and its row.
+
+    Raises
+    ------
+    NumericalError
+        No row has a finite score and a bounded free run.
+    """
+    table = list(table)
+    best = chosen = None
+    for position, row in enumerate(table):
+        if row.error is not None or not row.score < math.inf:
+            break  # the rest are worse
+        best, why = _bonl._refit(structures[position], data[position])
+        if best is not None:
+            chosen = row
+            break
+        table[position] = dataclasses.replace(row, score=math.inf, error="refitted on all the records: " + why)
+    if best is None:
+        raise _bonl.NumericalError("bonl: select: every candidate failed: none has a finite score and a bounded "
+                                   "free run; the first: " + (table[0].error or "its score is infinite"))
+    table.sort(key=lambda row: row.score)  # stable: refused refits go down with the failed rows
+    return table, best, chosen
+
+
 def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
            records: Optional[Sequence[Tuple[ArrayLike, ArrayLike]]] = None, criterion: str = "validation",
            validation_fraction: float = 0.25, window: int = 0,
@@ -174,7 +267,8 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
         fitted on the rest. 'aic', 'bic': information criteria of the free-run simulation error on all
         the data. Every candidate is scored by C++'s ``bonl::score_candidate``, as ``bonl::select``
         scores it; one that cannot be fitted (more parameters than its fit part has samples, or an
-        identification that fails) is ranked last with the reason.
+        identification that fails), or whose free run is not bounded (the module's docstring), is
+        ranked last with the reason.
     validation_fraction : float, default 0.25
         criterion 'validation': the held-out last part of every record, in (0, 1).
     window : int, default 0
@@ -194,8 +288,9 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
     Returns
     -------
     Selection
-        ``table``: the candidates best first (failed fits last, with their error); ``best``: the best
-        structure identified on all the data.
+        ``table``: the candidates best first (failed and refused fits last, with their error);
+        ``best``: the best structure identified on all the data whose free run there is bounded.
+        NumericalError where no candidate has a finite score and a bounded free run.
     """
     structures = list(candidates)
     if not structures:
@@ -207,30 +302,8 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
     data = _bonl._selection_data(u, y, records=records, criterion=criterion, validation_fraction=validation_fraction, window=window,
                                  **identify_options)
 
-    own = executor is None
-    pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) if own else executor
-    bar = _progress(len(structures), progress)
-    try:
-        futures = [pool.submit(_score, s, data) for s in structures]
-        index = {future: i for i, future in enumerate(futures)}
-        rows: List[Optional[Candidate]] = [None] * len(futures)
-        for future in concurrent.futures.as_completed(futures):
-            i = index[future]
-            try:
-                rows[i] = future.result()
-            except Exception as error:  # the executor lost this candidate: report it, keep the rest
-                rows[i] = _failed(structures[i], f"executor: {type(error).__name__}: {error}", math.nan)
-            if bar is not None:
-                bar.update(1)
-    finally:
-        if own:
-            pool.shutdown()
-        if bar is not None:
-            bar.close()
+    rows = _score_all([(structure, data) for structure in structures], executor, progress)
     # Best first; ties (and failures, all inf) keep the candidates' order, as bonl::select ranks them.
     order = sorted(range(len(rows)), key=lambda i: rows[i].score)
-    table = [rows[i] for i in order]
-    if table[0].error is not None:
-        raise _bonl.NumericalError("bonl: select: every candidate failed; the first: " + table[0].error)
-    best = _bonl.identify(structures[order[0]], u, y, records=records, **identify_options)
+    table, best, _ = _refit_best([rows[i] for i in order], [structures[i] for i in order], [data] * len(rows))
     return Selection(criterion, table, best)

@@ -151,3 +151,77 @@ TEST_CASE("with a window the held-out part is scored after its first samples", "
   CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
                     Catch::Matchers::Contains("window applies to criterion 'validation' only, got criterion 'aic'"));
 }
+
+namespace {
+
+/// y(k) = 0.5 y(k-1) + 0.17 u(k-1) + 0.5 y(k-1)^3: stable for |u| <= 1 (0.5 y - 0.5 y^3 reaches 0.17 at
+/// y = 0.405, below its maximum 0.192 at y = 0.577), and with no rest point, diverging, where
+/// 0.17 |u| > 0.192: for inputs 1.25 times larger.
+bonl::NonlinearFeedbackd softening_feedback() {
+  bonl::NonlinearFeedbackd model(1, 0, 1, 3, 0, 1, 0);
+  model.set_b(Eigen::VectorXd::Constant(1, 0.17));
+  model.set_a(Eigen::VectorXd::Constant(1, -0.5));
+  model.set_f(Eigen::Vector2d(0.0, 0.5));
+  return model;
+}
+
+}  // namespace
+
+TEST_CASE("select does not choose a model whose free run diverges on inputs somewhat beyond the measured", "[select]") {
+  const bonl::NonlinearFeedbackd truth = softening_feedback();
+  const Eigen::VectorXd u = bonl::signals::random_levels(1200, 40, 1.0, 77);  // long holds: time to diverge
+  const Eigen::VectorXd y = truth.simulate(u);
+  // The oracle: the truth's own free run, bounded on u and diverging on 1.25 u.
+  Eigen::VectorXd simulated;
+  REQUIRE(truth.try_simulate(u, simulated));
+  REQUIRE_FALSE(truth.try_simulate((bonl::kFreeRunStretch * u).eval(), simulated));
+
+  // The true structure fits the held-out data exactly, and is refused; the linear one (r = 1) is chosen.
+  const bonl::Records<double> records{{u, y}};
+  const std::vector<bonl::NonlinearFeedbackd> grid{bonl::NonlinearFeedbackd(1, 0, 1, 3, 0, 1, 0),
+                                                   bonl::NonlinearFeedbackd(1, 0, 1, 1, 0, 1, 0)};
+  const auto selection = bonl::select(grid, records);
+  REQUIRE(selection.table.size() == 2);
+  CHECK(selection.table[0].structure.r() == 1);
+  CHECK(selection.table[0].error.empty());
+  CHECK(std::isfinite(selection.table[0].score));
+  CHECK(selection.table[1].structure.r() == 3);
+  CHECK_THAT(selection.table[1].error,
+             Catch::Matchers::Contains("its free run diverges on records[0]'s input stretched 1.25 times about u0"));
+  CHECK(selection.table[1].score == std::numeric_limits<double>::infinity());
+  REQUIRE(selection.table[1].model.has_value());  // kept, for the user to look at
+  CHECK_FALSE(selection.table[1].model->try_simulate((bonl::kFreeRunStretch * u).eval(), simulated));
+  CHECK(selection.best.r() == 1);
+  CHECK(selection.best.try_simulate((bonl::kFreeRunStretch * u).eval(), simulated));
+
+  // refit(), select()'s last step, refuses the true structure on all the data with the same reason.
+  const bonl::SelectionData<double> data(records, {});
+  std::string why;
+  CHECK_FALSE(bonl::refit(grid[0], data, why).has_value());
+  CHECK_THAT(why, Catch::Matchers::Contains("diverges"));
+  // With only it to choose from, select says so rather than return it.
+  CHECK_THROWS_WITH(
+      bonl::select(std::vector<bonl::NonlinearFeedbackd>{grid[0]}, records),
+      Catch::Matchers::Contains("every candidate failed: none has a finite score and a bounded free run"));
+}
+
+TEST_CASE("select does not choose a model whose free run leaves ten half-ranges of the measured output", "[select]") {
+  // Data from an ARX gain of 1, and a model of gain 100 judged on them: its run goes about 100 half-ranges
+  // from the middle (oracle: computed here from the simulation).
+  bonl::ARXd model(1, 0, 1);
+  model.set_b(Eigen::VectorXd::Constant(1, 50.0));
+  model.set_a(Eigen::VectorXd::Constant(1, -0.5));
+  const Eigen::VectorXd u = bonl::signals::random_levels(600, 5, 1.0, 78);
+  Eigen::VectorXd y = (model.simulate(u) / 100.0).eval();
+  const bonl::Records<double> records{{u, y}};
+  const double middle = 0.5 * (y.maxCoeff() + y.minCoeff()), half = 0.5 * (y.maxCoeff() - y.minCoeff());
+  const Eigen::VectorXd run = model.simulate((bonl::kFreeRunStretch * u).eval());
+  const double furthest = (run.array() - middle).abs().maxCoeff() / half;
+  REQUIRE(furthest > 100.0);
+  const std::string why = bonl::detail::unbounded_free_run(model, records);
+  CHECK_THAT(why, Catch::Matchers::Contains("its free run on records[0]'s input goes"));
+  CHECK_THAT(why, Catch::Matchers::Contains("half-ranges of the measured output from its middle (at most 10)"));
+  // The same model scaled to the data is bounded.
+  model.set_b(Eigen::VectorXd::Constant(1, 0.5));
+  CHECK(bonl::detail::unbounded_free_run(model, records).empty());
+}

@@ -222,3 +222,27 @@ def test_bad_input_is_a_value_error(call, message):
     _, u, y = _system()
     with pytest.raises(ValueError, match=message):
         call(u, y)
+
+
+def test_a_model_whose_free_run_diverges_beyond_the_measured_inputs_is_not_chosen():
+    """y(k) = 0.5 y(k-1) + 0.17 u(k-1) + 0.5 y(k-1)^3 is stable for |u| <= 1 and diverges for inputs 1.25
+    times larger (the oracle: its own free run, here). Its structure fits the held-out data exactly and is
+    refused with the reason; the linear structure (r = 1) is chosen, as C++'s bonl::select chooses."""
+    truth = bonl.NonlinearFeedback(1, 0, 1, 3, 0, 1, 0, b=[0.17], a=[-0.5], f=[0.0, 0.5])
+    u = np.repeat(np.random.default_rng(4).uniform(-1, 1, 30), 40)  # long holds: time to diverge
+    y = truth.simulate(u)
+    assert np.all(np.isfinite(y))
+    with pytest.raises(bonl.NumericalError):
+        truth.simulate(1.25 * u)
+    candidates = [bonl.NonlinearFeedback(1, 0, 1, 3, 0, 1, 0), bonl.NonlinearFeedback(1, 0, 1, 1, 0, 1, 0)]
+    selection = bonl.select(candidates, u, y)
+    assert [row.orders["r"] for row in selection.table] == [1, 3]
+    refused = selection.table[1]
+    assert refused.score == math.inf and refused.model is not None
+    assert "free run diverges on records[0]'s input stretched 1.25 times about u0" in refused.error
+    assert selection.best.r == 1 and np.all(np.isfinite(selection.best.simulate(1.25 * u)))
+    cpp_table, cpp_best = bonl._bonl._select(candidates, bonl._bonl._selection_data(u, y))
+    assert [row[1][0] for row in cpp_table] == [row.score for row in selection.table]
+    np.testing.assert_array_equal(cpp_best.theta, selection.best.theta)
+    with pytest.raises(bonl.NumericalError, match="none has a finite score and a bounded free run"):
+        bonl.select(candidates[:1], u, y)

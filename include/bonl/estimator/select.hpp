@@ -13,6 +13,12 @@
 // The best is refitted on all the data. A candidate that cannot be fitted (more parameters than its
 // fit part has samples) or whose identification throws (NumericalError, ...) is kept in the table with
 // the reason and an infinite score; the others are unaffected.
+// A model whose free run is not bounded is never chosen: a good held-out score does not stop a model
+// that diverges elsewhere (on a short record's test part, for one). Bounded: from rest, on every record's input and on
+// the same input stretched kFreeRunStretch times about the model's input operating point u0 (inputs somewhat beyond
+// those measured), the simulated output stays within kFreeRunEnvelope half-ranges of the middle of
+// the record's measured output. A candidate that fails it keeps its model and gets the reason and an
+// infinite score; where the best candidate refitted on all the data fails it, the next one is refitted.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -34,6 +40,13 @@
 #include "record_view.hpp"
 
 namespace bonl {
+
+/// The free-run bound of select() (the file's header): how far, in half-ranges of a record's measured
+/// output from its middle, a candidate's simulated output may go.
+inline constexpr double kFreeRunEnvelope = 10.0;
+/// The free-run bound of select(): the records' inputs are also simulated stretched this many times
+/// about the model's input operating point, inputs somewhat beyond those measured.
+inline constexpr double kFreeRunStretch = 1.25;
 
 /// How select() ranks the candidate structures: by the free-run MSE on held-out data (Validation), or
 /// by Akaike's or the Bayesian information criterion on the fitted data (AIC, BIC).
@@ -213,7 +226,56 @@ double tail_simulation_mse(const Model& model, const Records<typename Model::Sca
   return std::isfinite(mse) ? mse : std::numeric_limits<double>::infinity();
 }
 
+/// Why `model`'s free run is not bounded on the records (the file's header says what bounded is), or
+/// "" where it is.
+template <class Model>
+std::string unbounded_free_run(const Model& model, const Records<typename Model::Scalar>& records) {
+  using Scalar = typename Model::Scalar;
+  typename Model::VectorX input, simulated;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const double low = static_cast<double>(records[i].y.minCoeff());
+    const double high = static_cast<double>(records[i].y.maxCoeff());
+    const double middle = 0.5 * (low + high);
+    const double half_range = 0.5 * (high - low);
+    for (const bool stretched : {false, true}) {
+      const Scalar u0 = static_cast<Scalar>(model.u0());
+      input = stretched ? ((records[i].u.array() - u0) * static_cast<Scalar>(kFreeRunStretch) + u0).matrix().eval()
+                        : records[i].u.eval();
+      const std::string where = "records[" + std::to_string(i) + "]'s input" +
+                                (stretched ? " stretched " + format_number(kFreeRunStretch) + " times about u0" : "");
+      if (!model.try_simulate(input, simulated)) return "its free run diverges on " + where;
+      const double furthest = static_cast<double>((simulated.array() - static_cast<Scalar>(middle)).abs().maxCoeff());
+      // A constant measured output has no range to measure the run by: finite is all that is asked.
+      if (half_range > 0.0 && furthest > kFreeRunEnvelope * half_range) {
+        return "its free run on " + where + " goes " + format_number(furthest / half_range) +
+               " half-ranges of the measured output from its middle (at most " + format_number(kFreeRunEnvelope) + ")";
+      }
+    }
+  }
+  return "";
+}
+
 }  // namespace detail
+
+/// The structure identified on all the records of `data`, if its free run there is bounded (the
+/// file's header): what select() makes of its best candidate. Otherwise none, and `why` says why (an
+/// identification that throws NumericalError, or the free run's bound).
+/// \param structure the candidate
+/// \param data the checked records and options
+/// \param why set to the reason where there is no model
+/// \return the model, or none
+template <class Model>
+std::optional<Model> refit(const Model& structure, const SelectionData<typename Model::Scalar>& data,
+                           std::string& why) {
+  try {
+    Model model = identify(structure, data.checked_records(), data.options().identify);
+    why = detail::unbounded_free_run(model, data.records());
+    if (why.empty()) return model;
+  } catch (const NumericalError& error) {
+    why = error.what();
+  }
+  return std::nullopt;
+}
 
 /// Identifies one candidate structure on the data's fit parts and scores it by the data's criterion:
 /// its row of the selection's table. A candidate with more parameters than the fit parts have samples,
@@ -241,6 +303,8 @@ SelectionCandidate<Model> score_candidate(const Model& structure, const Selectio
     row.error = error.what();
     return row;
   }
+  row.error = detail::unbounded_free_run(*row.model, data.records());
+  if (!row.error.empty()) return row;
   // The free run as it was fitted: from rest, or after identify's initialisation window.
   row.fit_mse =
       detail::tail_simulation_mse(*row.model, data.fit_records(), std::vector<Eigen::Index>(data.records().size(), 0),
@@ -263,8 +327,9 @@ SelectionCandidate<Model> score_candidate(const Model& structure, const Selectio
 }
 
 /// Scores every candidate structure (score_candidate(), on data.options().threads threads), ranks them
-/// best first and refits the best on all the records. Throws std::invalid_argument for no candidates,
-/// NumericalError if every candidate failed.
+/// best first and refits the best on all the records (refit(): where its free run is not bounded, the
+/// next, its row given the reason). Throws std::invalid_argument for no candidates, NumericalError if
+/// no candidate with a finite score has a bounded free run.
 /// \param candidates the structures to compare, at least one
 /// \param data the checked records and options
 /// \return the ranked table and the best structure identified on all the records
@@ -290,11 +355,23 @@ Selection<Model> select(const std::vector<Model>& candidates, const SelectionDat
                    [&](std::size_t a, std::size_t b) { return rows[a].score < rows[b].score; });
   std::vector<SelectionCandidate<Model>> table;
   for (std::size_t i : order) table.push_back(rows[i]);
-  if (!table.front().model) {
-    throw NumericalError("bonl: select: every candidate failed; the first: " + table.front().error);
+  std::optional<Model> best;
+  for (auto& row : table) {
+    if (!row.error.empty() || !(row.score < std::numeric_limits<double>::infinity())) break;  // the rest are worse
+    std::string why;
+    best = refit(row.structure, data, why);
+    if (best) break;
+    row.error = "refitted on all the records: " + why;
+    row.score = std::numeric_limits<double>::infinity();
   }
-  Model best = identify(candidates[order.front()], data.checked_records(), data.options().identify);
-  return {data.options().criterion, std::move(table), std::move(best)};
+  if (!best) {
+    throw NumericalError(
+        "bonl: select: every candidate failed: none has a finite score and a bounded free run; the first: " +
+        (table.front().error.empty() ? "its score is infinite" : table.front().error));
+  }
+  // Rows whose refit was refused go down with the failed ones.
+  std::stable_sort(table.begin(), table.end(), [](const auto& a, const auto& b) { return a.score < b.score; });
+  return {data.options().criterion, std::move(table), std::move(*best)};
 }
 
 /// select() on the records with the options, checked here (std::invalid_argument for bad options or

@@ -2702,6 +2702,51 @@ class _SelectionData:
     def __setstate__(self, arg0: tuple) -> None:
         ...
 @typing.overload
+def _refit(structure: ARX, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
+def _refit(structure: Hammerstein, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
+def _refit(structure: HammersteinWiener, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
+def _refit(structure: PseudoHammersteinWiener, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
+def _refit(structure: Wiener, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
+def _refit(structure: WienerHammerstein, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
+def _refit(structure: NonlinearFeedback, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
+def _refit(structure: PrandtlIshlinskiiHammerstein, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
+def _refit(structure: BoucWenFeedback, data: _SelectionData) -> tuple[typing.Any, typing.Any]:
+    """
+    bonl::refit: the structure identified on all of data's records where its free run there is bounded. Returns (model or None, why not or None).
+    """
+@typing.overload
 def _score_candidate(structure: ARX, data: _SelectionData) -> tuple:
     """
     bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. Returns (score, fit_mse, validation_mse or None, error or None, model or None).

@@ -1,17 +1,23 @@
 """The ``bonl identify`` and ``bonl simulate`` commands: from a data file to a model file and back.
 
-``bonl identify DATA.csv --input COL --output COL --out MODEL.json`` selects a model on the file's
-records with :func:`bonl.select` (its held-out last quarter scores the candidates) and writes the best
-as a model file. Which candidates:
+``bonl identify DATA.csv [MORE.csv ...] --input COL --output COL --out MODEL.json`` selects a model on
+the files' records with :func:`bonl.select` (their held-out last quarters score the candidates) and
+writes the best as a model file. Which candidates:
 
 - ``--model NAME --orders na=2 nb=1 ...``: that family at those orders; an order given as a list
   (``na=1,2,3``) makes a grid, an order not given takes :data:`DEFAULT_GRID`'s values;
 - ``--model NAME`` alone: that family over :data:`DEFAULT_GRID`;
 - neither: every family over :data:`DEFAULT_GRID` (small orders, about a hundred candidates).
 
-Beside the chosen model it always selects an ARX model on the same data and prints its figures, so a
-nonlinear model that does not beat a linear one shows. ``--test-from K`` keeps the samples from K on
-out of the selection and scores them as a test (the whole record simulated from rest).
+Several data files are several records (experiments) of one system, identified together. Beside the
+chosen model it always selects an ARX model on the same data and prints its figures, so a nonlinear
+model that does not beat a linear one shows. It prints the ranking's first rows (``--scores`` writes
+every candidate's, with why a candidate failed or was refused: a model whose free run is not bounded
+is never chosen, :func:`bonl.select`). Test records, never seen by the selection: ``--test FILE``
+(the same columns), or ``--test-from K``, the samples from K on of a single data file (the whole
+record simulated from rest). ``--window N`` scores the held-out parts and the test records after a
+state-initialisation window of N samples, as benchmarks do. The stages go to standard error, with a
+progress bar on a terminal.
 
 ``bonl simulate MODEL.json DATA.csv --input COL --out SIMULATED.csv`` writes a model's free run.
 """
@@ -19,12 +25,13 @@ out of the selection and scores them as a test (the whole record simulated from 
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import math
 import pathlib
 import sys
 import warnings
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -111,7 +118,9 @@ def candidates(model: Optional[str] = None, orders: Optional[Dict[str, List[int]
 
 def identify_arguments(parser: argparse.ArgumentParser) -> None:
     """The ``identify`` subcommand's arguments."""
-    parser.add_argument("data", help="the data file: one sample per row, the first row optionally the columns' names")
+    parser.add_argument("data", nargs="+",
+                        help="the data file(s) identified on: one sample per row, the first row optionally the "
+                             "columns' names; several files are several records (experiments) of one system")
     parser.add_argument("--input", required=True, help="the input's column: its name, or its 0-based position")
     parser.add_argument("--output", required=True, help="the output's column")
     parser.add_argument("--out", required=True, type=pathlib.Path, help="write the chosen model's file here (JSON)")
@@ -120,100 +129,221 @@ def identify_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--orders", nargs="+", default=[], metavar="NAME=VALUES",
                         help="orders of --model, each one value or a comma-separated list (a grid), "
                              "e.g. na=2 nb=1,2 nk=0; the others take the default grid's")
+    parser.add_argument("--test", action="append", default=[], type=pathlib.Path, metavar="FILE",
+                        help="a test record, never seen by the selection, scored after the choice (the same "
+                             "columns); may be given several times")
     parser.add_argument("--test-from", type=int, metavar="K",
-                        help="keep samples K on (0-based) out of the selection and score them as a test")
+                        help="one data file only: keep its samples K on (0-based) out of the selection and score "
+                             "them as a test")
+    parser.add_argument("--window", type=int, default=0, metavar="N",
+                        help="the state-initialisation window: the held-out parts and the test records are "
+                             "simulated after their first N samples, which set the model's state, and scored "
+                             "after them (default 0: simulated from rest)")
     parser.add_argument("--validation-fraction", type=float, default=0.25,
-                        help="the last part of the selection data that scores the candidates (default 0.25)")
+                        help="the last part of each record identified on that scores the candidates (default 0.25)")
     parser.add_argument("--operating-point", choices=("zero", "initial", "mean"), default="zero",
                         help="where the model's blocks are centred: at zero (default), at the first sample, "
                              "at the data's means")
     parser.add_argument("--delimiter", default=",", help="what separates the fields (default ',')")
-    parser.add_argument("--scores", type=pathlib.Path, help="also write the scores here (JSON)")
-    parser.add_argument("--figure", type=pathlib.Path, help="also draw measured against simulated output here")
+    parser.add_argument("--scores", type=pathlib.Path,
+                        help="also write the scores here (JSON): the chosen and the linear model's, and the "
+                             "ranking of every candidate")
+    parser.add_argument("--figure", type=pathlib.Path,
+                        help="also draw measured against simulated output of the first data file here")
+    parser.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
+                        help="a progress bar while the candidates are scored (default: when standard error is "
+                             "a terminal)")
 
 
-def _scores(model: Any, u: np.ndarray, y: np.ndarray, test_from: Optional[int]) -> Dict[str, Any]:
+#: How many rows of the ranking ``bonl identify`` prints (``--scores`` has them all).
+PRINTED_RANKS = 10
+
+
+@dataclasses.dataclass(frozen=True)
+class _Record:
+    """A record the command reads: where from, its samples, and where its scored part starts (a test
+    split off a data file by --test-from is the whole file, scored from there)."""
+
+    name: str
+    u: np.ndarray
+    y: np.ndarray
+    start: int = 0
+
+
+def _read(args: argparse.Namespace, path: Any) -> _Record:
+    u, y = read_columns(path, [args.input, args.output], delimiter=args.delimiter)
+    return _Record(str(path), u, y)
+
+
+def _records(args: argparse.Namespace) -> Tuple[List[_Record], List[_Record]]:
+    """The records identified on and the test records, from the files and --test-from, checked."""
+    if args.window < 0:
+        raise ValueError(f"bonl identify: --window must be >= 0, got {args.window}")
+    fitted = [_read(args, path) for path in args.data]
+    tests = [_read(args, path) for path in args.test]
+    if args.test_from is not None:
+        if len(fitted) > 1:
+            raise ValueError("bonl identify: --test-from splits one data file; with several, give the test "
+                             "records as --test FILE")
+        whole = fitted[0]
+        if not 1 <= args.test_from < whole.u.size:
+            raise ValueError(f"bonl identify: --test-from must be in 1..{whole.u.size - 1} (the file has "
+                             f"{whole.u.size} samples), got {args.test_from}")
+        fitted = [_Record(whole.name, whole.u[:args.test_from], whole.y[:args.test_from])]
+        tests.insert(0, _Record(f"{whole.name}, samples {args.test_from} on", whole.u, whole.y, args.test_from))
+    for record in fitted:
+        if float(np.ptp(record.u)) == 0.0:
+            raise ValueError(f"bonl identify: the input {args.input!r} is constant over the samples identified on "
+                             f"in {record.name}: nothing about the system can be learnt from it")
+    for record in tests:
+        if record.u.size - record.start <= args.window:
+            raise ValueError(f"bonl identify: the test record {record.name} must be longer than the window "
+                             f"({args.window} samples)")
+    return fitted, tests
+
+
+def _rms(error: np.ndarray) -> Optional[float]:
+    rms = float(np.sqrt(np.mean(error ** 2)))
+    return rms if math.isfinite(rms) else None
+
+
+def _free_run_rms(model: Any, record: _Record, start: int, window: int) -> Optional[float]:
+    """The RMS free-run error on a record's samples from ``start`` on: with a window, those samples
+    simulated after their first ``window``, which set the state; otherwise the whole record simulated
+    from rest (the part before ``start`` is the data fitted on). None where the simulation diverges."""
     try:
-        simulated = np.asarray(model.simulate(u), dtype=float).ravel()
+        if window:
+            u, y = record.u[start:], record.y[start:]
+            simulated = model.simulate(u[window:], initial=(u[:window], y[:window]))
+            return _rms(y[window:] - simulated)
+        simulated = np.asarray(model.simulate(record.u), dtype=float).ravel()
     except _bonl.NumericalError:
-        simulated = np.full(u.shape, math.nan)
-    parts = {"fitted_on": slice(0, test_from if test_from else u.size)}
-    if test_from:
-        parts["test"] = slice(test_from, u.size)
-    out: Dict[str, Any] = {}
-    for name, part in parts.items():
-        error = y[part] - simulated[part]
-        rms = float(np.sqrt(np.mean(error ** 2)))
-        out[name + "_rms"] = rms if math.isfinite(rms) else None
-    return out
+        return None
+    return _rms(record.y[start:] - simulated[start:])
+
+
+def _fitted_rms(model: Any, records: List[_Record]) -> Optional[float]:
+    """The RMS free-run error over the records identified on, each simulated whole from rest."""
+    squares = 0.0
+    for record in records:
+        rms = _free_run_rms(model, record, 0, 0)
+        if rms is None:
+            return None
+        squares += rms ** 2 * record.u.size
+    return math.sqrt(squares / sum(record.u.size for record in records))
+
+
+def _held_out_rms(row: Any) -> Optional[float]:
+    return math.sqrt(row.score) if row.error is None and math.isfinite(row.score) else None
+
+
+def _ranking(selection: Any) -> List[Dict[str, Any]]:
+    return [{"rank": rank, "model": row.name, "orders": row.orders, "params": row.num_params,
+             "held_out_rms": _held_out_rms(row), **({"chosen": True} if row is selection.chosen else {}),
+             **({"error": row.error} if row.error is not None else {})}
+            for rank, row in enumerate(selection.table, 1)]
 
 
 def identify_run(args: argparse.Namespace) -> int:
-    """Runs ``bonl identify``; prints the chosen model and the linear model's figures."""
-    u, y = read_columns(args.data, [args.input, args.output], delimiter=args.delimiter)
-    if args.test_from is not None and not 1 <= args.test_from < u.size:
-        raise ValueError(f"bonl identify: --test-from must be in 1..{u.size - 1} (the file has {u.size} samples), "
-                         f"got {args.test_from}")
-    end = args.test_from or u.size
+    """Runs ``bonl identify``; prints the ranking, the chosen model and the linear model's figures."""
+    fitted, tests = _records(args)
     structures = candidates(args.model, _parse_orders(args.orders))
-    options: Dict[str, Any] = {}
-    if args.operating_point != "zero":
-        options["operating_point"] = args.operating_point
-    u_fit, y_fit = u[:end], y[:end]
-    if float(np.ptp(u_fit)) == 0.0:
-        raise ValueError(f"bonl identify: the input {args.input!r} is constant over the samples identified on: "
-                         "nothing about the system can be learnt from it")
+    records = [(record.u, record.y) for record in fitted]
+    samples = sum(record.u.size for record in fitted)
+    progress = sys.stderr.isatty() if args.progress is None else args.progress
+    options: Dict[str, Any] = {} if args.operating_point == "zero" else {"operating_point": args.operating_point}
     with warnings.catch_warnings():
-        # The test part's extrapolation is counted below, not warned about per candidate.
+        # The test records' extrapolation is counted below, not warned about per candidate.
         warnings.simplefilter("ignore", _bonl.ExtrapolationWarning)
-        chosen = select(structures, u_fit, y_fit, validation_fraction=args.validation_fraction, progress=False,
-                        **options)
-        linear = select(candidates("ARX"), u_fit, y_fit, validation_fraction=args.validation_fraction,
-                        progress=False, **options)
+        _say(f"scoring {len(structures)} candidates on {len(fitted)} record(s) of {samples} samples, the last "
+             f"{args.validation_fraction:g} of each held out"
+             + (f", after a {args.window}-sample window" if args.window else ""))
+        chosen = select(structures, records=records, validation_fraction=args.validation_fraction,
+                        window=args.window, progress=progress, **options)
+        _say("scoring the linear (ARX) candidates beside it")
+        linear = select(candidates("ARX"), records=records, validation_fraction=args.validation_fraction,
+                        window=args.window, progress=progress, **options)
     best = chosen.best
-    if chosen.table[0].error is not None or not math.isfinite(chosen.table[0].score):
-        raise ValueError("bonl identify: no candidate could be identified: " + str(chosen.table[0].error))
     args.out.write_text(best.to_json() + "\n")
     with warnings.catch_warnings():
         # Said once below, with the count, instead of at each simulation of the record.
         warnings.simplefilter("ignore", _bonl.ExtrapolationWarning)
-        _report(args, u, y, best, chosen, linear, len(structures), end)
+        _report(args, fitted, tests, chosen, linear, len(chosen.table))
     return 0
 
 
-def _report(args: argparse.Namespace, u: np.ndarray, y: np.ndarray, best: Any, chosen: Any, linear: Any,
-            count: int, end: int) -> None:
-    """Prints the chosen model's summary and the linear model's figures; writes the scores and the figure."""
-    report = {
-        "data": str(args.data),
-        "samples": int(u.size),
-        "test_from": args.test_from,
-        "model": type(best).__name__,
-        "orders": named_orders(best),
-        "candidates": count,
-        "held_out_rms": math.sqrt(chosen.table[0].score),
-        **_scores(best, u, y, args.test_from),
-        "linear": {"orders": named_orders(linear.best), "held_out_rms": math.sqrt(linear.table[0].score),
-                   **_scores(linear.best, u, y, args.test_from)},
+def _say(text: str) -> None:
+    """A stage of a long run, on standard error (standard output has the results)."""
+    sys.stderr.write(f"bonl identify: {text}\n")
+    sys.stderr.flush()
+
+
+def _model_report(args: argparse.Namespace, model: Any, selection: Any, fitted: List[_Record],
+                  tests: List[_Record]) -> Dict[str, Any]:
+    return {
+        "orders": named_orders(model),
+        "held_out_rms": _held_out_rms(selection.chosen),
+        "fitted_on_rms": _fitted_rms(model, fitted),
+        "tests": [{"name": record.name, "rms": _free_run_rms(model, record, record.start, args.window),
+                   "inputs_outside_range": int(model.extrapolated_samples(record.u[record.start:]))}
+                  for record in tests],
     }
-    print(summary(best, u, y, test_from=args.test_from))
-    if args.test_from:
-        report["test_inputs_outside_range"] = outside = int(best.extrapolated_samples(u[args.test_from:]))
-        if outside:
-            print(f"  {outside} test samples' inputs lie outside the range identified on: the model extrapolates there")
-    print(f"  selected among {count} candidates on samples 0-{end - 1}, the last "
-          f"{args.validation_fraction:g} of them held out: RMS error there {report['held_out_rms']:.6g}")
+
+
+def _report(args: argparse.Namespace, fitted: List[_Record], tests: List[_Record], chosen: Any, linear: Any,
+            count: int) -> None:
+    """Prints the ranking, the chosen model's summary and the linear model's figures; writes the scores
+    and the figure."""
+    best = chosen.best
+    report = {
+        "data": [record.name for record in fitted],
+        "samples": [int(record.u.size) for record in fitted],
+        "window": args.window,
+        "model": type(best).__name__,
+        "candidates": count,
+        **_model_report(args, best, chosen, fitted, tests),
+        "linear": _model_report(args, linear.best, linear, fitted, tests),
+        "ranking": _ranking(chosen),
+    }
+    ranking = report["ranking"]
+    print(f"ranking by held-out RMS error ({min(PRINTED_RANKS, count)} best of {count}; --scores has them all; "
+          "* the chosen):")
+    for row in ranking[:PRINTED_RANKS]:
+        orders = ", ".join(f"{k}={v}" for k, v in row["orders"].items())
+        score = f"{row['held_out_rms']:.6g}" if row["held_out_rms"] is not None else row.get("error", "diverged")
+        mark = "*" if row.get("chosen") else " "
+        print(f" {mark}{row['rank']:>4}  {row['model']:<28} {orders:<40} {row['params']:>4} params  {score}")
+    refused = [row for row in ranking if "error" in row]
+    if refused:
+        print(f"  {len(refused)} candidate(s) failed or were refused, e.g. {refused[0]['model']}: {refused[0]['error']}")
+    # The first data file whole (with --test-from, its test part marked).
+    whole = tests[0] if args.test_from is not None else fitted[0]
+    print(summary(best, whole.u, whole.y, test_from=args.test_from) if len(fitted) == 1 else summary(best))
+    if len(fitted) > 1:
+        print(f"  free run from rest over the {len(fitted)} records: RMS error {_format(report['fitted_on_rms'])}")
+    for test in report["tests"]:
+        print(f"  test {test['name']}: RMS error {_format(test['rms'])}")
+        if test["inputs_outside_range"]:
+            print(f"    {test['inputs_outside_range']} of its inputs lie outside the range identified on: "
+                  "the model extrapolates there")
+    print(f"  selected among {count} candidates, the last {args.validation_fraction:g} of each record held out: "
+          f"RMS error there {_format(report['held_out_rms'])}")
     linear_orders = ", ".join(f"{k}={v}" for k, v in report["linear"]["orders"].items())
-    print(f"linear model beside it: ARX ({linear_orders}), held-out RMS error {report['linear']['held_out_rms']:.6g}"
-          + (f", test RMS error {report['linear']['test_rms']:.6g}" if args.test_from else ""))
+    print(f"linear model beside it: ARX ({linear_orders}), held-out RMS error "
+          f"{_format(report['linear']['held_out_rms'])}"
+          + "".join(f", test {t['name']} {_format(t['rms'])}" for t in report["linear"]["tests"]))
     print(f"wrote {args.out}")
     if args.scores:
         args.scores.write_text(json.dumps(report, indent=1) + "\n")
         print(f"wrote {args.scores}")
     if args.figure:
-        plot_fit(best, u, y, test_from=args.test_from, path=args.figure,
-                 title=f"{type(best).__name__} on {pathlib.Path(args.data).name}")
+        plot_fit(best, whole.u, whole.y, test_from=args.test_from, path=args.figure,
+                 title=f"{type(best).__name__} on {pathlib.Path(whole.name).name}")
         print(f"wrote {args.figure}")
+
+
+def _format(value: Optional[float]) -> str:
+    return f"{value:.6g}" if value is not None else "diverged"
 
 
 def simulate_arguments(parser: argparse.ArgumentParser) -> None:

@@ -136,7 +136,8 @@ def test_the_pages_examples_run_as_written(page, tmp_path, monkeypatch, capsys):
     for written in ("model.json", "scores.json", "fit.png", "simulated.csv"):
         assert (tmp_path / written).is_file(), written
     scores = json.loads((tmp_path / "scores.json").read_text())
-    assert scores["test_rms"] < scores["linear"]["test_rms"], "the chosen model is not below the linear one on the test"
+    (test,), (linear,) = scores["tests"], scores["linear"]["tests"]
+    assert test["rms"] < linear["rms"], "the chosen model is not below the linear one on the test"
 
 
 def test_every_relative_link_of_the_documentation_resolves():

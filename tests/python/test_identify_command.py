@@ -60,16 +60,17 @@ def test_identify_scores_are_what_the_model_file_and_select_give(hammerstein_fil
     u, y = bonl.read_columns(path, ["valve", "speed"])
     model = bonl.load_model((tmp_path / "m.json").read_text())
     test_rms = math.sqrt(float(np.mean((y[2000:] - model.simulate(u)[2000:]) ** 2)))
-    assert scores["test_rms"] == pytest.approx(test_rms, rel=1e-12)
+    [test] = scores["tests"]
+    assert test["name"].endswith("samples 2000 on") and test["rms"] == pytest.approx(test_rms, rel=1e-12)
     linear = bonl.select(bonl.grid(bonl.ARX, na=[1, 2, 3], nb=[1, 2], nk=[0, 1]), u[:2000], y[:2000], progress=False)
     assert scores["linear"]["held_out_rms"] == pytest.approx(math.sqrt(linear.table[0].score), rel=1e-12)
-    assert scores["test_rms"] < 1e-3 * scores["linear"]["test_rms"]
+    assert test["rms"] < 1e-3 * scores["linear"]["tests"][0]["rms"]
     assert (tmp_path / "fit.png").stat().st_size > 10_000
 
 
 def test_identify_without_a_model_selects_over_every_family(tmp_path):
     """No --model: every family over the default grid; on a short record of a Wiener-like system the
-    choice is written and is one of bonl.MODELS."""
+    choice is written and is one of bonl.MODELS, and the ranking has every candidate."""
     u = random_levels(600, 5, 1.0, 5)
     truth = known_models("small")["Wiener"]
     path = _csv(tmp_path / "w.csv", {"u": u, "y": truth.simulate(u)})
@@ -79,7 +80,7 @@ def test_identify_without_a_model_selects_over_every_family(tmp_path):
     expected = len(bonl.identify_command.candidates())
     grid = bonl.identify_command.DEFAULT_GRID
     at_paper = lambda m: dict(zip(m.ORDERS, m.PAPER_ORDERS))  # noqa: E731  (orders the grid does not name)
-    assert scores["candidates"] == expected and expected == sum(
+    assert scores["candidates"] == expected == len(scores["ranking"]) and expected == sum(
         len(bonl.grid(m, **{n: grid.get(n, [at_paper(m)[n]]) for n in m.ORDERS})) for m in bonl.MODELS)
     assert type(bonl.load_model((tmp_path / "m.json").read_text())) in bonl.MODELS
 
@@ -98,14 +99,58 @@ def test_identify_without_a_model_selects_over_every_family(tmp_path):
     (["--input", "u", "--output", "y", "--orders", "na=2"], "u,y\n1,2\n2,3\n", "--orders needs --model"),
     (["--input", "u", "--output", "y", "--model", "ARX", "--orders", "na:2"], "u,y\n1,2\n2,3\n", "NAME=VALUE"),
     (["--input", "u", "--output", "y", "--test-from", "7"], "u,y\n1,2\n2,3\n", "--test-from must be in 1..1"),
+    (["--input", "u", "--output", "y", "--window", "-1"], "u,y\n1,2\n2,3\n", "--window must be >= 0, got -1"),
+    (["--input", "u", "--output", "y", "--test", "DATA", "--window", "2"], "u,y\n1,2\n2,3\n",
+     "must be longer than the window (2 samples)"),
+    (["--input", "u", "--output", "y", "--test", "missing.csv"], "u,y\n1,2\n2,3\n", "missing.csv: no such file"),
 ])
 def test_identify_says_what_is_wrong_with_its_input(tmp_path, capsys, arguments, content, message):
     path = tmp_path / "data.csv"
     if content is not None:
         path.write_text(content)
+    arguments = [str(path) if a == "DATA" else a for a in arguments]
     assert main(["identify", str(path), *arguments, "--out", str(tmp_path / "m.json")]) == 1
     assert message in capsys.readouterr().err
     assert not (tmp_path / "m.json").exists()
+
+
+def test_identify_on_several_files_scores_test_files_after_the_window(tmp_path, capsys):
+    """Two estimation files are two records of one selection, a third file is the test: the scores file's
+    figures recomputed from outside (bonl.select on the records with the same window, the model file's
+    simulation after the test's window), the ranking every candidate's, best first, and printed."""
+    truth = known_models("small")["Hammerstein"]
+    paths = []
+    for seed in (11, 12, 13):
+        u = random_levels(800, 5, 1.0, seed)
+        y = truth.simulate(u) + np.random.default_rng(seed).normal(0.0, 0.01, u.size)
+        paths.append(_csv(tmp_path / f"r{seed}.csv", {"u": u, "y": y}))
+    status = main(["identify", str(paths[0]), str(paths[1]), "--test", str(paths[2]), "--input", "u", "--output", "y",
+                   "--model", "Hammerstein", "--orders", "na=1,2", "nb=1", "nk=1,2", "r=2", "--window", "10",
+                   "--out", str(tmp_path / "m.json"), "--scores", str(tmp_path / "s.json"), "--no-progress"])
+    assert status == 0
+    scores = json.loads((tmp_path / "s.json").read_text())
+    records = [tuple(bonl.read_columns(p, ["u", "y"])) for p in paths]
+    expected = bonl.select(bonl.grid(bonl.Hammerstein, na=[1, 2], nb=1, nk=[1, 2], r=2), records=records[:2],
+                           window=10, progress=False)
+    assert [(r["model"], r["orders"]) for r in scores["ranking"]] == [(r.name, r.orders) for r in expected.table]
+    assert [r["held_out_rms"] for r in scores["ranking"]] == pytest.approx(
+        [math.sqrt(r.score) for r in expected.table], rel=1e-12)
+    assert scores["data"] == [str(paths[0]), str(paths[1])] and scores["samples"] == [800, 800]
+    model = bonl.load_model((tmp_path / "m.json").read_text())
+    np.testing.assert_array_equal(model.theta, expected.best.theta)
+    u, y = records[2]
+    simulated = model.simulate(u[10:], initial=(u[:10], y[:10]))
+    [test] = scores["tests"]
+    assert test["name"] == str(paths[2])
+    assert test["rms"] == pytest.approx(math.sqrt(float(np.mean((y[10:] - simulated) ** 2))), rel=1e-12)
+    assert test["rms"] < 0.02 and scores["linear"]["tests"][0]["rms"] > 2 * test["rms"]
+    captured = capsys.readouterr()
+    assert "ranking by held-out RMS error (4 best of 4" in captured.out
+    assert f"test {paths[2]}: RMS error {test['rms']:.6g}" in captured.out
+    assert "bonl identify: scoring 4 candidates on 2 record(s) of 1600 samples" in captured.err
+    assert main(["identify", str(paths[0]), str(paths[1]), "--input", "u", "--output", "y", "--test-from", "100",
+                 "--out", str(tmp_path / "x.json")]) == 1
+    assert "--test-from splits one data file" in capsys.readouterr().err
 
 
 def test_simulate_writes_the_model_files_free_run(hammerstein_file, tmp_path, capsys):

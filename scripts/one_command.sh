@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The one command (`python -m bonl identify`, no model, no orders) on every measured data set's
+# estimation records, scored by each data set's protocol beside the data-set script's hand-made grids
+# and the NARX peer (examples/datasets/one_command.py). Writes docs/results/one_command.json and
+# one_command_summary.md, spliced into docs/lab/benchmarks.md. Needs `pip install .` (scripts/test.sh
+# makes build/venv) and the data-set scripts' committed results (scripts/datasets.sh); each data set
+# takes up to a few minutes on 2 cores. tests/python/test_one_command.py checks the committed figures.
+#
+#   bash scripts/one_command.sh [--quick]
+#
+# --quick (the CI's smoke run): one ARX structure on the estimation records' first samples, into a
+# temporary folder; nothing committed is touched and the figures are not judged.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source scripts/deps.sh
+python=${PYTHON:-build/venv/bin/python}
+
+quick=()
+results=docs/results page=docs/lab/benchmarks.md
+case ${1:-} in
+  --quick)
+    quick=(--quick)
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+    results=$tmp
+    cp docs/lab/benchmarks.md "$tmp/benchmarks.md"
+    page=$tmp/benchmarks.md ;;
+  "") ;;
+  *) echo "usage: bash scripts/one_command.sh [--quick]" >&2; exit 2 ;;
+esac
+
+step "examples/datasets/one_command.py ${quick[*]}"
+"$python" examples/datasets/one_command.py --json "$results/one_command.json" \
+  --markdown "$results/one_command_summary.md" "${quick[@]}"
+bonl_splice_summary one_command_summary "$results/one_command_summary.md" "$page"
+"$python" -c 'import sys; sys.exit(open(sys.argv[1]).read() not in open(sys.argv[2]).read())' \
+  "$results/one_command_summary.md" "$page" ||
+  { echo "one_command.sh: the table was not spliced into $page" >&2; exit 1; }
+step "wrote $results/one_command.json and one_command_summary.md, updated $page"

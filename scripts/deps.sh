@@ -18,10 +18,15 @@ BONL_RUFF=ruff==0.17.6
 # working folder and that folder itself is not hashed, so a fresh clone in another folder hits
 # the objects an earlier clone compiled (the debug information of a hit then names that clone's
 # build folder). The cache is in ccache's default folder (~/.cache/ccache, or CCACHE_DIR). An empty
-# CMAKE_CXX_COMPILER_LAUNCHER turns the cache off.
-if command -v ccache >/dev/null 2>&1 && [[ -z ${CMAKE_CXX_COMPILER_LAUNCHER+set} ]]; then
-  export CMAKE_CXX_COMPILER_LAUNCHER=ccache
-fi
+# CMAKE_CXX_COMPILER_LAUNCHER turns the cache off. Set here where ccache is installed already, and
+# again by bonl_ensure_deps once it has installed it (on a new machine the first build would
+# otherwise compile without the cache and fill nothing).
+bonl_use_ccache() {
+  if command -v ccache >/dev/null 2>&1 && [[ -z ${CMAKE_CXX_COMPILER_LAUNCHER+set} ]]; then
+    export CMAKE_CXX_COMPILER_LAUNCHER=ccache
+  fi
+}
+bonl_use_ccache
 CCACHE_BASEDIR=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 export CCACHE_BASEDIR
 export CCACHE_NOHASHDIR=1
@@ -73,6 +78,7 @@ bonl_ensure_packages() {
 # The packages of BONL_APT_PACKAGES (scripts/test.sh, scripts/demo.sh, ...), as bonl_ensure_packages.
 bonl_ensure_deps() {
   bonl_ensure_packages "${BONL_APT_PACKAGES[@]}"
+  bonl_use_ccache
 }
 
 # build/venv with the given PyPI packages and this package installed from the working tree (pip

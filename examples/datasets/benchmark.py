@@ -117,6 +117,7 @@ def run(benchmark: Benchmark, families: Optional[Sequence[type]] = None) -> dict
 
 def _run(benchmark, families):
     rows = []
+    unbounded = {}  # families none of whose candidates has a bounded free run, and why (bonl.select)
     for family in families or bonl.MODELS:
         orders = benchmark.grid_of(family)
         if orders is None:
@@ -130,8 +131,17 @@ def _run(benchmark, families):
         start = time.perf_counter()
         scoring = (dict(window=benchmark.window) if benchmark.criterion == "validation"
                    else dict(criterion=benchmark.criterion))
-        selections = [(bonl.select(candidates, records=benchmark.estimation, **scoring, **options), options)
-                      for options in identify]
+        selections, refused = [], []
+        for options in identify:
+            try:
+                selections.append((bonl.select(candidates, records=benchmark.estimation, **scoring, **options),
+                                   options))
+            except bonl.NumericalError as error:  # every candidate failed or was refused: the reason
+                refused.append(str(error))
+        if not selections:
+            unbounded[family.__name__] = refused[0]
+            print(f"{benchmark.name}: {family.__name__}: no model chosen: {refused[0]}", flush=True)
+            continue
         selection, options = min(selections, key=lambda pair: pair[0].table[0].score)
         seconds = time.perf_counter() - start
         best = selection.best
@@ -166,6 +176,7 @@ def _run(benchmark, families):
                    **({"periods": t.periods} if t.periods > 1 else {})} for t in benchmark.tests],
         "published": benchmark.published,
         "rows": rows,
+        **({"no_model": unbounded} if unbounded else {}),
     }
 
 

@@ -25,6 +25,8 @@ def table(results):
         cells = [_figure(row["test_rms"][name]) + (f" (from rest {_figure(rest[name])})" if name in rest else "")
                  for name in tests]
         lines.append(f"| {row['model']} | {orders}{', ' + options if options else ''} | " + " | ".join(cells) + " |")
+    for family, why in results.get("no_model", {}).items():
+        lines.append(f"| {family} | none chosen: {why} |" + " |" * len(tests))
     if any(test["window"] for test in results["tests"]):
         lines += ["", "(from rest: the same samples with the whole test record simulated from rest at the "
                   "operating point instead of after the initial-state window)"]

@@ -36,6 +36,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from . import _bonl
+from ._bonl import metrics as _metrics
 from .data_file import read_columns, write_columns
 from .report import plot_fit, summary
 from .selection import grid, named_orders, select
@@ -202,31 +203,32 @@ def _records(args: argparse.Namespace) -> Tuple[List[_Record], List[_Record]]:
     return fitted, tests
 
 
-def _rms(error: np.ndarray) -> Optional[float]:
-    rms = float(np.sqrt(np.mean(error ** 2)))
+def _rms(y: np.ndarray, simulated: np.ndarray) -> Optional[float]:
+    """RMS error, None where it overflows."""
+    rms = _metrics.rmse(y, simulated)
     return rms if math.isfinite(rms) else None
 
 
-def _free_run_rms(model: Any, record: _Record, start: int, window: int) -> Optional[float]:
-    """The RMS free-run error on a record's samples from ``start`` on: with a window, those samples
-    simulated after their first ``window``, which set the state; otherwise the whole record simulated
-    from rest (the part before ``start`` is the data fitted on). None where the simulation diverges."""
+def _free_run_rms(model: Any, record: _Record, window: int) -> Optional[float]:
+    """The RMS free-run error on a record's samples from ``record.start`` on: with a window, those
+    samples simulated after their first ``window``, which set the state; otherwise the whole record
+    simulated from rest (the part before ``start`` is the data fitted on). None where the simulation
+    diverges."""
+    u, y = record.u[record.start:], record.y[record.start:]
     try:
         if window:
-            u, y = record.u[start:], record.y[start:]
-            simulated = model.simulate(u[window:], initial=(u[:window], y[:window]))
-            return _rms(y[window:] - simulated)
+            return _rms(y[window:], model.simulate(u[window:], initial=(u[:window], y[:window])))
         simulated = np.asarray(model.simulate(record.u), dtype=float).ravel()
     except _bonl.NumericalError:
         return None
-    return _rms(record.y[start:] - simulated[start:])
+    return _rms(y, simulated[record.start:])
 
 
 def _fitted_rms(model: Any, records: List[_Record]) -> Optional[float]:
     """The RMS free-run error over the records identified on, each simulated whole from rest."""
     squares = 0.0
     for record in records:
-        rms = _free_run_rms(model, record, 0, 0)
+        rms = _free_run_rms(model, record, 0)
         if rms is None:
             return None
         squares += rms ** 2 * record.u.size
@@ -239,8 +241,7 @@ def _held_out_rms(row: Any) -> Optional[float]:
 
 def _ranking(selection: Any) -> List[Dict[str, Any]]:
     return [{"rank": rank, "model": row.name, "orders": row.orders, "params": row.num_params,
-             "held_out_rms": _held_out_rms(row), **({"chosen": True} if row is selection.chosen else {}),
-             **({"error": row.error} if row.error is not None else {})}
+             "held_out_rms": _held_out_rms(row), **({"error": row.error} if row.error is not None else {})}
             for rank, row in enumerate(selection.table, 1)]
 
 
@@ -282,9 +283,9 @@ def _model_report(args: argparse.Namespace, model: Any, selection: Any, fitted: 
                   tests: List[_Record]) -> Dict[str, Any]:
     return {
         "orders": named_orders(model),
-        "held_out_rms": _held_out_rms(selection.chosen),
+        "held_out_rms": _held_out_rms(selection.table[0]),
         "fitted_on_rms": _fitted_rms(model, fitted),
-        "tests": [{"name": record.name, "rms": _free_run_rms(model, record, record.start, args.window),
+        "tests": [{"name": record.name, "rms": _free_run_rms(model, record, args.window),
                    "inputs_outside_range": int(model.extrapolated_samples(record.u[record.start:]))}
                   for record in tests],
     }
@@ -306,13 +307,11 @@ def _report(args: argparse.Namespace, fitted: List[_Record], tests: List[_Record
         "ranking": _ranking(chosen),
     }
     ranking = report["ranking"]
-    print(f"ranking by held-out RMS error ({min(PRINTED_RANKS, count)} best of {count}; --scores has them all; "
-          "* the chosen):")
+    print(f"ranking by held-out RMS error ({min(PRINTED_RANKS, count)} best of {count}; --scores has them all):")
     for row in ranking[:PRINTED_RANKS]:
         orders = ", ".join(f"{k}={v}" for k, v in row["orders"].items())
         score = f"{row['held_out_rms']:.6g}" if row["held_out_rms"] is not None else row.get("error", "diverged")
-        mark = "*" if row.get("chosen") else " "
-        print(f" {mark}{row['rank']:>4}  {row['model']:<28} {orders:<40} {row['params']:>4} params  {score}")
+        print(f"  {row['rank']:>4}  {row['model']:<28} {orders:<40} {row['params']:>4} params  {score}")
     refused = [row for row in ranking if "error" in row]
     if refused:
         print(f"  {len(refused)} candidate(s) failed or were refused, e.g. {refused[0]['model']}: {refused[0]['error']}")

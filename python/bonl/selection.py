@@ -70,11 +70,6 @@ class Selection:
     table: List[Candidate]          #: best first
     best: Any                       #: the best structure identified on all the data
 
-    @property
-    def chosen(self) -> Candidate:
-        """The row of the structure ``best`` is: the table's first."""
-        return self.table[0]
-
     def __str__(self) -> str:
         lines = [f"{'rank':>4}  {'model':<24} {'orders':<32} {'params':>6} {'score':>12}"]
         for rank, row in enumerate(self.table, 1):
@@ -162,15 +157,15 @@ def _progress(total: int, progress: Optional[bool]):
     return tqdm(total=total, desc="bonl.select", unit="model")
 
 
-def _score_all(jobs: Sequence[Tuple[Any, Any]], executor: Optional[concurrent.futures.Executor] = None,
-              progress: Optional[bool] = None) -> List[Candidate]:
-    """Scores each (structure, data) pair, data from ``_bonl._selection_data``: the candidates' rows, in
-    their order (bonl.select's work).
+def _score_all(structures: Sequence[Any], data: Any, executor: Optional[concurrent.futures.Executor] = None,
+               progress: Optional[bool] = None) -> List[Candidate]:
+    """Scores each structure on ``data`` (``_bonl._selection_data``): the candidates' rows, in their order.
 
     Parameters
     ----------
-    jobs : sequence of (structure, data)
-        The candidates, each with the checked records and options it is scored on.
+    structures : sequence of bonl models
+        The candidates.
+    data : the checked records and options they are scored on
     executor : concurrent.futures.Executor, optional
         Where they run; default: threads on the local cores.
     progress : bool, optional
@@ -179,13 +174,13 @@ def _score_all(jobs: Sequence[Tuple[Any, Any]], executor: Optional[concurrent.fu
     Returns
     -------
     list of Candidate
-        One row per job, in the jobs' order (a job the executor lost: its row says so).
+        One row per structure, in their order (one the executor lost: its row says so).
     """
     own = executor is None
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) if own else executor
-    bar = _progress(len(jobs), progress)
+    bar = _progress(len(structures), progress)
     try:
-        futures = [pool.submit(_score, structure, data) for structure, data in jobs]
+        futures = [pool.submit(_score, structure, data) for structure in structures]
         index = {future: i for i, future in enumerate(futures)}
         rows: List[Optional[Candidate]] = [None] * len(futures)
         for future in concurrent.futures.as_completed(futures):
@@ -193,7 +188,7 @@ def _score_all(jobs: Sequence[Tuple[Any, Any]], executor: Optional[concurrent.fu
             try:
                 rows[i] = future.result()
             except Exception as error:  # the executor lost this candidate: report it, keep the rest
-                rows[i] = _failed(jobs[i][0], f"executor: {type(error).__name__}: {error}", math.nan)
+                rows[i] = _failed(structures[i], f"executor: {type(error).__name__}: {error}", math.nan)
             if bar is not None:
                 bar.update(1)
     finally:
@@ -204,9 +199,8 @@ def _score_all(jobs: Sequence[Tuple[Any, Any]], executor: Optional[concurrent.fu
     return rows
 
 
-def _refit_best(table: List[Candidate], structures: Sequence[Any],
-               data: Sequence[Any]) -> Tuple[List[Candidate], Any, Candidate]:
-    """The best of a ranked table refitted on all of its data's records, as bonl::select does it
+def _refit_best(table: List[Candidate], structures: Sequence[Any], data: Any) -> Tuple[List[Candidate], Any]:
+    """The best of a ranked table refitted on all of ``data``'s records, as bonl::select does it
     (bonl::refit): where that one's free run there is not bounded, the next, its row given the reason.
 
     Parameters
@@ -215,14 +209,13 @@ def _refit_best(table: List[Candidate], structures: Sequence[Any],
         Best first.
     structures : sequence of bonl models
         The structure of each row, in the table's order.
-    data : sequence
-        Each row's checked records and options (``_bonl._selection_data``) to refit on.
+    data : the checked records and options (``_bonl._selection_data``) to refit on
 
     Returns
     -------
-    (list of Candidate, model, Candidate)
-        The table again, refused refits moved down with the failed rows (by score, stably); the model;
-        and its row.
+    (list of Candidate, model)
+        The table again, refused refits moved down with the failed rows (by score, stably), and the
+        model.
 
     Raises
     ------
@@ -230,20 +223,19 @@ def _refit_best(table: List[Candidate], structures: Sequence[Any],
         No row has a finite score and a bounded free run.
     """
     table = list(table)
-    best = chosen = None
+    best = None
     for position, row in enumerate(table):
         if row.error is not None or not row.score < math.inf:
             break  # the rest are worse
-        best, why = _bonl._refit(structures[position], data[position])
+        best, why = _bonl._refit(structures[position], data)
         if best is not None:
-            chosen = row
             break
         table[position] = dataclasses.replace(row, score=math.inf, error="refitted on all the records: " + why)
     if best is None:
         raise _bonl.NumericalError("bonl: select: every candidate failed: none has a finite score and a bounded "
                                    "free run; the first: " + (table[0].error or "its score is infinite"))
     table.sort(key=lambda row: row.score)  # stable: refused refits go down with the failed rows
-    return table, best, chosen
+    return table, best
 
 
 def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
@@ -302,8 +294,8 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
     data = _bonl._selection_data(u, y, records=records, criterion=criterion, validation_fraction=validation_fraction, window=window,
                                  **identify_options)
 
-    rows = _score_all([(structure, data) for structure in structures], executor, progress)
+    rows = _score_all(structures, data, executor, progress)
     # Best first; ties (and failures, all inf) keep the candidates' order, as bonl::select ranks them.
     order = sorted(range(len(rows)), key=lambda i: rows[i].score)
-    table, best, _ = _refit_best([rows[i] for i in order], [structures[i] for i in order], [data] * len(rows))
+    table, best = _refit_best([rows[i] for i in order], [structures[i] for i in order], data)
     return Selection(criterion, table, best)

@@ -14,11 +14,12 @@
 // fit part has samples) or whose identification throws (NumericalError, ...) is kept in the table with
 // the reason and an infinite score; the others are unaffected.
 // A model whose free run is not bounded is never chosen: a good held-out score does not stop a model
-// that diverges elsewhere (on a short record's test part, for one). Bounded: from rest, on every record's input and on
-// the same input stretched kFreeRunStretch times about the model's input operating point u0 (inputs somewhat beyond
-// those measured), the simulated output stays within kFreeRunEnvelope half-ranges of the middle of
-// the record's measured output. A candidate that fails it keeps its model and gets the reason and an
-// infinite score; where the best candidate refitted on all the data fails it, the next one is refitted.
+// that diverges elsewhere (on a short record's test part, for one). Bounded: from rest, on every
+// record's input and on the same input stretched kFreeRunStretch times about the model's input
+// operating point u0 (inputs somewhat beyond those measured), the simulated output stays within
+// kFreeRunEnvelope half-ranges of the middle of the record's measured output. A candidate that fails
+// it keeps its model and gets the reason and an infinite score; where the best candidate refitted on
+// all the data fails it, the next one is refitted.
 
 #include <Eigen/Core>
 #include <algorithm>

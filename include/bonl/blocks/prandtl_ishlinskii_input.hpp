@@ -6,12 +6,17 @@
 // model's free run and its inverse both step this block, so the w the inverse computes for a command
 // is the w the model makes of it. For fixed states, u -> w(k) is continuous: the polynomial plus, for
 // each play, P_i between its breakpoints u = P_i - r_i and u = P_i + r_i and u -+ r_i beyond them.
+// Beyond an input range (set_input_range: the range the model was identified on) the polynomial
+// continues linearly (linear_continuation.hpp); the plays need no continuation (beyond their
+// thresholds they follow u with slope 1).
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 
 #include "../detail/validate.hpp"
+#include "linear_continuation.hpp"
 #include "play_operators.hpp"
 
 namespace bonl {
@@ -72,10 +77,27 @@ class PrandtlIshlinskiiInput {
   /// \param u the input u(k)
   /// \return w(k)
   Scalar peek(Scalar u) const noexcept { return polynomial(u) + m_plays.output_for(u, m_g); }
-  /// sum_l f_l u^l (Horner's scheme).
+  /// Where the polynomial continues linearly: beyond [low, high] (the file's header); (-inf, inf),
+  /// the default, for none.
+  /// \param low the range's low end
+  /// \param high the range's high end
+  void set_input_range(Scalar low, Scalar high) noexcept {
+    m_low = low;
+    m_high = high;
+  }
+  /// sum_l f_l u^l (Horner's scheme), continued linearly beyond the input range.
   /// \param u the input u(k)
   /// \return the polynomial part of w(k)
   Scalar polynomial(Scalar u) const noexcept {
+    if (detail::beyond_range(u, m_low, m_high)) {
+      const Scalar edge = u > m_high ? m_high : m_low;
+      Scalar w = Scalar(0), slope = Scalar(0);
+      for (Eigen::Index l = m_f.size() - 1; l >= 0; --l) {  // N and N' together
+        slope = slope * edge + w;
+        w = w * edge + m_f[l];
+      }
+      return w + slope * (u - edge);
+    }
     Scalar w = Scalar(0);
     for (Eigen::Index l = m_f.size() - 1; l >= 0; --l) w = w * u + m_f[l];
     return w;
@@ -85,6 +107,8 @@ class PrandtlIshlinskiiInput {
   Coeffs m_f;
   Weights m_g;
   Plays m_plays;
+  Scalar m_low = -std::numeric_limits<Scalar>::infinity();
+  Scalar m_high = std::numeric_limits<Scalar>::infinity();
 };
 
 }  // namespace bonl

@@ -2,11 +2,14 @@
 // Input block N1 of the Hammerstein-type models (paper eqs. 3-5): a polynomial of degree r for
 // u >= 0 and another for u < 0, written as w = sum_l f_l u^l + h(u) sum_l p_l u^l with the
 // switching function h(u) = 1 for u < 0, else 0, and p_l = g_l - f_l.
+// The overloads with a range [low, high] continue the block linearly beyond it (linear_continuation.hpp),
+// from the segment at the edge passed.
 
 #include <Eigen/Core>
 #include <string>
 
 #include "../detail/validate.hpp"
+#include "linear_continuation.hpp"
 
 namespace bonl {
 
@@ -91,6 +94,29 @@ class TwoSegmentPolynomial {
     return w;
   }
 
+  /// w continued linearly beyond [low, high] (the file's header): evaluate(f, p, u) inside, and
+  /// N(e) + N'(e) (u - e) beyond the edge e it passed, N the segment at e. An infinite range is
+  /// evaluate(f, p, u) everywhere.
+  /// \param f f_0..f_r
+  /// \param p p_0..p_r
+  /// \param u the input
+  /// \param low the range's low end (-inf: none)
+  /// \param high the range's high end (inf: none)
+  /// \return w
+  template <typename F, typename P>
+  static Scalar evaluate(const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p, Scalar u, Scalar low,
+                         Scalar high) noexcept {
+    if (!detail::beyond_range(u, low, high)) return evaluate(f, p, u);
+    const Scalar edge = u > high ? high : low;
+    const bool negative = edge < Scalar(0);
+    Scalar w = Scalar(0), slope = Scalar(0);
+    for (Eigen::Index l = f.size() - 1; l >= 0; --l) {  // Horner's scheme for N and N' together
+      slope = slope * edge + w;
+      w = w * edge + (negative ? f[l] + p[l] : f[l]);
+    }
+    return w + slope * (u - edge);
+  }
+
   /// The key-term regressor of the block: [1, u, ..., u^r, h, h u, ..., h u^r], so that
   /// w = basis . [f; p]. `out` must have 2 (r + 1) entries.
   /// \param u the input
@@ -105,6 +131,31 @@ class TwoSegmentPolynomial {
       out[r + 1 + l] = h * power;
       power *= u;
     }
+  }
+
+  /// The regressor of the block continued linearly beyond [low, high]: inside, basis(u, f, p, out);
+  /// beyond the edge e, [c_0..c_r, h(e) c_0..h(e) c_r] with c_l = e^l + l e^(l-1) (u - e), so that
+  /// basis . [f; p] = evaluate(f, p, u, low, high). Returns that w.
+  /// \param u the input
+  /// \param f f_0..f_r
+  /// \param p p_0..p_r
+  /// \param out set to the regressor, 2 (r + 1) entries
+  /// \param low the range's low end (-inf: none)
+  /// \param high the range's high end (inf: none)
+  /// \return w
+  template <typename Out, typename F, typename P>
+  static Scalar basis(Scalar u, const Eigen::MatrixBase<F>& f, const Eigen::MatrixBase<P>& p,
+                      Eigen::MatrixBase<Out>& out, Scalar low, Scalar high) noexcept {
+    if (!detail::beyond_range(u, low, high)) return basis(u, f, p, out);
+    const Eigen::Index r = f.size() - 1;
+    const Scalar h = input_switch(u > high ? high : low);  // the segment at the edge
+    detail::continued_powers(u, r, low, high, out);
+    Scalar w = Scalar(0);
+    for (Eigen::Index l = 0; l <= r; ++l) {
+      out[r + 1 + l] = h * out[l];
+      w += out[l] * (f[l] + h * p[l]);
+    }
+    return w;
   }
 
   /// basis() and, returned, w = basis . [f; p] summed as the entries are made (f, p of length

@@ -166,6 +166,9 @@ Model identify(const Model& structure, const CheckedRecords<typename Model::Scal
                   "parameters (" +
                       std::to_string(structure.num_params()) + "), got " + std::to_string(scored) + " samples");
   Model at = structure;
+  // A structure that was identified before carries its input range, beyond which its input block
+  // continues linearly; the identification fits the block itself, on these records.
+  at.set_input_range(-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
   if (options.operating_point == OperatingPointSource::Mean) {
     double u_sum = 0.0, y_sum = 0.0, samples = 0.0;
     for (const auto& record : records) {

@@ -63,7 +63,8 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
   /// \copydoc ARX::try_simulate_deviations
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
-    return this->simulate_front(u, y, this->linear_block(), [](Scalar x) { return x; });
+    return this->simulate_front(
+        u, y, this->linear_block(), [](Scalar x) { return x; }, this->input_deviation_range());
   }
 
   /// Key-term form (eq. 14): y(k) = [basis(u(k-nk)), w lags, -x lags] . theta. The past x are the
@@ -76,6 +77,9 @@ class Hammerstein : public detail::HammersteinFront<Scalar_, Na_, Nb_, R_, 0>,
     KeyTerms(const Hammerstein& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()), m_method(method),
           m_phi(Params::Zero(model.num_params())) {}
+    /// Where the input block continues linearly (FrontKeyTerms::set_input_range).
+    /// \param range the input range as deviations from u0
+    void set_input_range(const detail::InputDeviationRange& range) noexcept { m_front.set_input_range(range); }
     /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept { m_front.reset(); }
     /// \copydoc ARX::KeyTerms::step

@@ -84,7 +84,9 @@ class HammersteinWiener
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     const VectorX qv = this->q();
-    return this->simulate_front(u, y, this->linear_block(), [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); });
+    return this->simulate_front(
+        u, y, this->linear_block(), [&qv](Scalar x) { return OutputBlock::evaluate(qv, x); },
+        this->input_deviation_range());
   }
 
   /// Key-term form: y(k) = x(k) + sum_{m>=2} q_m x(k)^m with x(k) the front's key-term expression,
@@ -99,6 +101,9 @@ class HammersteinWiener
     KeyTerms(const HammersteinWiener& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()),
           m_output(model.r1(), model.num_params()), m_method(method), m_phi(Params::Zero(model.num_params())) {}
+    /// Where the input block continues linearly (FrontKeyTerms::set_input_range).
+    /// \param range the input range as deviations from u0
+    void set_input_range(const detail::InputDeviationRange& range) noexcept { m_front.set_input_range(range); }
     /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept { m_front.reset(); }
     /// \copydoc ARX::KeyTerms::step

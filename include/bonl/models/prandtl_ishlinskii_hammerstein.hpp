@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "../blocks/linear_block.hpp"
@@ -244,6 +245,8 @@ class PrandtlIshlinskiiHammerstein
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     InputBlock block = input_block();
+    const detail::InputDeviationRange range = this->input_deviation_range();
+    block.set_input_range(static_cast<Scalar>(range.low), static_cast<Scalar>(range.high));
     const auto input = [&block](Scalar v) { return block.step(v); };
     return detail::free_run(this->linear_block(), u, y, input, detail::Identity{});
   }
@@ -269,14 +272,18 @@ class PrandtlIshlinskiiHammerstein
       m_columns.setZero();
       m_k = 0;
     }
+    /// Where the polynomial's basis continues linearly (linear_continuation.hpp).
+    void set_input_range(const detail::InputDeviationRange& range) noexcept {
+      m_low = static_cast<Scalar>(range.low);
+      m_high = static_cast<Scalar>(range.high);
+    }
     /// Pushes u(k): column 0 becomes basis(k-nk).
     void push(Scalar u) noexcept {
       m_u.push(u);
       m_column.setZero();
       if (m_k >= m_nk) {
         const Scalar v = m_u[m_nk];
-        Scalar power = Scalar(1);
-        for (Eigen::Index l = 0; l <= m_r; ++l, power *= v) m_column[l] = power;
+        detail::continued_powers(v, m_r, m_low, m_high, m_column);
         m_column.tail(m_plays.size()) = m_plays.step(v);
       } else {
         ++m_k;  // only "before or after the record start" matters
@@ -294,6 +301,8 @@ class PrandtlIshlinskiiHammerstein
     Eigen::Matrix<Scalar, kBasis, detail::poly_size(Nb_)> m_columns;
     Column m_column;
     Eigen::Index m_k = 0;
+    Scalar m_low = -std::numeric_limits<Scalar>::infinity();
+    Scalar m_high = std::numeric_limits<Scalar>::infinity();
   };
 
  public:
@@ -309,6 +318,9 @@ class PrandtlIshlinskiiHammerstein
     KeyTerms(const PrandtlIshlinskiiHammerstein& model, KeyTermMethod method)
         : m_basis(model), m_w(model.nb()), m_z(model.na()), m_integrators(model.ni()), m_method(method),
           m_nb(model.nb()), m_na(model.na()), m_phi(Params::Zero(model.num_params())) {}
+    /// Where the input polynomial continues linearly (its input range as deviations from u0).
+    /// \param range the range
+    void set_input_range(const detail::InputDeviationRange& range) noexcept { m_basis.set_input_range(range); }
     /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_basis.reset();

@@ -121,7 +121,8 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
   template <typename U>
   bool try_simulate_deviations(const Eigen::MatrixBase<U>& u, VectorX& y) const {
     Backlash<Scalar> play = backlash();
-    return this->simulate_front(u, y, this->linear_block(), [&play](Scalar x) { return play.step(x); });
+    return this->simulate_front(
+        u, y, this->linear_block(), [&play](Scalar x) { return play.step(x); }, this->input_deviation_range());
   }
 
   /// Projects an estimate onto the model's valid set: c >= 0.
@@ -156,6 +157,9 @@ class PseudoHammersteinWiener : public detail::HammersteinFront<Scalar_, Na_, Nb
     KeyTerms(const PseudoHammersteinWiener& model, KeyTermMethod method)
         : m_front(model.na(), model.nb(), model.nk(), model.r(), method, model.ni()), m_method(method),
           m_last(model.num_params() - 1), m_phi(Params::Zero(model.num_params())) {}
+    /// Where the input block continues linearly (FrontKeyTerms::set_input_range).
+    /// \param range the input range as deviations from u0
+    void set_input_range(const detail::InputDeviationRange& range) noexcept { m_front.set_input_range(range); }
     /// \copydoc ARX::KeyTerms::reset
     void reset() noexcept {
       m_front.reset();

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -165,14 +166,17 @@ class HammersteinFront {
     m_theta = Params::Zero(front_size() + extra);
   }
 
-  /// Free run from rest: w = N1(u), x = L(w) with L = `linear` (the model's linear_block()),
-  /// y = output(x) (free_run).
+  /// Free run from rest: w = N1(u), continued linearly beyond `range` (the input range the model was
+  /// identified on, as deviations from u0: TwoSegmentPolynomial's header), x = L(w) with L = `linear`
+  /// (the model's linear_block()), y = output(x) (free_run).
   template <typename U, typename OutputMap>
-  bool simulate_front(const Eigen::MatrixBase<U>& u, VectorX& y, Linear linear, OutputMap&& output) const {
+  bool simulate_front(const Eigen::MatrixBase<U>& u, VectorX& y, Linear linear, OutputMap&& output,
+                      const InputDeviationRange& range) const {
     const VectorX fv = f();
     const VectorX pv = p();
+    const Scalar low = static_cast<Scalar>(range.low), high = static_cast<Scalar>(range.high);
     return free_run(
-        std::move(linear), u, y, [&fv, &pv](Scalar v) { return InputBlock::evaluate(fv, pv, v); }, output);
+        std::move(linear), u, y, [&](Scalar v) { return InputBlock::evaluate(fv, pv, v, low, high); }, output);
   }
 
   Params m_theta;
@@ -215,6 +219,15 @@ class FrontKeyTerms {
   /// The paper's method: the previous sample's x and w wait for store_a_posteriori().
   bool pending() const noexcept { return m_pending; }
 
+  /// The input range beyond which the input block continues linearly (TwoSegmentPolynomial's header),
+  /// as deviations from u0: a model's simulation after a measured past and its prediction set it to
+  /// the range the model was identified on (run_after_past); the estimator leaves it infinite.
+  /// \param range the range, (-inf, inf) for none
+  void set_input_range(const InputDeviationRange& range) noexcept {
+    m_low = static_cast<Scalar>(range.low);
+    m_high = static_cast<Scalar>(range.high);
+  }
+
   /// The integrators' part of x(k) (0 without integrators): what a model takes off its target.
   Scalar carried() const noexcept { return m_integrators.carried(); }
 
@@ -226,7 +239,8 @@ class FrontKeyTerms {
     Scalar x = phi.template head<kFront>(n).dot(theta.template head<kFront>(n));
     if (m_integrators.size() > 0) x += m_integrators.carried();
     m_z.push(m_integrators.push(x));
-    m_w.push(TwoSegmentPolynomial<Scalar>::evaluate(coefficients(theta, 0), coefficients(theta, r() + 1), m_u[0]));
+    m_w.push(TwoSegmentPolynomial<Scalar>::evaluate(coefficients(theta, 0), coefficients(theta, r() + 1), m_u[0], m_low,
+                                                    m_high));
     advance();
     m_pending = false;
     return x;
@@ -244,7 +258,7 @@ class FrontKeyTerms {
     const auto p = coefficients(theta, r() + 1);
     Scalar x = Scalar(0);
     if (m_k >= m_nk) {
-      x = TwoSegmentPolynomial<Scalar>::basis(m_u[m_nk], f, p, phi);
+      x = TwoSegmentPolynomial<Scalar>::basis(m_u[m_nk], f, p, phi, m_low, m_high);
     } else {
       for (Eigen::Index l = 0; l < n_fp; ++l) phi[l] = Scalar(0);
     }
@@ -254,7 +268,7 @@ class FrontKeyTerms {
       if (m_k - m_nk - i >= 0) {
         // Paper: w as estimated when it entered (eq. 24). Equation error: recomputed with the
         // newest f, p, so that the regressor is consistent with the parameters being estimated.
-        w = paper ? m_w[m_nk + i - 1] : TwoSegmentPolynomial<Scalar>::evaluate(f, p, m_u[m_nk + i]);
+        w = paper ? m_w[m_nk + i - 1] : TwoSegmentPolynomial<Scalar>::evaluate(f, p, m_u[m_nk + i], m_low, m_high);
       }
       phi[n_fp + i - 1] = w;
       x += theta[n_fp + i - 1] * w;
@@ -297,6 +311,8 @@ class FrontKeyTerms {
   IntegratorLags<Scalar> m_integrators;
   Eigen::Index m_k = 0;
   bool m_pending = false;
+  Scalar m_low = -std::numeric_limits<Scalar>::infinity();
+  Scalar m_high = std::numeric_limits<Scalar>::infinity();
 };
 
 /// The front for the output-error method: one step of its free-run simulation with the current

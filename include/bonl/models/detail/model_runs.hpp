@@ -9,12 +9,30 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "../../detail/validate.hpp"
 #include "../../error.hpp"
 #include "../model_steps.hpp"
 
 namespace bonl::detail {
+
+/// The input range a model was identified on, as deviations from its operating point's u0: where its
+/// input polynomial stops and continues linearly (blocks/two_segment_polynomial.hpp). (-inf, inf):
+/// none, the polynomial everywhere.
+struct InputDeviationRange {
+  double low = -std::numeric_limits<double>::infinity();  ///< input_min() - u0
+  double high = std::numeric_limits<double>::infinity();  ///< input_max() - u0
+};
+
+/// Does a model's KeyTerms take the input range (set_input_range): those whose input block continues
+/// linearly beyond it?
+template <class Terms, class = void>
+struct TakesInputRange : std::false_type {};
+template <class Terms>
+struct TakesInputRange<Terms, std::void_t<decltype(std::declval<Terms&>().set_input_range(InputDeviationRange{}))>>
+    : std::true_type {};
 
 /// The free run every model's try_simulate_deviations() is: y(k) = output(L(input(u(k)))) with `linear` the
 /// model's linear block at rest, input and output its static maps (identity where it has none).
@@ -72,6 +90,9 @@ typename Model::VectorX run_after_past(const Model& model, const Eigen::MatrixBa
   const Scalar u0 = static_cast<Scalar>(model.u0());
   const Scalar y0 = static_cast<Scalar>(model.y0());
   typename Model::KeyTerms terms(model, KeyTermMethod::EquationError);
+  // A model's input block continues linearly beyond the range it was identified on, in its free run
+  // and here alike (the estimator's key terms, which fit the block, leave it out).
+  if constexpr (TakesInputRange<typename Model::KeyTerms>::value) terms.set_input_range(model.input_deviation_range());
   for (Eigen::Index k = 0; k < u_past.size(); ++k) terms.step(model.theta(), u_past[k] - u0, y_past[k] - y0);
   typename Model::VectorX out(u.size());
   for (Eigen::Index k = 0; k < u.size(); ++k) {
@@ -107,6 +128,10 @@ class ModelRuns {
     m_input_min = min;
     m_input_max = max;
   }
+  /// The input range as deviations from u0 (InputDeviationRange): where an input polynomial continues
+  /// linearly.
+  /// \return [input_min() - u0, input_max() - u0]
+  InputDeviationRange input_deviation_range() const noexcept { return {m_input_min - m_u0, m_input_max - m_u0}; }
   /// How many samples of u lie outside the input range: 0 where the model is used on inputs like
   /// those it was identified on; otherwise its output there is an extrapolation.
   template <typename U>

@@ -10,6 +10,7 @@
 #include <bonl/models.hpp>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,35 +31,39 @@ struct SelectionArguments {
   std::string criterion;
   double validation_fraction;
   Eigen::Index window;
+  int folds;
   IdentifyArguments identify;
   std::optional<bonl::SelectionData<double>> data;  // views inputs and outputs
 };
 
 bonl::SelectionCriterion criterion_from_string(const std::string& name) {
-  for (const auto criterion :
-       {bonl::SelectionCriterion::Validation, bonl::SelectionCriterion::AIC, bonl::SelectionCriterion::BIC}) {
+  for (const auto criterion : {bonl::SelectionCriterion::Validation, bonl::SelectionCriterion::AIC,
+                               bonl::SelectionCriterion::BIC, bonl::SelectionCriterion::CrossValidation}) {
     if (name == bonl::to_string(criterion)) return criterion;
   }
-  bonl::detail::fail("select: criterion must be one of validation, aic, bic, got '" + name + "'");
+  bonl::detail::fail("select: criterion must be one of validation, aic, bic, cross_validation, got '" + name + "'");
 }
 
-/// window=: an integer (Python's or numpy's, not a bool); its range bonl::SelectionData checks.
-Eigen::Index window_from(const py::object& window) {
-  bonl::detail::require(!py::isinstance<py::bool_>(window) && PyIndex_Check(window.ptr()),
-                        "select: window must be an integer >= 0, got " + std::string(py::str(py::repr(window))));
-  return window.cast<Eigen::Index>();
+/// window= and folds=: an integer (Python's or numpy's, not a bool); its range bonl::SelectionData
+/// checks.
+Eigen::Index integer_from(const py::object& value, const char* name, const char* range) {
+  bonl::detail::require(!py::isinstance<py::bool_>(value) && PyIndex_Check(value.ptr()),
+                        std::string("select: ") + name + " must be an integer " + range + ", got " +
+                            std::string(py::str(py::repr(value))));
+  return value.cast<Eigen::Index>();
 }
 
 std::unique_ptr<SelectionArguments> make_selection(std::vector<Eigen::VectorXd> inputs,
                                                    std::vector<Eigen::VectorXd> outputs, const std::string& criterion,
-                                                   double validation_fraction, Eigen::Index window,
+                                                   double validation_fraction, Eigen::Index window, int folds,
                                                    const IdentifyArguments& identify) {
-  auto held = std::make_unique<SelectionArguments>(
-      SelectionArguments{std::move(inputs), std::move(outputs), criterion, validation_fraction, window, identify, {}});
+  auto held = std::make_unique<SelectionArguments>(SelectionArguments{
+      std::move(inputs), std::move(outputs), criterion, validation_fraction, window, folds, identify, {}});
   bonl::SelectOptions options;
   options.criterion = criterion_from_string(criterion);
   options.validation_fraction = validation_fraction;
   options.window = window;
+  options.folds = folds;
   options.identify = identify_options(identify);
   bonl::Records<double> records;
   for (std::size_t i = 0; i < held->inputs.size(); ++i) records.emplace_back(held->inputs[i], held->outputs[i]);
@@ -66,13 +71,15 @@ std::unique_ptr<SelectionArguments> make_selection(std::vector<Eigen::VectorXd> 
   return held;
 }
 
-/// A row as bonl.select reads it: (score, fit_mse, validation_mse or None, error or None, model or None).
+/// A row as bonl.select reads it: (score, fit_mse, validation_mse or None, error or None, model or None,
+/// fold_mse or None).
 template <class Model>
 py::tuple row_tuple(const bonl::SelectionCandidate<Model>& row) {
   const bool validation = row.model && !std::isnan(row.validation_mse);
   return py::make_tuple(row.score, row.fit_mse, validation ? py::cast(row.validation_mse) : py::none(),
                         row.error.empty() ? py::none() : py::cast(row.error),
-                        row.model ? py::cast(*row.model) : py::none());
+                        row.model ? py::cast(*row.model) : py::none(),
+                        row.fold_mse.empty() ? py::none() : py::cast(row.fold_mse));
 }
 
 template <class Model>
@@ -88,7 +95,7 @@ void def_selection(py::module_& m) {
       },
       py::arg("structure"), py::arg("data"),
       "bonl::score_candidate: the structure identified on data's fit parts and scored by its criterion. "
-      "Returns (score, fit_mse, validation_mse or None, error or None, model or None).");
+      "Returns (score, fit_mse, validation_mse or None, error or None, model or None, fold_mse or None).");
   m.def(
       "_refit",
       [](const Model& structure, const SelectionArguments& selection) {
@@ -131,35 +138,42 @@ void bind_selection(py::module_& m) {
           records.append(py::make_tuple(to_numpy(s.inputs[i]), to_numpy(s.outputs[i])));
         }
         const IdentifyArguments& a = s.identify;
-        return py::make_tuple(records, s.criterion, s.validation_fraction, s.window, a.passes, a.method, a.forgetting,
-                              a.p0, a.refine_iterations, a.normalise, a.operating_point, a.initialisation_window);
+        return py::make_tuple(records, s.criterion, s.validation_fraction, s.window, s.folds, a.passes, a.method,
+                              a.forgetting, a.p0, a.refine_iterations, a.normalise, a.operating_point,
+                              a.initialisation_window);
       },
       [](const py::tuple& t) {
         std::vector<Eigen::VectorXd> inputs, outputs;
         read_records(py::none(), py::none(), t[0], "", inputs, outputs);
         return make_selection(std::move(inputs), std::move(outputs), t[1].cast<std::string>(), t[2].cast<double>(),
-                              t[3].cast<Eigen::Index>(),
-                              {t[4].cast<int>(), t[5].cast<std::string>(), t[6], t[7].cast<std::optional<double>>(),
-                               t[8].cast<int>(), t[9].cast<bool>(), t[10], t[11].cast<Eigen::Index>()});
+                              t[3].cast<Eigen::Index>(), t[4].cast<int>(),
+                              {t[5].cast<int>(), t[6].cast<std::string>(), t[7], t[8].cast<std::optional<double>>(),
+                               t[9].cast<int>(), t[10].cast<bool>(), t[11], t[12].cast<Eigen::Index>()});
       }));
   def_with_identify_arguments(
       m, "_selection_data",
       [](const py::typing::Optional<ArrayLike>& u, const py::typing::Optional<ArrayLike>& y,
          const py::typing::Optional<RecordList>& records, const std::string& criterion, double validation_fraction,
-         const py::object& window, int passes, const std::string& method, const Forgetting& forgetting,
-         std::optional<double> p0, int refine_iterations, bool normalise, const OperatingPointSource& operating_point,
-         Eigen::Index initialisation_window) {
+         const py::object& window, const py::object& folds, int passes, const std::string& method,
+         const Forgetting& forgetting, std::optional<double> p0, int refine_iterations, bool normalise,
+         const OperatingPointSource& operating_point, Eigen::Index initialisation_window) {
         std::vector<Eigen::VectorXd> inputs, outputs;
         read_records(u, y, records,
                      "select(candidates, u, y) for one record, select(candidates, records=[(u1, y1), (u2, y2), ...]) "
                      "for several",
                      inputs, outputs);
+        const Eigen::Index fold_count = integer_from(folds, "folds", ">= 2");
+        bonl::detail::require(
+            fold_count <= std::numeric_limits<int>::max(),
+            "select: folds must be an integer >= 2 that fits an int, got " + std::to_string(fold_count));
         return make_selection(
-            std::move(inputs), std::move(outputs), criterion, validation_fraction, window_from(window),
+            std::move(inputs), std::move(outputs), criterion, validation_fraction,
+            integer_from(window, "window", ">= 0"), static_cast<int>(fold_count),
             {passes, method, forgetting, p0, refine_iterations, normalise, operating_point, initialisation_window});
       },
       py::arg("u") = py::none(), py::arg("y") = py::none(), py::kw_only(), py::arg("records") = py::none(),
       py::arg("criterion") = "validation", py::arg("validation_fraction") = 0.25, py::arg("window") = 0,
+      py::arg("folds") = 5,
       "bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. "
       "The keyword arguments after window are identify's.");
   bonl::for_each_model(bonl::Models{}, [&m](auto tag) { def_selection<typename decltype(tag)::type>(m); });

@@ -8,6 +8,9 @@ of a grid and ranks them.
   half away from zero, held out) and scores the free-run simulation error on the held-out last part
   (each record simulated whole, from rest, and scored on its tail only; or, with ``window=n``, the
   tail simulated after its first n samples as a test record with a state-initialisation window is);
+  ``criterion="cross_validation"`` (blocked cross-validation, for records too short for one held-out
+  part to say much) cuts every record into ``folds`` consecutive blocks, holds each out once (the
+  candidate fitted on the rest) and scores the free-run error over all of them;
   ``criterion="aic"`` or ``"bic"`` fits on all the data and scores ``N log(mse) + 2 p`` or
   ``N log(mse) + p log(N)`` of the free-run simulation. The best candidate is refitted on all the
   data. A model whose free run is not bounded is never chosen: from rest on every record's input, and
@@ -56,10 +59,13 @@ class Candidate:
     num_params: int
     score: float                    #: the criterion (lower is better; inf when the fit failed or was refused)
     fit_mse: float                  #: free-run simulation MSE on the data it was fitted on, run as fitted
-    validation_mse: Optional[float]  #: on the held-out parts (criterion "validation"), else None
+    validation_mse: Optional[float]  #: on the held-out parts (criteria "validation", "cross_validation"), else None
     seconds: float                  #: wall time of its identification
     error: Optional[str]            #: why the fit failed or was refused, None when it was not
     model: Any                      #: the identified model (None when the fit failed; kept when refused)
+    #: criterion "cross_validation": each fold's held-out MSE (their spread says how far two scores
+    #: differ by chance); else None
+    fold_mse: Optional[List[float]] = None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -139,9 +145,9 @@ def _score(structure: Any, data: Any) -> Candidate:
     """Identifies one candidate and scores it, C++'s bonl::score_candidate on the checked data (runs
     where the executor puts it: keep it top-level)."""
     t0 = time.perf_counter()
-    score, fit_mse, validation_mse, error, model = _bonl._score_candidate(structure, data)
+    score, fit_mse, validation_mse, error, model, fold_mse = _bonl._score_candidate(structure, data)
     return Candidate(type(structure).__name__, named_orders(structure), structure.num_params, score, fit_mse,
-                     validation_mse, time.perf_counter() - t0, error, model)
+                     validation_mse, time.perf_counter() - t0, error, model, fold_mse)
 
 
 def _progress(total: int, progress: Optional[bool]):
@@ -240,7 +246,7 @@ def _refit_best(table: List[Candidate], structures: Sequence[Any], data: Any) ->
 
 def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
            records: Optional[Sequence[Tuple[ArrayLike, ArrayLike]]] = None, criterion: str = "validation",
-           validation_fraction: float = 0.25, window: int = 0,
+           validation_fraction: float = 0.25, window: int = 0, folds: int = 5,
            executor: Optional[concurrent.futures.Executor] = None, progress: Optional[bool] = None,
            **identify_options: Any) -> Selection:
     """Fits every candidate structure, ranks them by ``criterion`` and refits the best on all the data.
@@ -253,10 +259,16 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
         The estimation data: one record.
     records : sequence of (u, y) pairs, keyword only
         Several records in place of u and y: ``select(candidates, records=[(u1, y1), (u2, y2)])``.
-    criterion : {'validation', 'aic', 'bic'}
+    criterion : {'validation', 'cross_validation', 'aic', 'bic'}
         'validation' (default): the free-run simulation MSE on the last ``validation_fraction`` of every
         record (its samples times the fraction, rounded half away from zero, at least 1), the candidate
-        fitted on the rest. 'aic', 'bic': information criteria of the free-run simulation error on all
+        fitted on the rest. 'cross_validation': every record cut into ``folds`` consecutive blocks of
+        equal length (the edges at round(f n / folds)); fold f holds out block f of every record, is
+        fitted on the parts before and after it (each after identify's initialisation window of at
+        least 10 samples, as a part after a block does not start at rest) and scored by the free-run
+        MSE on the block (the record simulated from rest up to the block's end, or with ``window``,
+        the block after its first samples); the score is the MSE over every block, each fold's is in
+        the row's ``fold_mse`` and the row's model is the last fold's. 'aic', 'bic': information criteria of the free-run simulation error on all
         the data. Every candidate is scored by C++'s ``bonl::score_candidate``, as ``bonl::select``
         scores it; one that cannot be fitted (more parameters than its fit part has samples, or an
         identification that fails), or whose free run is not bounded (the module's docstring), is
@@ -264,11 +276,13 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
     validation_fraction : float, default 0.25
         criterion 'validation': the held-out last part of every record, in (0, 1).
     window : int, default 0
-        criterion 'validation': each held-out part is scored the way a test record with a
+        criteria 'validation' and 'cross_validation': each held-out part is scored the way a test record with a
         state-initialisation window of this many samples is: simulated after its first ``window``
         samples, which set the model's state (``Model.simulate(u, initial=...)``), instead of as the
         continuation of the whole record simulated from rest. Give the window of the test protocol
         the model will be judged by; it must be shorter than every held-out part.
+    folds : int, default 5
+        criterion 'cross_validation': the blocks every record is cut into, >= 2.
     executor : concurrent.futures.Executor, optional
         Where the candidates run; default: threads on the local cores. A Dask cluster's
         ``client.get_executor()`` spreads a large grid over many machines.
@@ -291,8 +305,8 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
         if type(structure) not in _bonl.MODELS:
             raise ValueError(f"bonl: select: candidates[{i}] must be a bonl model, got {type(structure).__name__}")
     # The records and options checked once, in C++ (ValueError naming the bad one).
-    data = _bonl._selection_data(u, y, records=records, criterion=criterion, validation_fraction=validation_fraction, window=window,
-                                 **identify_options)
+    data = _bonl._selection_data(u, y, records=records, criterion=criterion, validation_fraction=validation_fraction,
+                                 window=window, folds=folds, **identify_options)
 
     rows = _score_all(structures, data, executor, progress)
     # Best first; ties (and failures, all inf) keep the candidates' order, as bonl::select ranks them.

@@ -38,8 +38,8 @@ TEST_CASE("select finds the delay of a known system and ranks the others behind 
   const Eigen::VectorXd u = bonl::signals::random_levels(2000, 5, 1.0, 71);
   const Eigen::VectorXd y = truth.simulate(u) + bonl::signals::white_noise(u.size(), 0.01, 72);
   const bonl::Records<double> records{{u, y}};
-  for (auto criterion :
-       {bonl::SelectionCriterion::Validation, bonl::SelectionCriterion::AIC, bonl::SelectionCriterion::BIC}) {
+  for (auto criterion : {bonl::SelectionCriterion::Validation, bonl::SelectionCriterion::AIC,
+                         bonl::SelectionCriterion::BIC, bonl::SelectionCriterion::CrossValidation}) {
     bonl::SelectOptions options;
     options.criterion = criterion;
     const auto selection = bonl::select(delay_grid(), records, options);
@@ -149,7 +149,8 @@ TEST_CASE("with a window the held-out part is scored after its first samples", "
   options.window = 5;
   options.criterion = bonl::SelectionCriterion::AIC;
   CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
-                    Catch::Matchers::Contains("window applies to criterion 'validation' only, got criterion 'aic'"));
+                    Catch::Matchers::Contains(
+                        "window applies to criteria 'validation' and 'cross_validation' only, got criterion 'aic'"));
 }
 
 namespace {
@@ -224,4 +225,80 @@ TEST_CASE("select does not choose a model whose free run leaves ten half-ranges 
   // The same model scaled to the data is bounded.
   model.set_b(Eigen::VectorXd::Constant(1, 0.5));
   CHECK(bonl::detail::unbounded_free_run(model, records).empty());
+}
+
+TEST_CASE("cross-validation holds each block out once and scores it by the fold's own fit", "[select]") {
+  const auto [u, y] = noisy_record<bonl::Hammersteind>(900, 5, 0.02, 82);
+  const auto [u2, y2] = noisy_record<bonl::Hammersteind>(500, 5, 0.02, 84);
+  const bonl::Records<double> records{{u, y}, {u2, y2}};
+  const bonl::Hammersteind structure(2, 1, 2, 2);
+  for (const Eigen::Index window : {Eigen::Index(0), Eigen::Index(6)}) {
+    bonl::SelectOptions options;
+    options.criterion = bonl::SelectionCriterion::CrossValidation;
+    options.folds = 3;
+    options.window = window;
+    const auto row = bonl::score_candidate(structure, bonl::SelectionData<double>(records, options));
+    REQUIRE(row.error.empty());
+    REQUIRE(row.fold_mse.size() == 3);
+    // The oracle: each fold fitted with identify on the parts around its blocks (after a window of
+    // kFoldFitWindow samples), each block simulated with the public simulate().
+    bonl::IdentifyOptions fit;
+    fit.initialisation_window = std::max(window, bonl::kFoldFitWindow);
+    double squared = 0.0, count = 0.0;
+    for (int f = 0; f < 3; ++f) {
+      bonl::Records<double> parts;
+      std::vector<std::pair<Eigen::Index, Eigen::Index>> blocks;
+      for (const auto& record : records) {
+        const Eigen::Index n = record.u.size();
+        const Eigen::Index begin = (n * f + 1) / 3, end = (n * (f + 1) + 1) / 3;  // round(f n / 3)
+        blocks.emplace_back(begin, end);
+        if (begin > fit.initialisation_window) parts.push_back(record.head(begin));
+        if (n - end > fit.initialisation_window) parts.push_back(record.segment(end, n - end));
+      }
+      const bonl::Hammersteind model = bonl::identify(structure, parts, fit);
+      double fold_squared = 0.0, fold_count = 0.0;
+      for (std::size_t i = 0; i < records.size(); ++i) {
+        const auto [begin, end] = blocks[i];
+        const auto& record = records[i];
+        Eigen::VectorXd error;
+        if (window == 0) {
+          error = (record.y.head(end) - model.simulate(record.u.head(end))).tail(end - begin);
+        } else {
+          const Eigen::Index first = begin + window;
+          error = record.y.segment(first, end - first) - model.simulate(record.u.segment(first, end - first),
+                                                                        record.u.segment(begin, window),
+                                                                        record.y.segment(begin, window));
+        }
+        fold_squared += error.squaredNorm();
+        fold_count += static_cast<double>(error.size());
+      }
+      CHECK(near(row.fold_mse[static_cast<std::size_t>(f)], fold_squared / fold_count, 1e-12));
+      squared += fold_squared;
+      count += fold_count;
+    }
+    CHECK(near(row.score, squared / count, 1e-12));
+    CHECK(row.validation_mse == row.score);
+  }
+}
+
+TEST_CASE("cross-validation's folds and blocks are checked", "[select][bad_input]") {
+  const auto [u, y] = noisy_record<bonl::ARXd>(100, 2, 0.01, 86);
+  const bonl::Records<double> records{{u, y}};
+  bonl::SelectOptions options;
+  options.criterion = bonl::SelectionCriterion::CrossValidation;
+  options.folds = 1;
+  CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
+                    Catch::Matchers::Contains("folds must be >= 2, got 1"));
+  options.folds = 5;
+  options.window = 20;  // blocks of 20 samples
+  CHECK_THROWS_WITH(
+      bonl::SelectionData<double>(records, options),
+      Catch::Matchers::Contains("records[0]'s 5 cross-validation blocks (20 samples the shortest) must be "
+                                "longer than the window (20)"));
+  // Folds without enough samples fail the candidate, not the selection.
+  options.window = 0;
+  options.folds = 50;  // blocks of 2 samples: every fold keeps a part
+  const auto row = bonl::score_candidate(bonl::ARXd(1, 0, 0), bonl::SelectionData<double>(records, options));
+  CHECK(row.error.empty());
+  CHECK(row.fold_mse.size() == 50);
 }

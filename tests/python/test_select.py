@@ -61,12 +61,13 @@ def _same_table(python, cpp):
     candidates in the same order, the same failures, the same figures to 1e-12 relative."""
     cpp_table, cpp_best = cpp
     assert [(r.name, r.orders) for r in python.table] == [(type(s).__name__, bonl.named_orders(s)) for s, _ in cpp_table]
-    for row, (_, (score, fit_mse, validation_mse, error, model)) in zip(python.table, cpp_table):
+    for row, (_, (score, fit_mse, validation_mse, error, model, fold_mse)) in zip(python.table, cpp_table):
         assert row.error == error
         assert (row.model is None) == (model is None)
         assert row.score == pytest.approx(score, rel=1e-12)
         assert row.fit_mse == pytest.approx(fit_mse, rel=1e-12)
         assert row.validation_mse == (None if validation_mse is None else pytest.approx(validation_mse, rel=1e-12))
+        assert row.fold_mse == (None if fold_mse is None else pytest.approx(fold_mse, rel=1e-12))
     np.testing.assert_allclose(python.best.theta, cpp_best.theta, rtol=1e-12)
 
 
@@ -78,7 +79,7 @@ def _ten_samples():
     return u, truth.simulate(u) + np.random.default_rng(5).normal(0, 0.01, u.size)
 
 
-@pytest.mark.parametrize("case", ["ten samples", "window", "several records, aic", "bic"])
+@pytest.mark.parametrize("case", ["ten samples", "window", "several records, aic", "bic", "cross-validation"])
 def test_python_and_cpp_select_give_the_same_table(case):
     truth, u, y = _system()
     records, options = [(u, y)], {}
@@ -91,6 +92,9 @@ def test_python_and_cpp_select_give_the_same_table(case):
     elif case == "several records, aic":
         records = [(u[:1001], y[:1001]), (u[1001:], truth.simulate(u[1001:]))]
         options = dict(criterion="aic", passes=2)
+    elif case == "cross-validation":
+        records = [(u[:1001], y[:1001]), (u[1001:], y[1001:])]
+        options = dict(criterion="cross_validation", folds=3, window=4)
     else:
         options = dict(criterion="bic", validation_fraction=0.3)
     python = bonl.select(candidates, records=records, **options)
@@ -201,12 +205,17 @@ def test_progress_bar_on_request(capsys):
 @pytest.mark.parametrize("call, message", [
     (lambda u, y: bonl.select([], u, y), "candidates is empty"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0), "ARX"], u, y), r"candidates\[1\] must be a bonl model, got str"),
-    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, criterion="mdl"), "criterion must be one of validation, aic, bic"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, criterion="mdl"),
+     "criterion must be one of validation, aic, bic, cross_validation"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, criterion="cross_validation", folds=1),
+     "folds must be >= 2, got 1"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, criterion="cross_validation", folds=True),
+     "folds must be an integer >= 2, got True"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, validation_fraction=1.0), r"validation_fraction must be in \(0, 1\)"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=-1), "window must be an integer >= 0, got -1"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=2.5), "window must be an integer >= 0, got 2.5"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=5, criterion="aic"),
-     "window applies to criterion 'validation' only"),
+     "window applies to criteria 'validation' and 'cross_validation' only"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=500),
      r"records\[0\]'s held-out part \(500 samples\) must be longer than the window \(500\)"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u), "y must be a 1-D array of real numbers, got None"),
@@ -215,7 +224,7 @@ def test_progress_bar_on_request(capsys):
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1]), "ARX takes the orders na, nb, nk, ni; missing: nk"),
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1], nk=[0], r=[2]), "unknown: r"),
     (lambda u, y: bonl.grid(int, na=[1]), "model_class must be one of bonl.MODELS"),
-], ids=["empty", "not a model", "criterion", "fraction", "negative window", "fractional window", "window with aic",
+], ids=["empty", "not a model", "criterion", "one fold", "boolean folds", "fraction", "negative window", "fractional window", "window with aic",
         "window too long", "no y", "not a pair", "identify option", "grid missing",
         "grid unknown", "grid class"])
 def test_bad_input_is_a_value_error(call, message):
@@ -246,3 +255,14 @@ def test_a_model_whose_free_run_diverges_beyond_the_measured_inputs_is_not_chose
     np.testing.assert_array_equal(cpp_best.theta, selection.best.theta)
     with pytest.raises(bonl.NumericalError, match="none has a finite score and a bounded free run"):
         bonl.select(candidates[:1], u, y)
+
+
+def test_cross_validation_survives_pickling_as_a_dask_worker_receives_it():
+    import pickle
+    _, u, y = _system()
+    data = bonl._bonl._selection_data(u, y, criterion="cross_validation", folds=4, window=3)
+    copy = pickle.loads(pickle.dumps(data))
+    structure = bonl.Hammerstein(2, 1, 2, 2)
+    original, received = bonl._bonl._score_candidate(structure, data), bonl._bonl._score_candidate(structure, copy)
+    assert len(original[5]) == 4
+    assert received[0] == original[0] and received[5] == original[5]

@@ -35,6 +35,15 @@ struct RecordView {
     const Eigen::Index n = samples < u.size() ? samples : u.size();
     return RecordView(u.data(), y.data(), n);
   }
+  /// The `samples` samples of this record from `start` on (clipped to the record).
+  /// \param start the first sample, >= 0
+  /// \param samples how many samples, >= 0
+  /// \return a view of the same vectors
+  RecordView segment(Eigen::Index start, Eigen::Index samples) const {
+    const Eigen::Index first = start < u.size() ? start : u.size();
+    const Eigen::Index n = samples < u.size() - first ? samples : u.size() - first;
+    return RecordView(u.data() + first, y.data() + first, n);
+  }
 
   Eigen::Map<const Vector> u;  ///< the input u
   Eigen::Map<const Vector> y;  ///< the measured output y

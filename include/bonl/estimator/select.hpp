@@ -8,6 +8,15 @@
 //   rest, and scored on its tail only; or, with a window of m samples, the held-out part simulated
 //   after its first m samples (measured, as a test record's state-initialisation window) and scored
 //   after them;
+// - SelectionCriterion::CrossValidation (blocked cross-validation, for records too short for one
+//   held-out part to be representative) cuts every record into `folds` consecutive blocks of equal
+//   length; fold f holds out block f of every record and fits on the rest (the parts before and after
+//   it, each a record of its own, fitted after identify's initialisation window of at least
+//   kFoldFitWindow samples, since a part after a block does not start at rest), and scores the mean
+//   squared free-run error over every held-out block: the record simulated from rest up to the
+//   block's end and scored on the block, or, with a window, the block simulated after its first m
+//   samples. Each sample is held out once; the folds' own mean squared errors are kept (fold_mse), so
+//   that a caller can tell a difference between candidates from the folds' spread;
 // - AIC and BIC fit on all the data and score N log(mse) + 2 p or N log(mse) + p log(N) of the
 //   free-run simulation error.
 // The best is refitted on all the data. A candidate that cannot be fitted (more parameters than its
@@ -51,15 +60,21 @@ inline constexpr double kFreeRunStretch = 1.25;
 
 /// How select() ranks the candidate structures: by the free-run MSE on held-out data (Validation), or
 /// by Akaike's or the Bayesian information criterion on the fitted data (AIC, BIC).
-enum class SelectionCriterion { Validation, AIC, BIC };
+enum class SelectionCriterion { Validation, AIC, BIC, CrossValidation };
 
-/// The name of a criterion, as Python spells it: "validation", "aic", "bic".
+/// Blocked cross-validation (SelectionCriterion::CrossValidation): a fit part after a held-out block
+/// does not start at rest, so the folds are fitted after identify's initialisation window of at least
+/// this many samples (the recent past that sets a model's state).
+inline constexpr Eigen::Index kFoldFitWindow = 10;
+
+/// The name of a criterion, as Python spells it: "validation", "aic", "bic", "cross_validation".
 /// \param criterion the criterion
 /// \return the name, a string literal
 inline const char* to_string(SelectionCriterion criterion) {
   switch (criterion) {
     case SelectionCriterion::AIC: return "aic";
     case SelectionCriterion::BIC: return "bic";
+    case SelectionCriterion::CrossValidation: return "cross_validation";
     case SelectionCriterion::Validation: break;
   }
   return "validation";
@@ -70,10 +85,12 @@ inline const char* to_string(SelectionCriterion criterion) {
 struct SelectOptions {
   SelectionCriterion criterion = SelectionCriterion::Validation;  ///< how the candidates are ranked
   double validation_fraction = 0.25;                              ///< the held-out last part of every record, in (0, 1)
-  /// Validation only: each held-out part is scored as a test record with a state-initialisation window
-  /// of this many samples is (simulated after them, from their measured values, and scored after
-  /// them) instead of as the continuation of its record simulated from rest; 0: no window.
+  /// Validation and CrossValidation only: each held-out part is scored as a test record with a
+  /// state-initialisation window of this many samples is (simulated after them, from their measured
+  /// values, and scored after them) instead of as the continuation of its record simulated from rest;
+  /// 0: no window.
   Eigen::Index window = 0;
+  int folds = 5;             ///< CrossValidation only: the blocks every record is cut into, each held out once (>= 2)
   unsigned threads = 0;      ///< select()'s threads; 0: one per hardware thread
   IdentifyOptions identify;  ///< for every identification
 };
@@ -89,9 +106,11 @@ struct SelectionCandidate {
   double score = std::numeric_limits<double>::infinity();  ///< lower is better; infinity when it failed
   double fit_mse =
       std::numeric_limits<double>::infinity();  ///< free-run MSE on the data it was fitted on, run as fitted
-  double validation_mse = std::numeric_limits<double>::quiet_NaN();  ///< held-out MSE (Validation only)
-  std::string error;           ///< why the candidate has no model; empty when it has one
-  std::optional<Model> model;  ///< the identified model (none when it failed)
+  double validation_mse =
+      std::numeric_limits<double>::quiet_NaN();  ///< held-out MSE (Validation and CrossValidation only)
+  std::vector<double> fold_mse;  ///< CrossValidation: each fold's held-out MSE, in the folds' order; else empty
+  std::string error;             ///< why the candidate has no model; empty when it has one
+  std::optional<Model> model;    ///< the identified model (none when it failed)
 };
 
 /// What select() returns: the ranked table of the candidates and the best structure identified on all
@@ -112,6 +131,18 @@ inline Eigen::Index held_out_samples(Eigen::Index samples, double fraction) {
   return std::max<Eigen::Index>(1, static_cast<Eigen::Index>(std::lround(fraction * static_cast<double>(samples))));
 }
 
+/// One fold of a blocked cross-validation (SelectionCriterion::CrossValidation): the parts of the
+/// records it is fitted on and the block of each record it holds out. It views the records.
+template <typename Scalar = double>
+struct SelectionFold {
+  Records<Scalar> fit;                                ///< the parts before and after each held-out block
+  std::optional<CheckedRecords<Scalar>> fit_checked;  ///< the same, checked; none where fit_error says why
+  std::string fit_error;                              ///< why the fold cannot be fitted; "" where it can
+  std::vector<Eigen::Index> begin;                    ///< per record, the held-out block's first sample
+  std::vector<Eigen::Index> end;                      ///< per record, one past its last
+  Eigen::Index fit_samples = 0;                       ///< the fit parts' samples together
+};
+
 /// The records and options of a selection, checked once, and the part of each record the candidates
 /// are fitted on: what score_candidate() and select() take. It views the records (their vectors must
 /// outlive it).
@@ -119,21 +150,29 @@ template <typename Scalar = double>
 class SelectionData {
  public:
   /// Checks the records and the options (std::invalid_argument naming the bad one) and splits every
-  /// record into its fit part and its held-out part (under AIC and BIC the fit part is all of it).
+  /// record into its fit part and its held-out part (under AIC and BIC the fit part is all of it;
+  /// under CrossValidation, into its folds' blocks).
   /// \param records the records, each an input u and measured output y of equal length
   /// \param options the selection's options
   SelectionData(const Records<Scalar>& records, const SelectOptions& options) : m_records(records), m_options(options) {
     const bool validation = options.criterion == SelectionCriterion::Validation;
+    const bool cross_validation = options.criterion == SelectionCriterion::CrossValidation;
     detail::require(
         options.validation_fraction > 0.0 && options.validation_fraction < 1.0,
         "select: validation_fraction must be in (0, 1), got " + detail::format_number(options.validation_fraction));
     detail::require(options.window >= 0,
                     "select: window must be an integer >= 0, got " + std::to_string(options.window));
-    detail::require(options.window == 0 || validation,
-                    std::string("select: window applies to criterion 'validation' only, got criterion '") +
+    detail::require(options.window == 0 || validation || cross_validation,
+                    std::string("select: window applies to criteria 'validation' and 'cross_validation' only, got "
+                                "criterion '") +
                         to_string(options.criterion) + "'");
+    detail::require(options.folds >= 2, "select: folds must be >= 2, got " + std::to_string(options.folds));
     options.identify.validate();
     m_checked.emplace(records, 0);
+    if (cross_validation) {
+      make_folds();
+      return;
+    }
     for (std::size_t i = 0; i < records.size(); ++i) {
       const std::string name = "records[" + std::to_string(i) + "]";
       const Eigen::Index n = records[i].u.size();
@@ -181,8 +220,61 @@ class SelectionData {
   /// The options, checked
   /// \return the options given
   const SelectOptions& options() const noexcept { return m_options; }
+  /// CrossValidation: the folds, each with its fit parts and held-out blocks; otherwise none
+  /// \return the folds
+  const std::vector<SelectionFold<Scalar>>& folds() const noexcept { return m_folds; }
+  /// CrossValidation: identify's options for the folds' fits (initialisation window at least
+  /// kFoldFitWindow)
+  /// \return the options
+  const IdentifyOptions& fold_identify() const noexcept { return m_fold_identify; }
 
  private:
+  /// The folds of a blocked cross-validation: every record's blocks [round(f n / folds),
+  /// round((f + 1) n / folds)); a fit part not longer than the fit window is left out.
+  void make_folds() {
+    m_fold_identify = m_options.identify;
+    m_fold_identify.initialisation_window =
+        std::max({m_options.identify.initialisation_window, m_options.window, kFoldFitWindow});
+    const Eigen::Index fit_window = m_fold_identify.initialisation_window;
+    const auto edge = [&](Eigen::Index n, int f) {
+      return static_cast<Eigen::Index>(std::llround(static_cast<double>(n) * f / m_options.folds));
+    };
+    for (std::size_t i = 0; i < m_records.size(); ++i) {
+      const Eigen::Index n = m_records[i].u.size();
+      const Eigen::Index shortest = edge(n, 1);
+      detail::require(shortest > m_options.window, "select: records[" + std::to_string(i) + "]'s " +
+                                                       std::to_string(m_options.folds) + " cross-validation blocks (" +
+                                                       std::to_string(shortest) +
+                                                       " samples the shortest) must be longer than the window (" +
+                                                       std::to_string(m_options.window) + ")");
+    }
+    m_folds.resize(static_cast<std::size_t>(m_options.folds));
+    for (int f = 0; f < m_options.folds; ++f) {
+      SelectionFold<Scalar>& fold = m_folds[static_cast<std::size_t>(f)];
+      for (const auto& record : m_records) {
+        const Eigen::Index n = record.u.size();
+        const Eigen::Index begin = edge(n, f), end = edge(n, f + 1);
+        fold.begin.push_back(begin);
+        fold.end.push_back(end);
+        for (const auto& part : {record.head(begin), record.segment(end, n - end)}) {
+          if (part.u.size() <= fit_window) continue;
+          fold.fit.push_back(part);
+          fold.fit_samples += part.u.size();
+        }
+      }
+      if (fold.fit.empty()) {
+        fold.fit_error = "bonl: select: fold " + std::to_string(f) + " has no part longer than the fit window (" +
+                         std::to_string(fit_window) + " samples) to fit on";
+        continue;
+      }
+      try {
+        fold.fit_checked.emplace(fold.fit, 0);
+      } catch (const std::invalid_argument& error) {
+        fold.fit_error = error.what();
+      }
+    }
+  }
+
   Records<Scalar> m_records;
   Records<Scalar> m_fit_records;
   std::optional<CheckedRecords<Scalar>> m_checked;
@@ -191,6 +283,8 @@ class SelectionData {
   std::vector<Eigen::Index> m_split;
   Eigen::Index m_fit_samples = 0;
   SelectOptions m_options;
+  std::vector<SelectionFold<Scalar>> m_folds;
+  IdentifyOptions m_fold_identify;
 };
 
 namespace detail {
@@ -225,6 +319,33 @@ double tail_simulation_mse(const Model& model, const Records<typename Model::Sca
   }
   const double mse = count > 0.0 ? squared / count : std::numeric_limits<double>::infinity();
   return std::isfinite(mse) ? mse : std::numeric_limits<double>::infinity();
+}
+
+/// Squared free-run error and count of one record's block [begin, end): the record simulated from rest
+/// up to the block's end and scored on the block, or, with a window, the block simulated after its
+/// first `window` samples (measured) and scored after them. False where a simulation diverges.
+template <class Model>
+bool block_simulation_error(const Model& model, const RecordView<typename Model::Scalar>& record, Eigen::Index begin,
+                            Eigen::Index end, Eigen::Index window, double& squared, double& count) {
+  typename Model::VectorX simulated;
+  const Eigen::Index first = begin + window;
+  if (window > 0) {
+    try {
+      simulated = model.simulate(record.u.segment(first, end - first), record.u.segment(begin, window),
+                                 record.y.segment(begin, window));
+    } catch (const NumericalError&) {
+      return false;
+    }
+  } else if (model.try_simulate(record.u.head(end), simulated)) {
+    simulated = simulated.tail(end - first).eval();
+  } else {
+    return false;
+  }
+  const double error = static_cast<double>((record.y.segment(first, end - first) - simulated).squaredNorm());
+  if (!std::isfinite(error)) return false;
+  squared += error;
+  count += static_cast<double>(end - first);
+  return true;
 }
 
 /// Why `model`'s free run is not bounded on the records (the file's header says what bounded is), or
@@ -278,6 +399,65 @@ std::optional<Model> refit(const Model& structure, const SelectionData<typename 
   return std::nullopt;
 }
 
+namespace detail {
+
+/// score_candidate() under CrossValidation: each fold's model identified on its fit parts, bounded
+/// on all the records, and scored on its held-out blocks; the row's model is the last fold's.
+template <class Model>
+void cross_validate(SelectionCandidate<Model>& row, const SelectionData<typename Model::Scalar>& data) {
+  const Eigen::Index p = row.structure.num_params();
+  const Eigen::Index fit_window = data.fold_identify().initialisation_window;
+  double squared = 0.0, count = 0.0, fit_squared = 0.0, fit_count = 0.0;
+  std::vector<double> fold_mse;
+  for (std::size_t f = 0; f < data.folds().size(); ++f) {
+    const auto& fold = data.folds()[f];
+    const std::string which = "fold " + std::to_string(f) + ": ";
+    const Eigen::Index scored = fold.fit_samples - static_cast<Eigen::Index>(fold.fit.size()) * fit_window;
+    if (scored <= p) {
+      row.error = "bonl: select: " + which + std::to_string(p) + " parameters cannot be fitted on the " +
+                  std::to_string(scored) + " samples of its fit parts after their window";
+      return;
+    }
+    if (!fold.fit_checked) {
+      row.error = fold.fit_error;
+      return;
+    }
+    try {
+      row.model = identify(row.structure, *fold.fit_checked, data.fold_identify());
+    } catch (const std::exception& error) {
+      row.error = which + error.what();
+      return;
+    }
+    row.error = unbounded_free_run(*row.model, data.records());
+    if (!row.error.empty()) {
+      row.error = which + row.error;
+      return;
+    }
+    const double fit_mse =
+        tail_simulation_mse(*row.model, fold.fit, std::vector<Eigen::Index>(fold.fit.size(), 0), fit_window);
+    fit_squared += fit_mse * static_cast<double>(scored);
+    fit_count += static_cast<double>(scored);
+    double fold_squared = 0.0, fold_count = 0.0;
+    for (std::size_t i = 0; i < data.records().size(); ++i) {
+      if (!block_simulation_error(*row.model, data.records()[i], fold.begin[i], fold.end[i], data.options().window,
+                                  fold_squared, fold_count)) {
+        fold_squared = std::numeric_limits<double>::infinity();
+        break;
+      }
+    }
+    fold_mse.push_back(fold_count > 0.0 ? fold_squared / fold_count : std::numeric_limits<double>::infinity());
+    squared += fold_squared;
+    count += fold_count;
+  }
+  row.fit_mse = fit_count > 0.0 ? fit_squared / fit_count : std::numeric_limits<double>::infinity();
+  const double mse = count > 0.0 ? squared / count : std::numeric_limits<double>::infinity();
+  row.validation_mse = std::isfinite(mse) ? mse : std::numeric_limits<double>::infinity();
+  row.score = row.validation_mse;
+  row.fold_mse = std::move(fold_mse);
+}
+
+}  // namespace detail
+
 /// Identifies one candidate structure on the data's fit parts and scores it by the data's criterion:
 /// its row of the selection's table. A candidate with more parameters than the fit parts have samples,
 /// or whose identification throws, gets an infinite score, no model and the reason in `error`.
@@ -288,6 +468,10 @@ template <class Model>
 SelectionCandidate<Model> score_candidate(const Model& structure, const SelectionData<typename Model::Scalar>& data) {
   SelectionCandidate<Model> row(structure);
   const SelectOptions& options = data.options();
+  if (options.criterion == SelectionCriterion::CrossValidation) {
+    detail::cross_validate(row, data);
+    return row;
+  }
   const Eigen::Index p = structure.num_params();
   if (data.fit_samples() <= p) {  // identify would refuse it: a failed candidate, not bad input
     row.error = "bonl: select: " + std::to_string(p) + " parameters cannot be fitted on the " +

@@ -36,8 +36,9 @@ TEST_CASE("the two-segment polynomial continues linearly beyond its range and is
   CHECK(Block::evaluate(f, p, 2.0, -0.5, 1.0) == Approx(20.1).epsilon(1e-14));
   for (const double u : {-3.0, -0.7, -0.5, -0.2, 0.0, 0.4, 1.0, 1.3, 5.0}) {
     const double low = -0.5, high = 1.0;
-    const double expected =
-        u > high ? continued_by_hand(f, p, high, u) : u < low ? continued_by_hand(f, p, low, u) : Block::evaluate(f, p, u);
+    const double expected = u > high  ? continued_by_hand(f, p, high, u)
+                            : u < low ? continued_by_hand(f, p, low, u)
+                                      : Block::evaluate(f, p, u);
     CHECK(Block::evaluate(f, p, u, low, high) == Approx(expected).epsilon(1e-13));
     // The regressor stays linear in [f; p]: basis . [f; p] is the value, and returned.
     Eigen::Matrix<double, 8, 1> phi;
@@ -66,7 +67,9 @@ TEST_CASE("a Hammerstein model continues its input block linearly beyond its inp
   bool some_beyond = false;
   for (Eigen::Index k = 0; k < u.size(); ++k) {
     const double v = u[k] - 0.3;
-    const double w = v > 0.8 ? continued_by_hand(f, p, 0.8, v) : v < -1.0 ? continued_by_hand(f, p, -1.0, v) : model.input_block()(v);
+    const double w = v > 0.8    ? continued_by_hand(f, p, 0.8, v)
+                     : v < -1.0 ? continued_by_hand(f, p, -1.0, v)
+                                : model.input_block()(v);
     some_beyond = some_beyond || v > 0.8 || v < -1.0;
     REQUIRE(y[k] == Approx(linear.step(w) - 0.1).margin(1e-12));
   }

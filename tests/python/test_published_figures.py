@@ -158,7 +158,7 @@ def test_the_experiment_page_says_what_the_results_say_of_p_i_h():
     """The sentences of docs/explanation/paper_experiment.md on the Prandtl-Ishlinskii Hammerstein model (P-I-H), against the committed
     results (which the tests above tie to the code): with bonl's estimator between P-H-W and Hammerstein
     in the experiment, first with the paper's; in the sweep above P-H-W at every point with bonl's
-    estimator, above Hammerstein below 4% pilot hysteresis and below it from there; with the paper's
+    estimator, above Hammerstein up to 4% pilot hysteresis and below it from 5%; with the paper's
     estimator below its P-H-W at every point but both at zero, where its free run diverges."""
     committed = json.loads((ROOT / "docs" / "results" / "plant_experiment.json").read_text())
     ours, paper = committed["methods"]["output_error"]["mse"], committed["methods"]["paper"]["mse"]
@@ -172,7 +172,7 @@ def test_the_experiment_page_says_what_the_results_say_of_p_i_h():
         if row["method"] == "output_error":
             assert mse[pih] > mse[phw], where
             if row["parameter"] == "pilot_hysteresis":
-                assert (mse[pih] < mse["Hammerstein"]) == (float(row["value"]) >= 0.04), where
+                assert (mse[pih] < mse["Hammerstein"]) == (float(row["value"]) >= 0.05), where
         elif row["parameter"] == "both_zero":
             assert mse[pih] > 10 * mse["ARX"], where  # off the figure's scale: diverged
         else:
@@ -288,16 +288,17 @@ def test_the_measured_data_page_quotes_the_committed_check_scores_and_blocks():
     committed = json.loads((ROOT / "docs" / "results" / "measured_data.json").read_text())
     text = " ".join((ROOT / "docs" / "lab" / "measured_data.md").read_text().split())
     act = {name: "%.3f" % row["check_rms"] for name, row in committed["actuator"].items()}
-    assert ("P-H-W models fit the check part better than H-W does (%s and %s against %s;"
-            % (act["Hammerstein"], act["PseudoHammersteinWiener"], act["HammersteinWiener"])) in text
+    assert float(act["Hammerstein"]) <= float(act["HammersteinWiener"]) < float(act["PseudoHammersteinWiener"])
+    assert ("fits the check part as well as H-W does (%s against %s, P-H-W %s;"
+            % (act["Hammerstein"], act["HammersteinWiener"], act["PseudoHammersteinWiener"])) in text
     assert "H-W wins on check (%.3f)" % committed["cascaded_tanks"]["HammersteinWiener"]["check_rms"] in text
     chosen = committed["actuator"]["HammersteinWiener"]
     actuator = md.load_actuator()
     model = bonl.identify(md.structure(bonl.HammersteinWiener, chosen["orders"]), actuator["u"][:512],
                           actuator["y"][:512], **md.settings(bonl.HammersteinWiener))
     q = model.q
-    assert q[0] == 1.0 and len(q) == 3
-    assert "`y = x + %.3f x² - %.4f x³`" % (q[1], -q[2]) in text
+    assert q[0] == 1.0 and len(q) == 2 and q[1] > 0
+    assert "`y = x + %.3f x²`" % q[1] in text
 
 
 def test_the_experiment_page_says_what_the_sweep_gives_without_hysteresis_or_backlash():

@@ -32,7 +32,7 @@ template <typename Scalar, typename Out>
 void continued_powers(Scalar u, Eigen::Index r, Scalar low, Scalar high, Out& out) noexcept {
   const bool beyond = beyond_range(u, low, high);
   const Scalar edge = beyond ? (u > high ? high : low) : u;
-  const Scalar step = u - edge;  // 0 inside: the powers of u
+  const Scalar step = u - edge;                    // 0 inside: the powers of u
   Scalar power = Scalar(1), previous = Scalar(0);  // e^l and e^(l-1)
   for (Eigen::Index l = 0; l <= r; ++l) {
     out[l] = power + static_cast<Scalar>(l) * previous * step;

@@ -278,6 +278,11 @@ TEST_CASE("cross-validation holds each block out once and scores it by the fold'
     }
     CHECK(near(row.score, squared / count, 1e-12));
     CHECK(row.validation_mse == row.score);
+    // The refit on all the records: after the window, as the folds were fitted and as it is scored.
+    bonl::IdentifyOptions refit;
+    refit.initialisation_window = window;
+    const auto selection = bonl::select(std::vector<bonl::Hammersteind>{structure}, records, options);
+    CHECK(selection.best.theta() == bonl::identify(structure, records, refit).theta());
   }
 }
 

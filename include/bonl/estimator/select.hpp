@@ -15,8 +15,8 @@
 //   kFoldFitWindow samples, since a part after a block does not start at rest), and scores the mean
 //   squared free-run error over every held-out block: the record simulated from rest up to the
 //   block's end and scored on the block, or, with a window, the block simulated after its first m
-//   samples. Each sample is held out once; the folds' own mean squared errors are kept (fold_mse), so
-//   that a caller can tell a difference between candidates from the folds' spread;
+//   samples. Each sample is held out once; the folds' own mean squared errors are kept (fold_mse).
+//   With a window the best is refitted after it too, as its folds were fitted;
 // - AIC and BIC fit on all the data and score N log(mse) + 2 p or N log(mse) + p log(N) of the
 //   free-run simulation error.
 // The best is refitted on all the data. A candidate that cannot be fitted (more parameters than its
@@ -169,7 +169,10 @@ class SelectionData {
     detail::require(options.folds >= 2, "select: folds must be >= 2, got " + std::to_string(options.folds));
     options.identify.validate();
     m_checked.emplace(records, 0);
+    m_refit_identify = options.identify;
     if (cross_validation) {
+      m_refit_identify.initialisation_window = std::max(options.identify.initialisation_window, options.window);
+      detail::require_initialisation_window(records, m_refit_identify.initialisation_window);
       make_folds();
       return;
     }
@@ -227,6 +230,10 @@ class SelectionData {
   /// kFoldFitWindow)
   /// \return the options
   const IdentifyOptions& fold_identify() const noexcept { return m_fold_identify; }
+  /// identify's options for the refit on all the records (refit()): the options', with under
+  /// CrossValidation an initialisation window at least the selection's window
+  /// \return the options
+  const IdentifyOptions& refit_identify() const noexcept { return m_refit_identify; }
 
  private:
   /// The folds of a blocked cross-validation: every record's blocks [round(f n / folds),
@@ -285,6 +292,7 @@ class SelectionData {
   SelectOptions m_options;
   std::vector<SelectionFold<Scalar>> m_folds;
   IdentifyOptions m_fold_identify;
+  IdentifyOptions m_refit_identify;
 };
 
 namespace detail {
@@ -381,7 +389,9 @@ std::string unbounded_free_run(const Model& model, const Records<typename Model:
 
 /// The structure identified on all the records of `data`, if its free run there is bounded (the
 /// file's header): what select() makes of its best candidate. Otherwise none, and `why` says why (an
-/// identification that throws NumericalError, or the free run's bound).
+/// identification that throws NumericalError, or the free run's bound). Under CrossValidation with a
+/// window it is fitted after that window too (SelectionData::refit_identify()), as its folds were
+/// and as it is scored: fitted from rest, a model learns a start its use never sees.
 /// \param structure the candidate
 /// \param data the checked records and options
 /// \param why set to the reason where there is no model
@@ -390,7 +400,7 @@ template <class Model>
 std::optional<Model> refit(const Model& structure, const SelectionData<typename Model::Scalar>& data,
                            std::string& why) {
   try {
-    Model model = identify(structure, data.checked_records(), data.options().identify);
+    Model model = identify(structure, data.checked_records(), data.refit_identify());
     why = detail::unbounded_free_run(model, data.records());
     if (why.empty()) return model;
   } catch (const NumericalError& error) {

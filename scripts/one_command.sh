@@ -8,7 +8,7 @@
 #
 #   bash scripts/one_command.sh [--quick]
 #
-# --quick (the CI's smoke run): one ARX structure on the estimation records' first samples, into a
+# --quick (the CI's smoke run): the search with a 2-second budget on the estimation records' first samples, into a
 # temporary folder; nothing committed is touched and the figures are not judged.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."

@@ -1,5 +1,5 @@
 """The one command on every measured data set: ``python -m bonl identify`` with no model and no orders
-(``VARIANTS``: as it comes), on each data set's estimation records (written as CSV files, one per
+(the structure search, ``bonl.search``; ``VARIANTS``: as it comes), on each data set's estimation records (written as CSV files, one per
 record, with the tests' state-initialisation window as ``--window``), its chosen model scored on the
 data set's tests by the data set's own protocol (``benchmark.Test.rms``), beside the figure of the
 data-set script's hand-made grids (the family it selects on the estimation data,
@@ -8,8 +8,8 @@ record.
 
     python examples/datasets/one_command.py [--json FILE] [--markdown FILE] [--quick]
 
---quick (the CI's smoke run): the estimation records' first samples and one ARX structure (``--model
-ARX --orders na=2 nb=1 nk=1``), so that the plumbing cannot rot; its figures are not judged.
+--quick (the CI's smoke run): the estimation records' first samples and a search budget of
+QUICK_BUDGET seconds, so that the plumbing cannot rot; its figures are not judged.
 scripts/one_command.sh writes docs/results/one_command.json and one_command_summary.md;
 tests/python/test_one_command.py checks them.
 """
@@ -48,6 +48,8 @@ def _write_csv(path: pathlib.Path, u: np.ndarray, y: np.ndarray) -> pathlib.Path
 
 #: The command's variants by name: their extra arguments (the default: none).
 VARIANTS = {"default": []}
+#: --quick: the search's budget (seconds), which its sweep and growth stop at.
+QUICK_BUDGET = 2
 
 
 def _command(made: benchmark.Benchmark, variant: str, quick: bool) -> dict:
@@ -58,8 +60,8 @@ def _command(made: benchmark.Benchmark, variant: str, quick: bool) -> dict:
         arguments = ["identify", *files, "--input", "u", "--output", "y", "--window", str(made.window),
                      "--out", str(folder / "model.json"), "--scores", str(folder / "scores.json"), "--no-progress"]
         arguments += VARIANTS[variant]
-        if quick:  # the smoke run: a single ARX structure
-            arguments += ["--model", "ARX", "--orders", "na=2", "nb=1", "nk=1"]
+        if quick:  # the smoke run: the search cut short
+            arguments += ["--budget", str(QUICK_BUDGET)]
         start = time.perf_counter()
         with contextlib.redirect_stdout(io.StringIO()):
             status = bonl_main(arguments)
@@ -74,7 +76,10 @@ def _command(made: benchmark.Benchmark, variant: str, quick: bool) -> dict:
     print(f"{made.name}, {variant}: {type(model).__name__} {bonl.named_orders(model)}: "
           + ", ".join(f"{name} {_figure(value)}" for name, value in figures.items()) + f" ({seconds:.0f} s)",
           flush=True)
-    return {"model": type(model).__name__, "orders": bonl.named_orders(model), "candidates": scores["candidates"],
+    return {"model": type(model).__name__, "orders": bonl.named_orders(model),
+            "identify": scores["identify"],
+            "search": [{k: stage[k] for k in ("name", "choice")} for stage in scores.get("search", [])],
+            "candidates": scores["candidates"],
             "refused": sum(1 for row in scores["ranking"] if "error" in row), "seconds": round(seconds, 1),
             "test_rms": figures, "json": json.loads(model.to_json())}
 

@@ -33,7 +33,8 @@ metrics = _importlib.import_module(".metrics", __name__)
 plant = _importlib.import_module(".plant", __name__)
 
 from .selection import Selection, grid, named_orders, select  # noqa: E402  (order and structure selection)
+from .structure_search import SearchResult, place_from_data, search  # noqa: E402  (a structure search, no grid)
 from .data_file import read_columns, write_columns  # noqa: E402  (records from CSV files)
 from .report import plot_fit, summary  # noqa: E402  (a model in words, its fit in a figure)
 
-__all__ = sorted({*_core_names, "__version__", "control", "experiment", "metrics", "plant", "Selection", "grid", "named_orders", "plot_fit", "read_columns", "select", "summary", "write_columns"})
+__all__ = sorted({*_core_names, "__version__", "control", "experiment", "metrics", "plant", "SearchResult", "Selection", "grid", "named_orders", "place_from_data", "plot_fit", "read_columns", "search", "select", "summary", "write_columns"})

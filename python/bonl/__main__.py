@@ -7,7 +7,7 @@ demo
     estimator methods, and with ``--out DIR`` the paper's Figs. 11 and 12, tables.txt and
     results.json (see :mod:`bonl.demo`).
 identify
-    From a data file (CSV) to a model file: order selection over one family or all of them, the
+    From a data file (CSV) to a model file: a structure search, or selection over a grid, the
     chosen model's summary beside a linear model's, its scores and figure (see
     :mod:`bonl.identify_command`).
 simulate
@@ -52,10 +52,11 @@ COMMANDS: Sequence[tuple] = (
     (
         "identify",
         "identify a model from a data file (CSV) and write its model file",
-        "Select a model on the input and output columns of a data file (bonl.select: the candidates are "
-        "scored on the last quarter of the data, held out), write the chosen model as a model file, and "
-        "print its summary beside the linear (ARX) model selected the same way. --model and --orders "
-        "narrow the candidates (an order with several comma-separated values is a grid); --test-from K "
+        "Find a model on the input and output columns of a data file (bonl.search: a structure search "
+        "over every family, scored on held-out data, within --budget seconds), write it as a model file, "
+        "and print every stage's choice and its summary beside the linear (ARX) model. --model and --orders "
+        "select over a grid instead (bonl.select; an order with several comma-separated values is a grid); "
+        "--test-from K "
         "keeps samples K on for a test; --scores and --figure write the scores (JSON) and the fit.",
         _lazy("identify_command", "identify_arguments"),
         _lazy("identify_command", "identify_run"),

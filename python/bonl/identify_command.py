@@ -1,19 +1,22 @@
 """The ``bonl identify`` and ``bonl simulate`` commands: from a data file to a model file and back.
 
-``bonl identify DATA.csv [MORE.csv ...] --input COL --output COL --out MODEL.json`` selects a model on
-the files' records with :func:`bonl.select` (their held-out last quarters score the candidates) and
-writes the best as a model file. Which candidates:
+``bonl identify DATA.csv [MORE.csv ...] --input COL --output COL --out MODEL.json`` finds a model on
+the files' records and writes it as a model file. How:
 
-- ``--model NAME --orders na=2 nb=1 ...``: that family at those orders; an order given as a list
-  (``na=1,2,3``) makes a grid, an order not given takes :data:`DEFAULT_GRID`'s values;
-- ``--model NAME`` alone: that family over :data:`DEFAULT_GRID`;
-- neither: every family over :data:`DEFAULT_GRID` (small orders, about a hundred candidates).
+- neither ``--model`` nor ``--orders``: the structure search, :func:`bonl.search` (the delay, the
+  operating point, an integrator and the linear orders from the data, then every family seeded there,
+  its nonlinearity swept and the best grown, scored on held-out data), within ``--budget`` seconds;
+  every stage's choice is printed and saved;
+- ``--model NAME --orders na=2 nb=1 ...``: :func:`bonl.select` over that family at those orders (their
+  held-out last quarters score the candidates); an order given as a list (``na=1,2,3``) makes a grid,
+  an order not given takes :data:`DEFAULT_GRID`'s values;
+- ``--model NAME`` alone: that family over :data:`DEFAULT_GRID`.
 
 Several data files are several records (experiments) of one system, identified together. Beside the
-chosen model it always selects an ARX model on the same data and prints its figures, so a nonlinear
-model that does not beat a linear one shows. It prints the ranking's first rows (``--scores`` writes
-every candidate's, with why a candidate failed or was refused: a model whose free run is not bounded
-is never chosen, :func:`bonl.select`). Test records, never seen by the selection: ``--test FILE``
+chosen model it always prints a linear (ARX) model's figures (the search's linear stage, or an ARX
+selection on the same data), so a nonlinear model that does not beat a linear one shows. It prints the
+ranking's first rows (``--scores`` writes every candidate's, with why a candidate failed or was
+refused: a model whose free run is not bounded is never chosen, :func:`bonl.select`). Test records, never seen by the selection: ``--test FILE``
 (the same columns), or ``--test-from K``, the samples from K on of a single data file (the whole
 record simulated from rest). ``--window N`` scores the held-out parts and the test records after a
 state-initialisation window of N samples, as benchmarks do. The stages go to standard error, with a
@@ -40,12 +43,13 @@ from ._bonl import metrics as _metrics
 from .data_file import read_columns, write_columns
 from .report import plot_fit, summary
 from .selection import grid, named_orders, select
+from .structure_search import OPERATING_POINTS, search
 
 __all__ = ["DEFAULT_GRID", "candidates", "identify_arguments", "identify_run", "simulate_arguments", "simulate_run"]
 
-#: The orders tried where the command line gives none, by name; each family takes the ones it has
+#: With --model, the orders tried where --orders gives none, by name; each family takes the ones it has
 #: (an order not named here takes its value at the model's PAPER_ORDERS).
-#: Small orders, so that every family's grid runs in about a minute on a few thousand samples.
+#: Small orders, so that a family's grid runs in seconds on a few thousand samples.
 DEFAULT_GRID: Dict[str, List[int]] = {
     "na": [1, 2, 3], "nb": [1, 2], "nk": [0, 1], "r": [3], "r1": [3], "ni": [0],
     "na1": [1, 2], "nb1": [1], "na2": [1, 2], "nb2": [1], "nh": [0], "nd": [1, 2], "nv": [0],
@@ -89,7 +93,8 @@ def candidates(model: Optional[str] = None, orders: Optional[Dict[str, List[int]
     Parameters
     ----------
     model : str, optional
-        A model class's name (one of ``bonl.MODELS``); None: every family.
+        A model class's name (one of ``bonl.MODELS``); None: every family (the grid the command ran
+        before it searched; the command without --model runs :func:`bonl.search` instead).
     orders : dict of str to list of int, optional
         Orders by name, each one value or several; with ``model`` only. Orders not given take
         :data:`DEFAULT_GRID`'s values.
@@ -126,7 +131,7 @@ def identify_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--output", required=True, help="the output's column")
     parser.add_argument("--out", required=True, type=pathlib.Path, help="write the chosen model's file here (JSON)")
     parser.add_argument("--model", help="the family (" + ", ".join(m.__name__ for m in _bonl.MODELS)
-                        + "); default: every family")
+                        + "); default: the structure search over every family (bonl.search)")
     parser.add_argument("--orders", nargs="+", default=[], metavar="NAME=VALUES",
                         help="orders of --model, each one value or a comma-separated list (a grid), "
                              "e.g. na=2 nb=1,2 nk=0; the others take the default grid's")
@@ -142,9 +147,11 @@ def identify_arguments(parser: argparse.ArgumentParser) -> None:
                              "after them (default 0: simulated from rest)")
     parser.add_argument("--validation-fraction", type=float, default=0.25,
                         help="the last part of each record identified on that scores the candidates (default 0.25)")
-    parser.add_argument("--operating-point", choices=("zero", "initial", "mean"), default="zero",
-                        help="where the model's blocks are centred: at zero (default), at the first sample, "
-                             "at the data's means")
+    parser.add_argument("--operating-point", choices=OPERATING_POINTS,
+                        help="where the model's blocks are centred: at zero, at the first sample, at the data's "
+                             "means; default: the search chooses on held-out data (zero with --model)")
+    parser.add_argument("--budget", type=float, default=420.0, metavar="SECONDS",
+                        help="the search's time budget: its growth stops after this many seconds (default 420)")
     parser.add_argument("--delimiter", default=",", help="what separates the fields (default ',')")
     parser.add_argument("--scores", type=pathlib.Path,
                         help="also write the scores here (JSON): the chosen and the linear model's, and the "
@@ -239,37 +246,70 @@ def _held_out_rms(row: Any) -> Optional[float]:
     return math.sqrt(row.score) if row.error is None and math.isfinite(row.score) else None
 
 
-def _ranking(selection: Any) -> List[Dict[str, Any]]:
+@dataclasses.dataclass(frozen=True)
+class _Outcome:
+    """What the search or the selection found: the model, its held-out RMS error, every candidate's
+    row for the ranking (best first), the stages (the search's), how it held data out."""
+
+    model: Any
+    held_out_rms: Optional[float]
+    ranking: List[Dict[str, Any]]
+    held_out: str
+    identify: Dict[str, Any]  #: identify's options the model was identified with
+    stages: List[Dict[str, Any]] = dataclasses.field(default_factory=list)
+
+
+def _ranking(table: Sequence[Any], settings: Optional[Sequence[Dict[str, Any]]] = None) -> List[Dict[str, Any]]:
     return [{"rank": rank, "model": row.name, "orders": row.orders, "params": row.num_params,
-             "held_out_rms": _held_out_rms(row), **({"error": row.error} if row.error is not None else {})}
-            for rank, row in enumerate(selection.table, 1)]
+             "held_out_rms": _held_out_rms(row), **({"identify": settings[rank - 1]} if settings else {}),
+             **({"error": row.error} if row.error is not None else {})}
+            for rank, row in enumerate(table, 1)]
+
+
+def _selected(structures: List[Any], records: List[Tuple[np.ndarray, np.ndarray]], args: argparse.Namespace,
+              progress: bool) -> _Outcome:
+    """bonl.select over the structures (the command with --model)."""
+    options: Dict[str, Any] = ({} if args.operating_point in (None, "zero")
+                               else {"operating_point": args.operating_point})
+    selection = select(structures, records=records, validation_fraction=args.validation_fraction,
+                       window=args.window, progress=progress, **options)
+    return _Outcome(selection.best, _held_out_rms(selection.table[0]), _ranking(selection.table),
+                    f"the last {args.validation_fraction:g} of each record", options)
 
 
 def identify_run(args: argparse.Namespace) -> int:
-    """Runs ``bonl identify``; prints the ranking, the chosen model and the linear model's figures."""
+    """Runs ``bonl identify``; prints the stages, the ranking, the chosen model and the linear model's
+    figures."""
     fitted, tests = _records(args)
-    structures = candidates(args.model, _parse_orders(args.orders))
+    orders = _parse_orders(args.orders)
     records = [(record.u, record.y) for record in fitted]
     samples = sum(record.u.size for record in fitted)
     progress = sys.stderr.isatty() if args.progress is None else args.progress
-    options: Dict[str, Any] = {} if args.operating_point == "zero" else {"operating_point": args.operating_point}
     with warnings.catch_warnings():
         # The test records' extrapolation is counted below, not warned about per candidate.
         warnings.simplefilter("ignore", _bonl.ExtrapolationWarning)
-        _say(f"scoring {len(structures)} candidates on {len(fitted)} record(s) of {samples} samples, the last "
-             f"{args.validation_fraction:g} of each held out"
-             + (f", after a {args.window}-sample window" if args.window else ""))
-        chosen = select(structures, records=records, validation_fraction=args.validation_fraction,
-                        window=args.window, progress=progress, **options)
-        _say("scoring the linear (ARX) candidates beside it")
-        linear = select(candidates("ARX"), records=records, validation_fraction=args.validation_fraction,
-                        window=args.window, progress=progress, **options)
-    best = chosen.best
-    args.out.write_text(best.to_json() + "\n")
+        if args.model is None and not orders:
+            _say(f"searching a structure on {len(fitted)} record(s) of {samples} samples (budget {args.budget:g} s)")
+            found = search(records=records, window=args.window, budget=args.budget, progress=progress,
+                           operating_points=OPERATING_POINTS if args.operating_point is None
+                           else (args.operating_point,))
+            chosen = _Outcome(found.best, found.held_out_rms, _ranking(found.table, found.settings), found.held_out,
+                              found.setting, [dataclasses.asdict(stage) for stage in found.stages])
+            linear = (_Outcome(found.linear, found.linear_held_out_rms, [], found.held_out, found.linear_setting)
+                      if found.linear is not None else None)
+        else:
+            structures = candidates(args.model, orders)
+            _say(f"scoring {len(structures)} candidates on {len(fitted)} record(s) of {samples} samples, the last "
+                 f"{args.validation_fraction:g} of each held out"
+                 + (f", after a {args.window}-sample window" if args.window else ""))
+            chosen = _selected(structures, records, args, progress)
+            _say("scoring the linear (ARX) candidates beside it")
+            linear = _selected(candidates("ARX"), records, args, progress)
+    args.out.write_text(chosen.model.to_json() + "\n")
     with warnings.catch_warnings():
         # Said once below, with the count, instead of at each simulation of the record.
         warnings.simplefilter("ignore", _bonl.ExtrapolationWarning)
-        _report(args, fitted, tests, chosen, linear, len(chosen.table))
+        _report(args, fitted, tests, chosen, linear)
     return 0
 
 
@@ -279,11 +319,12 @@ def _say(text: str) -> None:
     sys.stderr.flush()
 
 
-def _model_report(args: argparse.Namespace, model: Any, selection: Any, fitted: List[_Record],
+def _model_report(args: argparse.Namespace, outcome: _Outcome, fitted: List[_Record],
                   tests: List[_Record]) -> Dict[str, Any]:
+    model = outcome.model
     return {
         "orders": named_orders(model),
-        "held_out_rms": _held_out_rms(selection.table[0]),
+        "held_out_rms": outcome.held_out_rms,
         "fitted_on_rms": _fitted_rms(model, fitted),
         "tests": [{"name": record.name, "rms": _free_run_rms(model, record, args.window),
                    "inputs_outside_range": int(model.extrapolated_samples(record.u[record.start:]))}
@@ -291,21 +332,27 @@ def _model_report(args: argparse.Namespace, model: Any, selection: Any, fitted: 
     }
 
 
-def _report(args: argparse.Namespace, fitted: List[_Record], tests: List[_Record], chosen: Any, linear: Any,
-            count: int) -> None:
-    """Prints the ranking, the chosen model's summary and the linear model's figures; writes the scores
-    and the figure."""
-    best = chosen.best
+def _report(args: argparse.Namespace, fitted: List[_Record], tests: List[_Record], chosen: _Outcome,
+            linear: Optional[_Outcome]) -> None:
+    """Prints the stages, the ranking, the chosen model's summary and the linear model's figures;
+    writes the scores and the figure."""
+    best = chosen.model
+    count = len(chosen.ranking)
     report = {
         "data": [record.name for record in fitted],
         "samples": [int(record.u.size) for record in fitted],
         "window": args.window,
+        "held_out": chosen.held_out,
         "model": type(best).__name__,
+        "identify": chosen.identify,
         "candidates": count,
-        **_model_report(args, best, chosen, fitted, tests),
-        "linear": _model_report(args, linear.best, linear, fitted, tests),
-        "ranking": _ranking(chosen),
+        **_model_report(args, chosen, fitted, tests),
+        "linear": _model_report(args, linear, fitted, tests) if linear is not None else None,
+        **({"search": chosen.stages} if chosen.stages else {}),
+        "ranking": chosen.ranking,
     }
+    for stage in chosen.stages:
+        print(f"{stage['name']}: {stage['choice']} ({stage['why']})")
     ranking = report["ranking"]
     print(f"ranking by held-out RMS error ({min(PRINTED_RANKS, count)} best of {count}; --scores has them all):")
     for row in ranking[:PRINTED_RANKS]:
@@ -325,12 +372,15 @@ def _report(args: argparse.Namespace, fitted: List[_Record], tests: List[_Record
         if test["inputs_outside_range"]:
             print(f"    {test['inputs_outside_range']} of its inputs lie outside the range identified on: "
                   "the model extrapolates there")
-    print(f"  selected among {count} candidates, the last {args.validation_fraction:g} of each record held out: "
-          f"RMS error there {_format(report['held_out_rms'])}")
-    linear_orders = ", ".join(f"{k}={v}" for k, v in report["linear"]["orders"].items())
-    print(f"linear model beside it: ARX ({linear_orders}), held-out RMS error "
-          f"{_format(report['linear']['held_out_rms'])}"
-          + "".join(f", test {t['name']} {_format(t['rms'])}" for t in report["linear"]["tests"]))
+    print(f"  chosen among {count} candidates, {chosen.held_out} held out: RMS error there "
+          f"{_format(report['held_out_rms'])}")
+    if linear is not None:
+        linear_orders = ", ".join(f"{k}={v}" for k, v in report["linear"]["orders"].items())
+        print(f"linear model beside it: ARX ({linear_orders}), held-out RMS error "
+              f"{_format(report['linear']['held_out_rms'])}"
+              + "".join(f", test {t['name']} {_format(t['rms'])}" for t in report["linear"]["tests"]))
+    else:
+        print("linear model beside it: none (the linear stage's ARX model is not bounded on all the records)")
     print(f"wrote {args.out}")
     if args.scores:
         args.scores.write_text(json.dumps(report, indent=1) + "\n")

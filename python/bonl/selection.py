@@ -268,7 +268,8 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
         least 10 samples, as a part after a block does not start at rest) and scored by the free-run
         MSE on the block (the record simulated from rest up to the block's end, or with ``window``,
         the block after its first samples); the score is the MSE over every block, each fold's is in
-        the row's ``fold_mse`` and the row's model is the last fold's. 'aic', 'bic': information criteria of the free-run simulation error on all
+        the row's ``fold_mse`` and the row's model is the last fold's; with ``window`` the best is
+        refitted after that window too, as its folds were. 'aic', 'bic': information criteria of the free-run simulation error on all
         the data. Every candidate is scored by C++'s ``bonl::score_candidate``, as ``bonl::select``
         scores it; one that cannot be fitted (more parameters than its fit part has samples, or an
         identification that fails), or whose free run is not bounded (the module's docstring), is

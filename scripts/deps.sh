@@ -116,6 +116,35 @@ bonl_build_example() {
   cmake --build build/examples -j2 --target "$1"
 }
 
+# Runs a results script (examples/.../NAME.py --json --markdown) and splices its table into PAGE:
+#   bonl_results_script NAME SCRIPT PAGE [--quick]
+# writes docs/results/NAME.json and NAME_summary.md; with --quick (the CI's smoke run) into a temporary
+# folder and a copy of PAGE, so that nothing committed is touched. Fails when the table did not land.
+bonl_results_script() {
+  local name=$1 script=$2 page=$3 results=docs/results quick=()
+  case ${4:-} in
+    --quick)
+      quick=(--quick)
+      local tmp
+      tmp=$(mktemp -d)
+      # shellcheck disable=SC2064 # the folder is known now
+      trap "rm -rf '$tmp'" EXIT
+      results=$tmp
+      cp "$page" "$tmp/$(basename "$page")"
+      page=$tmp/$(basename "$page") ;;
+    "") ;;
+    *) echo "usage: bash scripts/$name.sh [--quick]" >&2; return 2 ;;
+  esac
+  local python=${PYTHON:-build/venv/bin/python}
+  step "$script ${quick[*]}"
+  "$python" "$script" --json "$results/$name.json" --markdown "$results/${name}_summary.md" "${quick[@]}"
+  bonl_splice_summary "${name}_summary" "$results/${name}_summary.md" "$page"
+  "$python" -c 'import sys; sys.exit(open(sys.argv[1]).read() not in open(sys.argv[2]).read())' \
+    "$results/${name}_summary.md" "$page" ||
+    { echo "$name.sh: the table was not spliced into $page" >&2; return 1; }
+  step "wrote $results/$name.json and ${name}_summary.md, updated $page"
+}
+
 # Replaces what stands between the NAME markers of PAGE (<!-- NAME: begin ... --> and
 # <!-- NAME: end -->) with the contents of FILE: bonl_splice_summary NAME FILE PAGE...
 # tests/python/test_published_figures.py checks that the copies match their results file.

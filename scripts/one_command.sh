@@ -13,27 +13,4 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source scripts/deps.sh
-python=${PYTHON:-build/venv/bin/python}
-
-quick=()
-results=docs/results page=docs/lab/benchmarks.md
-case ${1:-} in
-  --quick)
-    quick=(--quick)
-    tmp=$(mktemp -d)
-    trap 'rm -rf "$tmp"' EXIT
-    results=$tmp
-    cp docs/lab/benchmarks.md "$tmp/benchmarks.md"
-    page=$tmp/benchmarks.md ;;
-  "") ;;
-  *) echo "usage: bash scripts/one_command.sh [--quick]" >&2; exit 2 ;;
-esac
-
-step "examples/datasets/one_command.py ${quick[*]}"
-"$python" examples/datasets/one_command.py --json "$results/one_command.json" \
-  --markdown "$results/one_command_summary.md" "${quick[@]}"
-bonl_splice_summary one_command_summary "$results/one_command_summary.md" "$page"
-"$python" -c 'import sys; sys.exit(open(sys.argv[1]).read() not in open(sys.argv[2]).read())' \
-  "$results/one_command_summary.md" "$page" ||
-  { echo "one_command.sh: the table was not spliced into $page" >&2; exit 1; }
-step "wrote $results/one_command.json and one_command_summary.md, updated $page"
+bonl_results_script one_command examples/datasets/one_command.py docs/lab/benchmarks.md "$@"

@@ -142,7 +142,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", type=pathlib.Path, help="write the results here")
     parser.add_argument("--markdown", type=pathlib.Path, help="write the table here")
-    parser.add_argument("--quick", action="store_true", help="a smoke run: one ARX structure on the first samples")
+    parser.add_argument("--quick", action="store_true",
+                        help="a smoke run: the search with a short budget on the first samples")
     args = parser.parse_args()
     results = {"quick": args.quick, "data_sets": [run_one(script, args.quick) for script in comparison.SCRIPTS]}
     if args.json:

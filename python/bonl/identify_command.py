@@ -93,8 +93,8 @@ def candidates(model: Optional[str] = None, orders: Optional[Dict[str, List[int]
     Parameters
     ----------
     model : str, optional
-        A model class's name (one of ``bonl.MODELS``); None: every family (the grid the command ran
-        before it searched; the command without --model runs :func:`bonl.search` instead).
+        A model class's name (one of ``bonl.MODELS``); None: every family (the command without
+        --model runs :func:`bonl.search` instead of this grid).
     orders : dict of str to list of int, optional
         Orders by name, each one value or several; with ``model`` only. Orders not given take
         :data:`DEFAULT_GRID`'s values.

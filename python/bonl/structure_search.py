@@ -258,12 +258,20 @@ class _Scorer:
         return [self.rows[_key(structure, setting)][0] for structure, setting in pairs]
 
 
-def _rms(row: Candidate) -> float:
-    return math.sqrt(row.score) if row.error is None and math.isfinite(row.score) else math.inf
-
-
 def _mse_rms(mse: float) -> float:
     return math.sqrt(mse) if math.isfinite(mse) else math.inf
+
+
+def _rms(row: Candidate) -> float:
+    return _mse_rms(row.score) if row.error is None else math.inf
+
+
+def _better_step(scorer: _Scorer, pairs: List[Tuple[Any, Setting]], mse: float,
+                 tolerance: float) -> Optional[Tuple[Tuple[Any, Setting], Candidate]]:
+    """The best of the pairs (structure, setting) where its held-out RMS error is more than
+    ``tolerance`` below that of ``mse``, else None: one step of a steepest descent."""
+    best = min(zip(pairs, scorer.score(pairs)), key=lambda entry: entry[1].score, default=None)
+    return best if best is not None and _rms(best[1]) < _mse_rms(mse) * (1 - tolerance) else None
 
 
 def _make(model_class: type, orders: Dict[str, int]) -> Optional[Any]:
@@ -531,10 +539,9 @@ def search(u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
             if len(windows) > 1:  # identify's window in or out, as the integrator is
                 other = Setting(lineage[1].operating_point, 0 if lineage[1].initialisation_window else window)
                 neighbours += placed([lineage[0]], other)
-            neighbour_rows = scorer.score(neighbours)
             count += len(neighbours)
-            best = min(zip(neighbours, neighbour_rows), key=lambda entry: entry[1].score, default=None)
-            if best is not None and _rms(best[1]) < _mse_rms(lineage[2]) * (1 - tolerance):
+            best = _better_step(scorer, neighbours, lineage[2], tolerance)
+            if best is not None:
                 (lineage[0], lineage[1]), lineage[2] = best[0], best[1].score
                 _say(show, f"growth: {_describe(lineage[0])} {_mse_rms(lineage[2]):.4g}")
             else:
@@ -587,11 +594,10 @@ def _climb(scorer: _Scorer, structure: Any, setting: Setting, tolerance: float, 
     current = scorer.score([(structure, setting)])[0].score
     count = 1
     while time.perf_counter() < deadline:
-        neighbours = _neighbours(structure)
-        rows = scorer.score([(n, setting) for n in neighbours])
+        neighbours = [(n, setting) for n in _neighbours(structure)]
         count += len(neighbours)
-        best = min(zip(neighbours, rows), key=lambda pair: pair[1].score, default=None)
-        if best is None or not _rms(best[1]) < math.sqrt(current) * (1 - tolerance):
+        best = _better_step(scorer, neighbours, current, tolerance)
+        if best is None:
             break
-        structure, current = best[0], best[1].score
+        (structure, _), current = best[0], best[1].score
     return structure, count

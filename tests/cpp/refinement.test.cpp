@@ -247,3 +247,51 @@ TEST_CASE("an unstable denominator is reflected inside with the same magnitude r
   const Eigen::VectorXd already = denominator({{0.5, 0.0}, {0.3, 0.8}});
   CHECK(bonl::detail::reflected_inside(already, 0.999) == already);
 }
+
+// A mask fits the outputs where it is 1 and runs the free run through the others. The oracle is the
+// truth: an integrating ARX model's noise-free record whose outputs in a block are replaced by
+// nonsense (an offset of 50 and a ramp), refined from a start 20% off. Masked out, the block changes
+// nothing: the truth comes back to 1e-8, from rest and after a window, and the mask's block's outputs
+// may be anything. Fitted, the block pulls the model away.
+TEST_CASE("with a mask the refinement fits the outputs where it is 1 and runs through the others", "[refinement]") {
+  bonl::ARXd truth(2, 1, 1, 1);
+  truth.set_a(Eigen::Vector2d(-1.2, 0.35));
+  truth.set_b(Eigen::Vector2d(0.3, 0.1));
+  const Eigen::VectorXd u = bonl::signals::random_levels(1500, 10, 1.0, 21);
+  const Eigen::VectorXd clean = truth.simulate(u);
+  Eigen::VectorXd y = clean;
+  for (Eigen::Index k = 600; k < 900; ++k) y[k] += 50.0 + 0.1 * static_cast<double>(k - 600);
+  bonl::ARXd start = truth;
+  start.set_theta(truth.theta() * 0.8);
+  const bonl::CheckedRecords<double> records(bonl::Records<double>{{u, y}}, truth.num_params());
+  for (const Eigen::Index window : {Eigen::Index(0), Eigen::Index(10)}) {
+    INFO("window " << window);
+    Eigen::VectorXd mask = Eigen::VectorXd::Ones(u.size() - window);
+    mask.segment(600 - window, 300).setZero();
+    const bonl::ARXd masked =
+        bonl::refine_output_error(std::vector<bonl::ARXd>{start}, records, 100, nullptr, window, mask);
+    CHECK((masked.theta() - truth.theta()).norm() <= 1e-8 * truth.theta().norm());
+    const bonl::ARXd fitted = bonl::refine_output_error(std::vector<bonl::ARXd>{start}, records, 100, nullptr, window);
+    CHECK((fitted.theta() - truth.theta()).norm() >= 1e-3 * truth.theta().norm());
+  }
+}
+
+TEST_CASE("E25 a bad refinement mask is refused with what was wrong", "[refinement][bad_input]") {
+  const bonl::ARXd truth = known_system<bonl::ARXd>("small");
+  const Eigen::VectorXd u = bonl::signals::random_levels(200, 5, 1.0, 3);
+  const Eigen::VectorXd y = truth.simulate(u);
+  const bonl::CheckedRecords<double> records(bonl::Records<double>{{u, y}}, truth.num_params());
+  const std::vector<bonl::ARXd> starts{truth};
+  CHECK_THROWS_WITH(bonl::refine_output_error(starts, records, 10, nullptr, 0, Eigen::VectorXd::Ones(199)),
+                    Catch::Matchers::Contains("mask must have one entry per sample after the windows (200), got 199"));
+  CHECK_THROWS_WITH(bonl::refine_output_error(starts, records, 10, nullptr, 5, Eigen::VectorXd::Ones(200)),
+                    Catch::Matchers::Contains("mask must have one entry per sample after the windows (195), got 200"));
+  Eigen::VectorXd half = Eigen::VectorXd::Ones(200);
+  half[7] = 0.5;
+  CHECK_THROWS_WITH(bonl::refine_output_error(starts, records, 10, nullptr, 0, half),
+                    Catch::Matchers::Contains("mask's entries must be 0 or 1"));
+  Eigen::VectorXd few = Eigen::VectorXd::Zero(200);
+  few.head(truth.num_params()).setOnes();
+  CHECK_THROWS_WITH(bonl::refine_output_error(starts, records, 10, nullptr, 0, few),
+                    Catch::Matchers::Contains("mask must fit more samples than the model has parameters"));
+}

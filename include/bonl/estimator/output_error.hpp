@@ -15,6 +15,10 @@
 // through the model's internal variables, which depend on theta in ways the OutputErrorTerms'
 // recursion from rest does not carry, so that Jacobian is taken by forward differences of the free
 // run (num_params() + 1 runs per iteration instead of one).
+// With a mask, only the outputs where it is 1 are fitted: the free run goes on through the others on
+// their measured input (outputs missing, as in a sensor's dropout, or held out, as a block a fit must
+// not see), so that the input there still carries an integrating or slow system's state to the
+// samples after them, where cutting the record in two would restart the state from measured outputs.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -44,24 +48,29 @@ struct RefinementReport {
 namespace detail {
 /// Mean squared free-run simulation error over the records (each from rest, or after its first
 /// `window` samples: simulate_records); `y` is their outputs one after another from sample `window`
-/// on (stacked_outputs). Infinity where the simulation diverges.
+/// on (stacked_outputs). With a `mask` (as long as y, 1 where an output is fitted, 0 where not;
+/// empty: all fitted), over the samples where it is 1. Infinity where the simulation diverges.
 template <class Model>
 double simulation_cost(const Model& model, const Records<typename Model::Scalar>& records,
                        const typename Model::VectorX& y, typename Model::VectorX& simulated,
-                       typename Model::VectorX& buffer, Eigen::Index window) {
+                       typename Model::VectorX& buffer, Eigen::Index window, const typename Model::VectorX& mask) {
   if (!simulate_records(model, records, simulated, buffer, window)) return std::numeric_limits<double>::infinity();
-  const double cost = static_cast<double>((y - simulated).squaredNorm()) / static_cast<double>(y.size());
+  const double cost =
+      mask.size() == 0
+          ? static_cast<double>((y - simulated).squaredNorm()) / static_cast<double>(y.size())
+          : static_cast<double>((y - simulated).cwiseProduct(mask).squaredNorm()) / static_cast<double>(mask.sum());
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
 
 /// The Gauss-Newton normal equations of the simulation error e(k) = y(k) - y_sim(k) at the model's
 /// theta: normal = J'J and gradient = J'e with J(k, :) = d y_sim(k) / d theta, from one free run of
 /// each record from rest through the model's OutputErrorTerms with theta held fixed, gathered in
-/// blocks (detail::add_rows).
+/// blocks (detail::add_rows); with a `mask` (simulation_cost), the rows where it is 1.
 /// Returns false if the run leaves the finite numbers.
 template <class Model, typename MatrixX>
 bool simulation_normal_equations(const Model& model, const Records<typename Model::Scalar>& records, MatrixX& normal,
-                                 typename Model::VectorX& gradient) {
+                                 typename Model::VectorX& gradient,
+                                 const typename Model::VectorX& mask = typename Model::VectorX()) {
   using Scalar = typename Model::Scalar;
   constexpr Eigen::Index kBlock = 256;
   const Eigen::Index n = model.num_params();
@@ -79,16 +88,20 @@ bool simulation_normal_equations(const Model& model, const Records<typename Mode
   typename Model::OutputErrorTerms terms(model);
   const Scalar u0 = static_cast<Scalar>(model.u0());  // the blocks see deviations from the operating point
   const Scalar y0 = static_cast<Scalar>(model.y0());
+  Eigen::Index stacked = 0;
   for (const auto& record : records) {
     terms.reset();
-    for (Eigen::Index k = 0; k < record.u.size(); ++k) {
+    for (Eigen::Index k = 0; k < record.u.size(); ++k, ++stacked) {
       const auto step = terms.step(theta, record.u[k] - u0);
       const Scalar error = record.y[k] - y0 - step.output;
       if (!std::isfinite(error)) return false;
-      rows.row(filled) = step.sensitivity.transpose();
-      errors[filled] = error;
+      if (mask.size() == 0 || mask[stacked] != Scalar(0)) {
+        rows.row(filled) = step.sensitivity.transpose();  // before accept(): the terms own it
+        errors[filled] = error;
+        ++filled;
+      }
       terms.accept();
-      if (++filled == kBlock) flush();
+      if (filled == kBlock) flush();
     }
   }
   flush();
@@ -99,11 +112,12 @@ bool simulation_normal_equations(const Model& model, const Records<typename Mode
 /// The same normal equations for the free run after each record's first `window` samples
 /// (simulate_records), with J by forward differences: column i is (y_sim(theta + h e_i) - y_sim(theta))
 /// / h, h = sqrt(eps) max(|theta_i|, 1), taken backward where the model's constraint holds theta_i at
-/// a bound. `y` is the records' outputs after their windows (stacked_outputs). Returns false if a run
-/// leaves the finite numbers.
+/// a bound. `y` is the records' outputs after their windows (stacked_outputs); with a `mask`
+/// (simulation_cost), the rows where it is 1. Returns false if a run leaves the finite numbers.
 template <class Model, typename MatrixX>
 bool window_normal_equations(const Model& model, const Records<typename Model::Scalar>& records, Eigen::Index window,
-                             const typename Model::VectorX& y, MatrixX& normal, typename Model::VectorX& gradient) {
+                             const typename Model::VectorX& y, MatrixX& normal, typename Model::VectorX& gradient,
+                             const typename Model::VectorX& mask = typename Model::VectorX()) {
   using Scalar = typename Model::Scalar;
   using VectorX = typename Model::VectorX;
   VectorX base, run, buffer;
@@ -132,8 +146,13 @@ bool window_normal_equations(const Model& model, const Records<typename Model::S
     if (!simulate_records(trial, records, run, buffer, window)) return false;
     jacobian.col(i) = (run - base) / step;
   }
+  VectorX error = y - base;
+  if (mask.size() != 0) {
+    jacobian = mask.asDiagonal() * jacobian;
+    error = error.cwiseProduct(mask);
+  }
   normal.noalias() = jacobian.transpose() * jacobian;
-  gradient.noalias() = jacobian.transpose() * (y - base);
+  gradient.noalias() = jacobian.transpose() * error;
   return normal.allFinite() && gradient.allFinite();
 }
 }  // namespace detail
@@ -146,20 +165,22 @@ namespace detail {
 /// proposes: after a taken step it shrinks by max(1/3, 1 - (2 rho - 1)^3), so it falls fast where the
 /// Gauss-Newton model is good, and it grows by doubling factors after a step that is refused.
 /// Adds its iterations to report.iterations and sets report.final_cost. `window`: each record's free
-/// run starts after its first `window` samples (0: from rest).
+/// run starts after its first `window` samples (0: from rest); `mask`: the outputs fitted
+/// (simulation_cost; empty: all).
 template <class Model>
 Model levenberg_marquardt(const Model& start, const Records<typename Model::Scalar>& records, int max_iterations,
-                          double& damping, RefinementReport& report, Eigen::Index window) {
+                          double& damping, RefinementReport& report, Eigen::Index window,
+                          const typename Model::VectorX& mask) {
   using Scalar = typename Model::Scalar;
   using VectorX = typename Model::VectorX;
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
   const VectorX y = stacked_outputs(records, window);
-  const double samples = static_cast<double>(y.size());
+  const double samples = static_cast<double>(mask.size() == 0 ? y.size() : mask.sum());
   Model best = start;
   Model trial = start;
   typename Model::OutputErrorTerms checker(start);
   VectorX simulated, candidate_simulated, scratch;
-  double cost = simulation_cost(best, records, y, simulated, scratch, window);
+  double cost = simulation_cost(best, records, y, simulated, scratch, window, mask);
   report.final_cost = cost;
   if (!std::isfinite(cost)) return best;
 
@@ -167,8 +188,8 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
   VectorX gradient;
   int iteration = 0;
   for (; iteration < max_iterations; ++iteration) {
-    const bool normal_equations = window > 0 ? window_normal_equations(best, records, window, y, normal, gradient)
-                                             : simulation_normal_equations(best, records, normal, gradient);
+    const bool normal_equations = window > 0 ? window_normal_equations(best, records, window, y, normal, gradient, mask)
+                                             : simulation_normal_equations(best, records, normal, gradient, mask);
     if (!normal_equations) break;
     const typename Model::Params theta = best.theta();
     VectorX scale(normal.rows());
@@ -185,7 +206,7 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
       start.constrain(candidate);
       if (candidate.allFinite() && checker.stable(candidate, Scalar(1))) {
         trial.set_theta(candidate);
-        new_cost = simulation_cost(trial, records, y, candidate_simulated, scratch, window);
+        new_cost = simulation_cost(trial, records, y, candidate_simulated, scratch, window, mask);
         if (new_cost < cost) {
           // Predicted decrease of the sum of squares: step' (gradient + damping D step).
           const double predicted =
@@ -235,17 +256,23 @@ inline constexpr Eigen::Index kCoarseSamples = 16384;
 /// With an initialisation window of m > 0 samples each record is simulated after its first m
 /// samples, measured (Model::simulate's past), and scored after them; the costs are over those
 /// samples, and the Jacobian is taken by forward differences (the file's header says why).
+/// With a mask, the costs are over the outputs where it is 1 (the free run goes on through the others,
+/// on their measured input), in one stage.
 /// \param starts the models to start from, at least one
 /// \param records the records, checked (CheckedRecords)
 /// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
 /// \param report when not null, filled with the costs and iterations
 /// \param initialisation_window the measured samples each record's free run starts after, >= 0 and
 /// shorter than every record; 0: from rest
+/// \param mask empty (every output fitted), or one entry per record's sample after its window, one
+/// record after another: 1 where the output is fitted, 0 where not (the records' outputs there may be
+/// any finite numbers); more 1s than the model has parameters
 /// \return the refined model that simulates the records best
 template <class Model>
 Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords<typename Model::Scalar>& records,
                           int max_iterations = 100, RefinementReport* report = nullptr,
-                          Eigen::Index initialisation_window = 0) {
+                          Eigen::Index initialisation_window = 0,
+                          const typename Model::VectorX& mask = typename Model::VectorX()) {
   using Scalar = typename Model::Scalar;
   detail::require(!starts.empty(), "starts must hold at least one model");
   detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
@@ -253,6 +280,15 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
   const Eigen::Index window = initialisation_window;
   const Eigen::Index samples = records.samples();
   const typename Model::VectorX y = detail::stacked_outputs(records.records(), window);
+  if (mask.size() != 0) {
+    detail::require(mask.size() == y.size(), "mask must have one entry per sample after the windows (" +
+                                                 std::to_string(y.size()) + "), got " + std::to_string(mask.size()));
+    detail::require((mask.array() == Scalar(0) || mask.array() == Scalar(1)).all(), "mask's entries must be 0 or 1");
+    detail::require(mask.sum() > static_cast<Scalar>(starts.front().num_params()),
+                    "mask must fit more samples than the model has parameters (" +
+                        std::to_string(starts.front().num_params()) + "), got " +
+                        detail::format_number(static_cast<double>(mask.sum())));
+  }
   typename Model::VectorX simulated, scratch;
 
   RefinementReport local;
@@ -266,12 +302,12 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
     if (!checker.stable(candidate.theta(), Scalar(1)) && detail::reflect_poles_inside(candidate, Scalar(0.999))) {
       local.reflected = true;
     }
-    costs[i] = detail::simulation_cost(candidate, records.records(), y, simulated, scratch, window);
+    costs[i] = detail::simulation_cost(candidate, records.records(), y, simulated, scratch, window, mask);
   }
   local.initial_cost = *std::min_element(costs.begin(), costs.end());
   // Stage one: every start on the records' first part (all of them when they are short).
   // With a window, each first part must be longer than it.
-  bool two_stages = samples > detail::kCoarseSamples;
+  bool two_stages = mask.size() == 0 && samples > detail::kCoarseSamples;
   const CheckedRecords<Scalar> first_part = two_stages ? records.first_part(detail::kCoarseSamples) : records;
   for (const auto& part : first_part) two_stages = two_stages && part.u.size() > window;
   const CheckedRecords<Scalar>& stage_one = two_stages ? first_part : records;
@@ -279,11 +315,11 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
   for (std::size_t i = 0; i < candidates.size() && max_iterations > 0; ++i) {
     if (!std::isfinite(costs[i])) continue;
     RefinementReport stage;
-    const Model refined =
-        detail::levenberg_marquardt(candidates[i], stage_one.records(), max_iterations, dampings[i], stage, window);
+    const Model refined = detail::levenberg_marquardt(candidates[i], stage_one.records(), max_iterations, dampings[i],
+                                                      stage, window, mask);
     local.iterations += stage.iterations;
     // Kept only where it simulates all the records better (on one stage, always).
-    const double cost = detail::simulation_cost(refined, records.records(), y, simulated, scratch, window);
+    const double cost = detail::simulation_cost(refined, records.records(), y, simulated, scratch, window, mask);
     if (cost < costs[i]) {
       candidates[i] = refined;
       costs[i] = cost;
@@ -298,7 +334,7 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
   Model best = candidates[chosen];
   // Stage two: the best on all the records.
   if (two_stages && std::isfinite(costs[chosen]) && max_iterations > 0) {
-    best = detail::levenberg_marquardt(best, records.records(), max_iterations, dampings[chosen], local, window);
+    best = detail::levenberg_marquardt(best, records.records(), max_iterations, dampings[chosen], local, window, mask);
   }
   if (report) *report = local;
   return best;

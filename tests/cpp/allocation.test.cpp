@@ -1,39 +1,23 @@
 // The per-sample update performs no heap allocation (fixed sizes never, run-time sizes once the
-// estimator is built), is noexcept, and keeps the covariance symmetric. Allocations are counted by
-// replacing the global operator new in this test executable only.
-
-// Eigen allocates with std::malloc, not operator new, which the counter does not see. Its run-time
-// check (EIGEN_RUNTIME_NO_MALLOC) reports an allocation made while forbidden through eigen_assert,
-// which is counted here instead. Both macros must come before any Eigen header, and only this file
-// defines them: it is this executable's one translation unit with Eigen (main.cpp has none).
-namespace bonl_test {
-inline long g_eigen_allocations = 0;
-}  // namespace bonl_test
-#define EIGEN_RUNTIME_NO_MALLOC
-#define eigen_assert(x) ((x) ? static_cast<void>(0) : static_cast<void>(++bonl_test::g_eigen_allocations))
+// estimator is built), is noexcept, and keeps the covariance symmetric. Allocations are counted at
+// the C allocator, in this test executable only (counting_allocator.hpp).
 
 #include <optional>
 #include <string>
 #include <vector>
 
-// The estimators compiled here, with this file's eigen_assert, not the ones the other suites share
-// (compiled_once.hpp): those would not count Eigen's allocations.
-#define BONL_TEST_OWN_ESTIMATORS
 #include "counting_allocator.hpp"
 #include "test_support.hpp"
 
 using namespace bonl_test;
 
 namespace {
-/// Runs `body` with Eigen's allocations forbidden and returns the heap allocations it made: through
-/// operator new, and through Eigen (any other failed Eigen assertion counts too).
+/// Runs `body` and returns the heap allocations it made (counting_allocator.hpp).
 template <typename Body>
 long heap_allocations_in(Body&& body) {
-  const long before = bonl_test::allocations() + g_eigen_allocations;
-  Eigen::internal::set_is_malloc_allowed(false);
+  const long before = bonl_test::allocations();
   body();
-  Eigen::internal::set_is_malloc_allowed(true);
-  return bonl_test::allocations() + g_eigen_allocations - before;
+  return bonl_test::allocations() - before;
 }
 
 /// Updates `structure` on a noisy record, with every method (the output-error one also with its

@@ -62,9 +62,9 @@ BONL_TEST_EACH_MODEL(BONL_TEST_COMPILED_ONCE)
 // bonl/estimator/recursive_estimator.hpp), for both orders of every model: most of a suite's
 // compile time where it builds estimators. Compiled in compiled_once_estimators.cpp, which defines
 // BONL_TEST_EXTERN_ESTIMATOR as empty (the two files split the work between two compiler jobs). A
-// suite that must compile its own defines BONL_TEST_OWN_ESTIMATORS before including this header:
-// allocation.test.cpp and control_allocation.test.cpp, whose Eigen counts allocations through
-// their own eigen_assert.
+// suite that must compile its own (one built with Eigen configured otherwise; none is today) defines
+// BONL_TEST_OWN_ESTIMATORS before including this header. The suites that count allocations need
+// not: they count at the C allocator (counting_allocator.hpp).
 #ifndef BONL_TEST_EXTERN_ESTIMATOR
 #define BONL_TEST_EXTERN_ESTIMATOR extern
 #endif

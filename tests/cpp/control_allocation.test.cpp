@@ -1,18 +1,9 @@
 // The inverse models' per-sample step allocates nothing and is noexcept (bonl/control/inverse_model.hpp),
 // for every model, fixed and run-time orders, minimum-phase and ZPETC. Allocations are counted as in
-// allocation.test.cpp: this executable replaces operator new and forbids Eigen's malloc.
-
-namespace bonl_test {
-inline long g_eigen_allocations = 0;
-}  // namespace bonl_test
-#define EIGEN_RUNTIME_NO_MALLOC
-#define eigen_assert(x) ((x) ? static_cast<void>(0) : static_cast<void>(++bonl_test::g_eigen_allocations))
+// allocation.test.cpp, at the C allocator (counting_allocator.hpp).
 
 #include <bonl/control.hpp>
 
-// The estimators compiled here, with this file's eigen_assert, not the ones the other suites share
-// (compiled_once.hpp): those would not count Eigen's allocations.
-#define BONL_TEST_OWN_ESTIMATORS
 #include "counting_allocator.hpp"
 #include "test_support.hpp"
 
@@ -31,8 +22,7 @@ void check_steps_allocate_nothing(const Model& model) {
   Eigen::VectorXd window = Eigen::VectorXd::Zero(inverse.window_size());
   static_assert(noexcept(inverse.step(window)), "InverseModel::step must be noexcept");
   static_assert(noexcept(inverse.step(0.0)), "InverseModel::step must be noexcept");
-  const long before = allocations() + g_eigen_allocations;
-  Eigen::internal::set_is_malloc_allowed(false);
+  const long before = allocations();
   double sum = 0.0;
   for (Eigen::Index k = 0; k < 2000; ++k) {
     for (Eigen::Index i = 0; i < window.size(); ++i) window[i] = 0.3 * std::sin(0.01 * static_cast<double>(k + i));
@@ -41,8 +31,7 @@ void check_steps_allocate_nothing(const Model& model) {
   }
   inverse.step(std::nan(""));
   inverse.reset();
-  Eigen::internal::set_is_malloc_allowed(true);
-  CHECK(allocations() + g_eigen_allocations - before == 0);
+  CHECK(allocations() - before == 0);
   CHECK(std::isfinite(sum));
 }
 }  // namespace
@@ -77,16 +66,14 @@ TEST_CASE("the adaptive inverse steps and updates without allocating between its
   options.inverse.backlash_band_per_c = 1.0;
   options.rederive_every = 1000;
   bonl::control::AdaptiveInverse<bonl::PaperPseudoHammersteinWiener> adaptive(model, options);
-  const long before = allocations() + g_eigen_allocations;
-  Eigen::internal::set_is_malloc_allowed(false);
+  const long before = allocations();
   double sum = 0.0;
   for (Eigen::Index k = 0; k < 999; ++k) {
     const double u = adaptive.step(0.3 * std::sin(0.01 * static_cast<double>(k))).value;
     adaptive.update(u, 0.1 * std::sin(0.01 * static_cast<double>(k - 8)));
     sum += u;
   }
-  Eigen::internal::set_is_malloc_allowed(true);
-  CHECK(allocations() + g_eigen_allocations - before == 0);
+  CHECK(allocations() - before == 0);
   // Every sample from the first moving command on was taken, the scale's measurement caught up on: the
   // first command, sin(0), is 0 and the model at rest there (Estimator::kScaleSamples).
   CHECK(adaptive.estimator().samples() == 998);

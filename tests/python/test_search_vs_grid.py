@@ -5,6 +5,7 @@ and on every system the search is within 1.5 times the grid's error."""
 
 import json
 import pathlib
+import re
 import sys
 import warnings
 
@@ -86,5 +87,21 @@ def test_the_docs_say_why_the_search_is_short_of_the_grid_on_the_integrating_dri
     held_out = {row.name: float(np.sqrt(row.score)) for row in table}
     text = " ".join((ROOT / "docs" / "lab" / "benchmarks.md").read_text().split())
     assert "a pole pair of radius %.3f," % radii[-1] in text
-    assert "so its score (%.3f, at the noise floor)" % held_out["Hammerstein"] in text
-    assert "the true structure's folds fit worse there (%.3f)" % held_out["NonlinearFeedback"] in text
+    # These two are identified again here, not read from the results file, and an identification
+    # amplifies the last-bit differences between machines (tests/python/figures.py): the same code
+    # gave the chosen structure's score as 0.13863 on one machine and 0.13833 on another, either side
+    # of the docs' rounding. The docs' figures are held to 1 % instead of to their last digit.
+    quoted = quoted_numbers(text, r"so its score \(", r", at the noise floor\)",
+                            r"the true structure's folds fit worse there \(", r"\)")
+    assert quoted == pytest.approx([held_out["Hammerstein"], held_out["NonlinearFeedback"]], rel=1e-2)
+
+
+def quoted_numbers(text, *around):
+    """The numbers the text quotes between each pair of patterns (before, after) of `around`."""
+    pairs = zip(around[::2], around[1::2])
+    numbers = []
+    for before, after in pairs:
+        match = re.search(before + r"([0-9]+\.[0-9]+)" + after, text)
+        assert match, "the docs no longer say " + before + "..." + after
+        numbers.append(float(match.group(1)))
+    return numbers

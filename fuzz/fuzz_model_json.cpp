@@ -4,7 +4,8 @@
 // - load_model either returns a model or throws std::invalid_argument whose message starts with
 //   "bonl: model JSON: "; any other exception is a finding.
 // - What it accepts is a model file by the format's rules, checked on a separate plain parse:
-//   exactly the keys of the kind, format "bonl-model", version 1, integer orders in range,
+//   exactly the keys of the kind, format "bonl-model", version 1 or 2 (with the operating point and
+//   the input range, held bit for bit), integer orders in range,
 //   arrays of finite numbers of the right lengths, b_0 = 1, q_1 = 1, c >= 0, knots strictly
 //   increasing and not 0; and the loaded model's numbers are those of the file, bit for bit.
 // - The typed readers agree with load_model: model_from_json<K> (run-time orders) succeeds exactly
@@ -141,13 +142,41 @@ bool numbers_ok(const nlohmann::json& value, const Vector& expected) {
   return true;
 }
 
-template <class Entry, std::size_t N>
-bool exact_keys(const nlohmann::json& object, const std::array<Entry, N>& entries) {
-  if (!object.is_object() || object.size() != N) return false;
-  for (const Entry& entry : entries) {
-    if (!object.contains(entry.name)) return false;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// A finite number with the bits of `expected`.
+bool number_ok(const nlohmann::json& value, double expected) {
+  if (!value.is_number()) return false;
+  const double x = value.get<double>();
+  return std::isfinite(x) && same_bits(&x, &expected, 1);
+}
+
+/// Version 2's "operating_point" ({"u0": .., "y0": ..}) and "input_range" ([min, max], null for an
+/// unbounded end, min <= max), and the model holds them bit for bit.
+template <class M>
+void check_operating_point_and_input_range(const nlohmann::json& point, const nlohmann::json& range, const M& model) {
+  FUZZ_CHECK(exact_keys(point, {"u0", "y0"}));
+  FUZZ_CHECK(number_ok(point["u0"], model.u0()) && number_ok(point["y0"], model.y0()));
+  FUZZ_CHECK(range.is_array() && range.size() == 2);
+  FUZZ_CHECK(range[0].is_null() ? model.input_min() == -kInfinity : number_ok(range[0], model.input_min()));
+  FUZZ_CHECK(range[1].is_null() ? model.input_max() == kInfinity : number_ok(range[1], model.input_max()));
+  FUZZ_CHECK(model.input_min() <= model.input_max());
+}
+
+/// "params" has a key for every block of M's description and no other, but may leave out a block
+/// with no entries at the model's orders (files from before the block existed).
+template <class M>
+bool params_keys_ok(const nlohmann::json& params, const M& model) {
+  if (!params.is_object()) return false;
+  std::size_t present = 0;
+  for (std::size_t i = 0; i < M::kDescription.parameters.size(); ++i) {
+    if (params.contains(M::kDescription.parameters[i].name)) {
+      ++present;
+    } else if (model.parameter(i).size() != 0) {
+      return false;
+    }
   }
-  return true;
+  return present == params.size();
 }
 
 /// The format's rules for M's description, on the plain parse of the text.
@@ -156,15 +185,26 @@ void check_format(const std::string& text, const M& model) {
   constexpr auto& description = M::kDescription;
   const nlohmann::json document = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   FUZZ_CHECK(!document.is_discarded());
-  FUZZ_CHECK(exact_keys(document, {"format", "version", "model", "orders", "params"}));
+  FUZZ_CHECK(document.is_object() && document.contains("version") && document["version"].is_number_integer());
+  // Version 2 adds the operating point and the input range; version 1 reads as 0, 0 and the whole line.
+  const bool version_two = document["version"] == 2;
+  FUZZ_CHECK(version_two || document["version"] == 1);
+  if (version_two) {
+    FUZZ_CHECK(
+        exact_keys(document, {"format", "version", "model", "orders", "params", "operating_point", "input_range"}));
+    check_operating_point_and_input_range(document["operating_point"], document["input_range"], model);
+  } else {
+    FUZZ_CHECK(exact_keys(document, {"format", "version", "model", "orders", "params"}));
+    FUZZ_CHECK(model.u0() == 0.0 && model.y0() == 0.0);
+    FUZZ_CHECK(model.input_min() == -kInfinity && model.input_max() == kInfinity);
+  }
   FUZZ_CHECK(document["format"] == "bonl-model");
-  FUZZ_CHECK(document["version"].is_number_integer() && document["version"] == 1);
   FUZZ_CHECK(document["model"] == description.name);
   const nlohmann::json& orders = document["orders"];
   const nlohmann::json& params = document["params"];
   // The keys first (operator[] on a const json needs them). An order with a default (the integrators
   // ni) may be left out, and then the model holds its default.
-  FUZZ_CHECK(orders.is_object() && exact_keys(params, description.parameters));
+  FUZZ_CHECK(orders.is_object() && params_keys_ok(params, model));
   std::size_t present = 0;
   const auto order_values = model.orders();
   for (std::size_t i = 0; i < description.orders.size(); ++i) {
@@ -179,6 +219,7 @@ void check_format(const std::string& text, const M& model) {
   FUZZ_CHECK(orders.size() == present);  // no key but the description's orders
   for (std::size_t i = 0; i < description.parameters.size(); ++i) {
     const bonl::ParameterDescription& parameter = description.parameters[i];
+    if (!params.contains(parameter.name)) continue;  // a block with no entries (params_keys_ok)
     const nlohmann::json& value = params[parameter.name];
     const Eigen::VectorXd expected = model.parameter(i);
     if (parameter.shape == bonl::ParameterShape::Number) {

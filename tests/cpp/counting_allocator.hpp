@@ -7,7 +7,7 @@
 // Counting malloc itself, rather than replacing operator new and forbidding Eigen's malloc through
 // EIGEN_RUNTIME_NO_MALLOC and a counting eigen_assert, leaves Eigen's configuration as every other
 // suite has it: the suites that count link the estimators the others share (compiled_once.hpp)
-// instead of compiling their own, which took a third of the test build.
+// instead of compiling their own, which made allocation.test.cpp the test build's longest compile.
 //
 // With glibc (the main build), this executable defines malloc and its siblings, which glibc lets a
 // program replace, and forwards them to glibc's own (__libc_malloc, ...). Under AddressSanitizer
@@ -17,10 +17,21 @@
 #include <atomic>
 #include <cerrno>
 #include <cstddef>
+#include <cstdio>
+#include <cstdlib>
 
 namespace bonl_test {
 inline std::atomic<long> g_allocation_count{0};
-inline long allocations() { return g_allocation_count.load(); }
+inline bool allocations_counted();
+/// The heap allocations so far. Aborts where they are not being counted, so that a count of 0
+/// cannot pass for an allocation-free run.
+inline long allocations() {
+  if (!allocations_counted()) {
+    std::fputs("counting_allocator.hpp: the allocation hook is not installed\n", stderr);
+    std::abort();
+  }
+  return g_allocation_count.load();
+}
 }  // namespace bonl_test
 
 #if defined(__has_feature)
@@ -40,8 +51,13 @@ inline void count_allocation(const volatile void*, std::size_t) { ++g_allocation
 inline void ignore_free(const volatile void*) {}
 // Installed when the executable starts, before any test runs; the runtime refuses a fifth hook (0).
 inline const int g_hook_installed = __sanitizer_install_malloc_and_free_hooks(count_allocation, ignore_free);
+inline bool allocations_counted() { return g_hook_installed != 0; }
 }  // namespace bonl_test
 #else
+namespace bonl_test {
+inline bool allocations_counted() { return true; }
+}  // namespace bonl_test
+
 extern "C" {
 void* __libc_malloc(std::size_t size);
 void* __libc_calloc(std::size_t count, std::size_t size);

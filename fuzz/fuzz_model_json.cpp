@@ -131,25 +131,23 @@ bool order_ok(const nlohmann::json& value, std::int64_t minimum, std::int64_t ma
   return order >= minimum && order <= maximum && order == static_cast<std::int64_t>(expected);
 }
 
-template <typename Vector>
-bool numbers_ok(const nlohmann::json& value, const Vector& expected) {
-  if (!value.is_array() || value.size() != static_cast<std::size_t>(expected.size())) return false;
-  for (std::size_t i = 0; i < value.size(); ++i) {
-    if (!value[i].is_number()) return false;
-    const double x = value[i].get<double>();
-    if (!std::isfinite(x) || !same_bits(&x, &expected[static_cast<Eigen::Index>(i)], 1)) return false;
-  }
-  return true;
-}
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 /// A finite number with the bits of `expected`.
 bool number_ok(const nlohmann::json& value, double expected) {
   if (!value.is_number()) return false;
   const double x = value.get<double>();
   return std::isfinite(x) && same_bits(&x, &expected, 1);
 }
+
+template <typename Vector>
+bool numbers_ok(const nlohmann::json& value, const Vector& expected) {
+  if (!value.is_array() || value.size() != static_cast<std::size_t>(expected.size())) return false;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (!number_ok(value[i], expected[static_cast<Eigen::Index>(i)])) return false;
+  }
+  return true;
+}
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// Version 2's "operating_point" ({"u0": .., "y0": ..}) and "input_range" ([min, max], null for an
 /// unbounded end, min <= max), and the model holds them bit for bit.

@@ -42,7 +42,8 @@ def test_the_fuzz_dictionary_holds_every_models_name_and_every_key_of_its_files(
     documents += [json.loads(path.read_text()) for path in sorted(SEEDS.glob("*.json"))]
     assert {document["model"] for document in documents} == {model.__name__ for model in bonl.MODELS}
     words = {document["model"] for document in documents} | {key for d in documents for key in _keys(d)}
-    missing = sorted(word for word in words if json.dumps(word) not in _entries())
+    entries = _entries()
+    missing = sorted(word for word in words if json.dumps(word) not in entries)
     assert not missing, "fuzz/model_json.dict lacks " + ", ".join(missing)
 
 

@@ -91,17 +91,14 @@ def test_the_docs_say_why_the_search_is_short_of_the_grid_on_the_integrating_dri
     # amplifies the last-bit differences between machines (tests/python/figures.py): the same code
     # gave the chosen structure's score as 0.13863 on one machine and 0.13833 on another, either side
     # of the docs' rounding. The docs' figures are held to 1 % instead of to their last digit.
-    quoted = quoted_numbers(text, r"so its score \(", r", at the noise floor\)",
-                            r"the true structure's folds fit worse there \(", r"\)")
-    assert quoted == pytest.approx([held_out["Hammerstein"], held_out["NonlinearFeedback"]], rel=1e-2)
+    chosen_quoted = quoted_number(text, "so its score (", ", at the noise floor)")
+    truth_quoted = quoted_number(text, "the true structure's folds fit worse there (", ")")
+    assert chosen_quoted == pytest.approx(held_out["Hammerstein"], rel=1e-2)
+    assert truth_quoted == pytest.approx(held_out["NonlinearFeedback"], rel=1e-2)
 
 
-def quoted_numbers(text, *around):
-    """The numbers the text quotes between each pair of patterns (before, after) of `around`."""
-    pairs = zip(around[::2], around[1::2])
-    numbers = []
-    for before, after in pairs:
-        match = re.search(before + r"([0-9]+\.[0-9]+)" + after, text)
-        assert match, "the docs no longer say " + before + "..." + after
-        numbers.append(float(match.group(1)))
-    return numbers
+def quoted_number(text, before, after):
+    """The decimal number the text quotes between `before` and `after` (plain text, not patterns)."""
+    match = re.search(re.escape(before) + r"([0-9]+\.[0-9]+)" + re.escape(after), text)
+    assert match, "the docs no longer say " + before + "..." + after
+    return float(match.group(1))

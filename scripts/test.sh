@@ -11,8 +11,8 @@ bonl_ensure_deps
 # The benchmarks are built here too, and run once in a smoke mode (ctest's bench/smoke/*, pytest's
 # test_bench.py: every benchmark for a millisecond, figures not judged), so that one that throws or
 # no longer builds fails the CI; bench/run measures them.
-# The suites at -O2 (BONL_TEST_CXX_FLAGS; the library code they test, compiled_once's, the plant's and
-# the benchmarks', stays at -O3): docs/lab/performance.md, "The CI's build time".
+# The suites at -O2 (BONL_TEST_CXX_FLAGS); compiled_once's heavy templates, the plant and the
+# benchmarks stay at -O3: docs/lab/performance.md, "The CI's build time".
 step "configure (build/ci)"
 cmake -S . -B build/ci -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DBONL_BUILD_TESTS=ON -DBONL_BUILD_BENCH=ON -DBONL_WARNINGS_AS_ERRORS=ON -DBONL_TEST_CXX_FLAGS=-O2

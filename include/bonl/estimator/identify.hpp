@@ -67,6 +67,8 @@ void require_identify_options(const IdentifyOptions& options, const Settings& se
   settings.validate();
   require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
+  require(options.initial_state == InitialState::Measured || options.initialisation_window > 0,
+          "initial_state 'estimated' needs an initialisation_window > 0 (with none, every record starts at rest)");
 }
 
 /// identify() without the input range, on options and settings identify() has checked.
@@ -122,7 +124,8 @@ Model identify_records(const Model& structure, const CheckedRecords<typename Mod
     for (Model& start : Model::identify_starts(structure, records)) starts.push_back(std::move(start));
   }
   if (starts.empty()) throw NumericalError("bonl: identification failed from every start: " + failures);
-  return refine_output_error(starts, records, options.refine_iterations, nullptr, options.initialisation_window);
+  return refine_output_error(starts, records, options.refine_iterations, nullptr, options.initialisation_window, {},
+                             options.initial_state);
 }
 }  // namespace detail
 
@@ -139,7 +142,8 @@ Model identify_records(const Model& structure, const CheckedRecords<typename Mod
 ///   keeps that estimate (that is what an ARX model is).
 /// Where it refines, the free runs start from rest, or after each record's first
 /// IdentifyOptions::initialisation_window samples, measured (as the model will be used after a
-/// protocol's state-initialisation window).
+/// protocol's state-initialisation window), or with the state at the window's end estimated
+/// (IdentifyOptions::initial_state).
 /// Where it refines, all of it runs on the data in identify's own units (IdentifyOptions::normalise),
 /// and the model comes back in the data's units. Where it does not, the result is what
 /// Estimator::update gives over the records, in the data's units. `settings`: the model's own, as

@@ -1,7 +1,8 @@
 #pragma once
 // What identify() is told: the recursive estimator's options, its passes, the refinement, the data's
-// units and where the operating point comes from.
+// units, where the operating point comes from, and the refinement's window and initial state.
 
+#include "initial_state.hpp"
 #include "recursive_estimator.hpp"
 
 namespace bonl {
@@ -38,6 +39,10 @@ struct IdentifyOptions : EstimatorOptions {
   /// state-initialisation window of that many samples uses it (records that do not start at rest; an
   /// integrating plant, whose position keeps any transient of the start). 0: from rest.
   Eigen::Index initialisation_window = 0;
+  /// After an initialisation window, where each record's state at its end comes from: the window's
+  /// measured outputs (the default), or estimated beside the parameters (InitialState::Estimated,
+  /// for records that start in motion under output noise; needs initialisation_window > 0).
+  InitialState initial_state = InitialState::Measured;
 };
 
 }  // namespace bonl

@@ -19,6 +19,10 @@
 // their measured input (outputs missing, as in a sensor's dropout, or held out, as a block a fit must
 // not see), so that the input there still carries an integrating or slow system's state to the
 // samples after them, where cutting the record in two would restart the state from measured outputs.
+// With InitialState::Estimated the window's outputs that the state after it depends on (found by
+// probing: the model's lags, or further back where its state remembers more, as a backlash inside
+// its gap) are estimated beside theta, each record's own: their Jacobian columns touch only their
+// record's run.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -32,6 +36,7 @@
 #include "../detail/normal_equations.hpp"
 #include "../detail/validate.hpp"
 #include "../models/poles.hpp"
+#include "initial_state.hpp"
 #include "record_view.hpp"
 
 namespace bonl {
@@ -49,12 +54,16 @@ namespace detail {
 /// Mean squared free-run simulation error over the records (each from rest, or after its first
 /// `window` samples: simulate_records); `y` is their outputs one after another from sample `window`
 /// on (stacked_outputs). With a `mask` (as long as y, 1 where an output is fitted, 0 where not;
-/// empty: all fitted), over the samples where it is 1. Infinity where the simulation diverges.
+/// empty: all fitted), over the samples where it is 1. `past_y`: empty, or each record's window
+/// outputs in place of the measured ones. Infinity where the simulation diverges.
 template <class Model>
 double simulation_cost(const Model& model, const Records<typename Model::Scalar>& records,
                        const typename Model::VectorX& y, typename Model::VectorX& simulated,
-                       typename Model::VectorX& buffer, Eigen::Index window, const typename Model::VectorX& mask) {
-  if (!simulate_records(model, records, simulated, buffer, window)) return std::numeric_limits<double>::infinity();
+                       typename Model::VectorX& buffer, Eigen::Index window, const typename Model::VectorX& mask,
+                       const std::vector<typename Model::VectorX>& past_y = {}) {
+  if (!simulate_records(model, records, simulated, buffer, window, past_y)) {
+    return std::numeric_limits<double>::infinity();
+  }
   const double cost =
       mask.size() == 0
           ? static_cast<double>((y - simulated).squaredNorm()) / static_cast<double>(y.size())
@@ -113,18 +122,25 @@ bool simulation_normal_equations(const Model& model, const Records<typename Mode
 /// (simulate_records), with J by forward differences: column i is (y_sim(theta + h e_i) - y_sim(theta))
 /// / h, h = sqrt(eps) max(|theta_i|, 1), taken backward where the model's constraint holds theta_i at
 /// a bound. `y` is the records' outputs after their windows (stacked_outputs); with a `mask`
-/// (simulation_cost), the rows where it is 1. Returns false if a run leaves the finite numbers.
+/// (simulation_cost), the rows where it is 1. With `past_y` (each record's window outputs, in place
+/// of the measured ones) and `free` (how many of each record's last window outputs are estimated),
+/// the columns after theta's are those outputs' own, one record after another, each nonzero only on
+/// its record's rows. Returns false if a run leaves the finite numbers.
 template <class Model, typename MatrixX>
 bool window_normal_equations(const Model& model, const Records<typename Model::Scalar>& records, Eigen::Index window,
                              const typename Model::VectorX& y, MatrixX& normal, typename Model::VectorX& gradient,
-                             const typename Model::VectorX& mask = typename Model::VectorX()) {
+                             const typename Model::VectorX& mask = typename Model::VectorX(),
+                             const std::vector<typename Model::VectorX>& past_y = {},
+                             const std::vector<Eigen::Index>& free = {}) {
   using Scalar = typename Model::Scalar;
   using VectorX = typename Model::VectorX;
   VectorX base, run, buffer;
-  if (!simulate_records(model, records, base, buffer, window)) return false;
+  if (!simulate_records(model, records, base, buffer, window, past_y)) return false;
   const Eigen::Index n = model.num_params();
+  Eigen::Index estimated = 0;
+  for (const Eigen::Index count : free) estimated += count;
   const typename Model::Params theta = model.theta();
-  MatrixX jacobian(base.size(), n);
+  MatrixX jacobian = MatrixX::Zero(base.size(), n + estimated);
   Model trial = model;
   const Scalar root_epsilon = std::sqrt(std::numeric_limits<Scalar>::epsilon());
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -143,8 +159,22 @@ bool window_normal_equations(const Model& model, const Records<typename Model::S
       continue;
     }
     trial.set_theta(moved);
-    if (!simulate_records(trial, records, run, buffer, window)) return false;
+    if (!simulate_records(trial, records, run, buffer, window, past_y)) return false;
     jacobian.col(i) = (run - base) / step;
+  }
+  Eigen::Index column = n, row = 0;
+  for (std::size_t r = 0; r < free.size(); ++r) {
+    const Eigen::Index length = records[r].u.size() - window;
+    VectorX past = past_y[r];
+    for (Eigen::Index j = window - free[r]; j < window; ++j, ++column) {
+      const Scalar kept = past[j];
+      past[j] += root_epsilon * std::max(std::abs(kept), Scalar(1));
+      const Scalar step = past[j] - kept;
+      if (!simulate_record(model, records[r], window, run, &past)) return false;
+      jacobian.col(column).segment(row, length) = (run - base.segment(row, length)) / step;
+      past[j] = kept;
+    }
+    row += length;
   }
   VectorX error = y - base;
   if (mask.size() != 0) {
@@ -154,6 +184,35 @@ bool window_normal_equations(const Model& model, const Records<typename Model::S
   normal.noalias() = jacobian.transpose() * jacobian;
   gradient.noalias() = jacobian.transpose() * error;
   return normal.allFinite() && gradient.allFinite();
+}
+
+/// How many of each record's last window outputs its free run after the window depends on, by
+/// probing: from the oldest on, the first whose change moves the run, and all after it. That is the
+/// model's output memory (its lags) where its state after the window forgets older outputs, and
+/// more where it does not (a backlash inside its gap holds an older output). It depends on theta (a
+/// coefficient at 0 hides its lag). 0 for a record whose run leaves the finite numbers.
+template <class Model>
+std::vector<Eigen::Index> window_memory(const Model& model, const Records<typename Model::Scalar>& records,
+                                        Eigen::Index window) {
+  using Scalar = typename Model::Scalar;
+  using VectorX = typename Model::VectorX;
+  std::vector<Eigen::Index> free(records.size(), 0);
+  VectorX base, run;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    if (!simulate_record(model, records[r], window, base)) continue;
+    VectorX past = records[r].y.head(window);
+    for (Eigen::Index j = 0; j < window; ++j) {
+      const Scalar kept = past[j];
+      past[j] += std::sqrt(std::numeric_limits<Scalar>::epsilon()) * std::max(std::abs(kept), Scalar(1));
+      const bool moved = simulate_record(model, records[r], window, run, &past) && run != base;
+      past[j] = kept;
+      if (moved) {
+        free[r] = window - j;
+        break;
+      }
+    }
+  }
+  return free;
 }
 }  // namespace detail
 
@@ -166,21 +225,29 @@ namespace detail {
 /// Gauss-Newton model is good, and it grows by doubling factors after a step that is refused.
 /// Adds its iterations to report.iterations and sets report.final_cost. `window`: each record's free
 /// run starts after its first `window` samples (0: from rest); `mask`: the outputs fitted
-/// (simulation_cost; empty: all).
+/// (simulation_cost; empty: all). With `past_y` (not null: each record's window outputs, in place of
+/// the measured ones) and `free` (window_memory), the last free[i] of record i's are refined beside
+/// theta and left in *past_y.
 template <class Model>
 Model levenberg_marquardt(const Model& start, const Records<typename Model::Scalar>& records, int max_iterations,
                           double& damping, RefinementReport& report, Eigen::Index window,
-                          const typename Model::VectorX& mask) {
+                          const typename Model::VectorX& mask, std::vector<typename Model::VectorX>* past_y = nullptr,
+                          const std::vector<Eigen::Index>& free = {}) {
   using Scalar = typename Model::Scalar;
   using VectorX = typename Model::VectorX;
   using MatrixX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
   const VectorX y = stacked_outputs(records, window);
   const double samples = static_cast<double>(mask.size() == 0 ? y.size() : mask.sum());
+  const std::vector<Eigen::Index> none;
+  const std::vector<Eigen::Index>& estimated = past_y ? free : none;
+  std::vector<VectorX> past = past_y ? *past_y : std::vector<VectorX>{};
+  std::vector<VectorX> candidate_past = past;
+  const Eigen::Index n = start.num_params();
   Model best = start;
   Model trial = start;
   typename Model::OutputErrorTerms checker(start);
   VectorX simulated, candidate_simulated, scratch;
-  double cost = simulation_cost(best, records, y, simulated, scratch, window, mask);
+  double cost = simulation_cost(best, records, y, simulated, scratch, window, mask, past);
   report.final_cost = cost;
   if (!std::isfinite(cost)) return best;
 
@@ -188,8 +255,9 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
   VectorX gradient;
   int iteration = 0;
   for (; iteration < max_iterations; ++iteration) {
-    const bool normal_equations = window > 0 ? window_normal_equations(best, records, window, y, normal, gradient, mask)
-                                             : simulation_normal_equations(best, records, normal, gradient, mask);
+    const bool normal_equations =
+        window > 0 ? window_normal_equations(best, records, window, y, normal, gradient, mask, past, estimated)
+                   : simulation_normal_equations(best, records, normal, gradient, mask);
     if (!normal_equations) break;
     const typename Model::Params theta = best.theta();
     VectorX scale(normal.rows());
@@ -202,11 +270,17 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
       MatrixX damped = normal;
       damped.diagonal() += Scalar(damping) * scale;
       const VectorX step = damped.ldlt().solve(gradient);
-      typename Model::Params candidate = theta + step;
+      typename Model::Params candidate = theta + step.head(n);
       start.constrain(candidate);
-      if (candidate.allFinite() && checker.stable(candidate, Scalar(1))) {
+      Eigen::Index at = n;
+      for (std::size_t r = 0; r < estimated.size(); ++r) {
+        candidate_past[r] = past[r];
+        candidate_past[r].tail(estimated[r]) += step.segment(at, estimated[r]);
+        at += estimated[r];
+      }
+      if (candidate.allFinite() && step.allFinite() && checker.stable(candidate, Scalar(1))) {
         trial.set_theta(candidate);
-        new_cost = simulation_cost(trial, records, y, candidate_simulated, scratch, window, mask);
+        new_cost = simulation_cost(trial, records, y, candidate_simulated, scratch, window, mask, candidate_past);
         if (new_cost < cost) {
           // Predicted decrease of the sum of squares: step' (gradient + damping D step).
           const double predicted =
@@ -224,6 +298,7 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
     const double improvement = (cost - new_cost) / cost;
     best = trial;
     simulated.swap(candidate_simulated);
+    past.swap(candidate_past);
     cost = new_cost;
     if (improvement < 1e-10 || cost == 0.0) {
       ++iteration;
@@ -232,6 +307,7 @@ Model levenberg_marquardt(const Model& start, const Records<typename Model::Scal
   }
   report.final_cost = cost;
   report.iterations += iteration;
+  if (past_y) *past_y = past;
   return best;
 }
 
@@ -258,6 +334,10 @@ inline constexpr Eigen::Index kCoarseSamples = 16384;
 /// samples, and the Jacobian is taken by forward differences (the file's header says why).
 /// With a mask, the costs are over the outputs where it is 1 (the free run goes on through the others,
 /// on their measured input), in one stage.
+/// With InitialState::Estimated (and a window), the window outputs each record's state depends on
+/// (detail::window_memory) are refined beside the parameters, from the measured ones; the report's
+/// initial cost is from the measured ones, its final cost from the estimated ones, which are not
+/// returned: the model is what the records identify, its initial states their nuisance.
 /// \param starts the models to start from, at least one
 /// \param records the records, checked (CheckedRecords)
 /// \param max_iterations the most Levenberg-Marquardt iterations per start, >= 0
@@ -267,16 +347,23 @@ inline constexpr Eigen::Index kCoarseSamples = 16384;
 /// \param mask empty (every output fitted), or one entry per record's sample after its window, one
 /// record after another: 1 where the output is fitted, 0 where not (the records' outputs there may be
 /// any finite numbers); more 1s than the model has parameters
+/// \param initial_state where each record's state after the window comes from: its measured outputs,
+/// or estimated (which needs a window)
 /// \return the refined model that simulates the records best
 template <class Model>
 Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords<typename Model::Scalar>& records,
                           int max_iterations = 100, RefinementReport* report = nullptr,
                           Eigen::Index initialisation_window = 0,
-                          const typename Model::VectorX& mask = typename Model::VectorX()) {
+                          const typename Model::VectorX& mask = typename Model::VectorX(),
+                          InitialState initial_state = InitialState::Measured) {
   using Scalar = typename Model::Scalar;
+  using VectorX = typename Model::VectorX;
   detail::require(!starts.empty(), "starts must hold at least one model");
   detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
   detail::require_initialisation_window(records.records(), initialisation_window);
+  detail::require(initial_state == InitialState::Measured || initialisation_window > 0,
+                  "initial_state 'estimated' needs an initialisation_window > 0 (with none, every record starts at "
+                  "rest)");
   const Eigen::Index window = initialisation_window;
   const Eigen::Index samples = records.samples();
   const typename Model::VectorX y = detail::stacked_outputs(records.records(), window);
@@ -305,6 +392,21 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
     costs[i] = detail::simulation_cost(candidate, records.records(), y, simulated, scratch, window, mask);
   }
   local.initial_cost = *std::min_element(costs.begin(), costs.end());
+  // Each start's own estimate of the records' window outputs, from the measured ones: those that
+  // any start's run depends on (a start that diverges says nothing; a coefficient at 0 hides a lag).
+  const bool estimate = initial_state == InitialState::Estimated;
+  std::vector<Eigen::Index> free(estimate ? records.size() : 0, 0);
+  for (std::size_t i = 0; i < candidates.size() && estimate; ++i) {
+    if (!std::isfinite(costs[i])) continue;
+    const std::vector<Eigen::Index> memory = detail::window_memory(candidates[i], records.records(), window);
+    for (std::size_t r = 0; r < free.size(); ++r) free[r] = std::max(free[r], memory[r]);
+  }
+  std::vector<VectorX> measured;
+  if (estimate) {
+    for (const auto& record : records) measured.push_back(record.y.head(window));
+  }
+  std::vector<std::vector<VectorX>> pasts(candidates.size(), measured);
+  const auto past_of = [&](std::size_t i) { return estimate ? &pasts[i] : nullptr; };
   // Stage one: every start on the records' first part (all of them when they are short).
   // With a window, each first part must be longer than it.
   bool two_stages = mask.size() == 0 && samples > detail::kCoarseSamples;
@@ -315,14 +417,16 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
   for (std::size_t i = 0; i < candidates.size() && max_iterations > 0; ++i) {
     if (!std::isfinite(costs[i])) continue;
     RefinementReport stage;
+    std::vector<VectorX> past = pasts[i];
     const Model refined = detail::levenberg_marquardt(candidates[i], stage_one.records(), max_iterations, dampings[i],
-                                                      stage, window, mask);
+                                                      stage, window, mask, estimate ? &past : nullptr, free);
     local.iterations += stage.iterations;
     // Kept only where it simulates all the records better (on one stage, always).
-    const double cost = detail::simulation_cost(refined, records.records(), y, simulated, scratch, window, mask);
+    const double cost = detail::simulation_cost(refined, records.records(), y, simulated, scratch, window, mask, past);
     if (cost < costs[i]) {
       candidates[i] = refined;
       costs[i] = cost;
+      pasts[i] = past;
     }
   }
   std::size_t chosen = 0;
@@ -334,7 +438,8 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
   Model best = candidates[chosen];
   // Stage two: the best on all the records.
   if (two_stages && std::isfinite(costs[chosen]) && max_iterations > 0) {
-    best = detail::levenberg_marquardt(best, records.records(), max_iterations, dampings[chosen], local, window, mask);
+    best = detail::levenberg_marquardt(best, records.records(), max_iterations, dampings[chosen], local, window, mask,
+                                       past_of(chosen), free);
   }
   if (report) *report = local;
   return best;

@@ -194,14 +194,19 @@ Eigen::Matrix<Scalar, Eigen::Dynamic, 1> stacked_outputs(const Records<Scalar>& 
 
 /// The free run of one record into `out`: from rest, or with window > 0 its samples from `window` on
 /// simulated after the first `window`, measured, which set the model's state (Model::simulate's
-/// past). False if it leaves the finite numbers.
+/// past); with `past_y` (window long), after those outputs in place of the measured ones (an
+/// estimated initial state: InitialState::Estimated). False if it leaves the finite numbers.
 template <class Model>
 bool simulate_record(const Model& model, const RecordView<typename Model::Scalar>& record, Eigen::Index window,
-                     typename Model::VectorX& out) {
+                     typename Model::VectorX& out, const typename Model::VectorX* past_y = nullptr) {
   if (window == 0) return model.try_simulate(record.u, out);
   const Eigen::Index n = record.u.size() - window;
   try {
-    out = model.simulate(record.u.tail(n), record.u.head(window), record.y.head(window));
+    if (past_y) {
+      out = model.simulate(record.u.tail(n), record.u.head(window), *past_y);
+    } else {
+      out = model.simulate(record.u.tail(n), record.u.head(window), record.y.head(window));
+    }
   } catch (const NumericalError&) {
     return false;
   }
@@ -209,17 +214,20 @@ bool simulate_record(const Model& model, const RecordView<typename Model::Scalar
 }
 
 /// The free run of each record (simulate_record), one after another into `out`; false as soon as one
-/// leaves the finite numbers. `buffer` is scratch space for more than one record.
+/// leaves the finite numbers. `buffer` is scratch space for more than one record. `past_y`: empty, or
+/// each record's window outputs in place of the measured ones.
 template <class Model>
 bool simulate_records(const Model& model, const Records<typename Model::Scalar>& records, typename Model::VectorX& out,
-                      typename Model::VectorX& buffer, Eigen::Index window = 0) {
-  if (records.size() == 1) return simulate_record(model, records[0], window, out);
+                      typename Model::VectorX& buffer, Eigen::Index window = 0,
+                      const std::vector<typename Model::VectorX>& past_y = {}) {
+  const auto past = [&](std::size_t i) { return past_y.empty() ? nullptr : &past_y[i]; };
+  if (records.size() == 1) return simulate_record(model, records[0], window, out, past(0));
   Eigen::Index total = 0;
   for (const auto& record : records) total += record.u.size() - window;
   out.resize(total);
   Eigen::Index start = 0;
-  for (const auto& record : records) {
-    if (!simulate_record(model, record, window, buffer)) return false;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    if (!simulate_record(model, records[i], window, buffer, past(i))) return false;
     out.segment(start, buffer.size()) = buffer;
     start += buffer.size();
   }

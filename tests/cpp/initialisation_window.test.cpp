@@ -43,6 +43,15 @@ MovingRecord moving_record(const Model& truth, Eigen::Index samples, Eigen::Inde
   return {u.tail(samples), y.tail(samples)};
 }
 
+/// The normal equations J'J and J'e, to 1e-5 relative, against the oracle's J and the error e.
+void check_normal_equations(const Eigen::MatrixXd& normal, const Eigen::VectorXd& gradient,
+                            const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& error) {
+  const Eigen::MatrixXd expected_normal = jacobian.transpose() * jacobian;
+  const Eigen::VectorXd expected_gradient = jacobian.transpose() * error;
+  CHECK((normal - expected_normal).norm() <= 1e-5 * expected_normal.norm());
+  CHECK((gradient - expected_gradient).norm() <= 1e-5 * expected_gradient.norm());
+}
+
 double nrmse(const Eigen::VectorXd& simulated, const Eigen::VectorXd& measured) {
   const double spread = std::sqrt((measured.array() - measured.mean()).square().mean());
   return std::sqrt((simulated - measured).squaredNorm() / static_cast<double>(measured.size())) / spread;
@@ -65,11 +74,7 @@ TEMPLATE_LIST_TEST_CASE("with an initialisation window the refinement's normal e
 
   const Eigen::MatrixXd jacobian =
       run_differences(model, [&](const TestType& m) -> Eigen::VectorXd { return after_window(m, u, y, window); });
-  const Eigen::MatrixXd expected_normal = jacobian.transpose() * jacobian;
-  const Eigen::VectorXd expected_gradient =
-      jacobian.transpose() * (y.tail(scored.size()) - after_window(model, u, y, window));
-  CHECK((normal - expected_normal).norm() <= 1e-5 * expected_normal.norm());
-  CHECK((gradient - expected_gradient).norm() <= 1e-5 * expected_gradient.norm());
+  check_normal_equations(normal, gradient, jacobian, y.tail(scored.size()) - after_window(model, u, y, window));
 }
 
 TEST_CASE("an integrating system recorded in motion is recovered when fitted after its initialisation window",
@@ -168,10 +173,7 @@ TEMPLATE_LIST_TEST_CASE("with the initial state estimated the normal equations' 
   const Eigen::Index first = u0.size() - window;
   CHECK(jacobian.block(first, n, jacobian.rows() - first, free[0]).isZero(0.0));  // record 0's outputs, record 1's rows
   CHECK(jacobian.block(0, n + free[0], first, free[1]).isZero(0.0));
-  const Eigen::MatrixXd expected_normal = jacobian.transpose() * jacobian;
-  const Eigen::VectorXd expected_gradient = jacobian.transpose() * (scored - run(model, past));
-  CHECK((normal - expected_normal).norm() <= 1e-5 * expected_normal.norm());
-  CHECK((gradient - expected_gradient).norm() <= 1e-5 * expected_gradient.norm());
+  check_normal_equations(normal, gradient, jacobian, scored - run(model, past));
 }
 
 TEST_CASE("an integrating system whose windows' outputs are noisy is recovered with its initial state estimated",

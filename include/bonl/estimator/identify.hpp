@@ -67,8 +67,7 @@ void require_identify_options(const IdentifyOptions& options, const Settings& se
   settings.validate();
   require(options.passes >= 1, "passes must be >= 1, got " + std::to_string(options.passes));
   require(options.refine_iterations >= 0, "refine_iterations must be >= 0");
-  require(options.initial_state == InitialState::Measured || options.initialisation_window > 0,
-          "initial_state 'estimated' needs an initialisation_window > 0 (with none, every record starts at rest)");
+  require_initial_state(options.initial_state, options.initialisation_window);
 }
 
 /// identify() without the input range, on options and settings identify() has checked.

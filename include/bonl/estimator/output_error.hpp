@@ -361,9 +361,7 @@ Model refine_output_error(const std::vector<Model>& starts, const CheckedRecords
   detail::require(!starts.empty(), "starts must hold at least one model");
   detail::require(max_iterations >= 0, "max_iterations must be >= 0, got " + std::to_string(max_iterations));
   detail::require_initialisation_window(records.records(), initialisation_window);
-  detail::require(initial_state == InitialState::Measured || initialisation_window > 0,
-                  "initial_state 'estimated' needs an initialisation_window > 0 (with none, every record starts at "
-                  "rest)");
+  detail::require_initial_state(initial_state, initialisation_window);
   const Eigen::Index window = initialisation_window;
   const Eigen::Index samples = records.samples();
   const typename Model::VectorX y = detail::stacked_outputs(records.records(), window);

@@ -12,6 +12,7 @@
 
 #include "../detail/validate.hpp"
 #include "../error.hpp"
+#include "initial_state.hpp"
 
 namespace bonl {
 
@@ -175,6 +176,13 @@ void require_initialisation_window(const Records<Scalar>& records, Eigen::Index 
                                               ") must be shorter than every record; records[" + std::to_string(i) +
                                               "] has " + std::to_string(records[i].u.size()) + " samples");
   }
+}
+
+/// An initial-state choice checked against the window it follows: Estimated needs one
+/// (std::invalid_argument otherwise). IdentifyOptions::initial_state.
+inline void require_initial_state(InitialState state, Eigen::Index window) {
+  require(state == InitialState::Measured || window > 0,
+          "initial_state 'estimated' needs an initialisation_window > 0 (with none, every record starts at rest)");
 }
 
 /// The records' outputs one after another, each from its sample `window` on (the samples a free run

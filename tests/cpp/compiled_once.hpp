@@ -82,10 +82,10 @@ BONL_TEST_EACH_MODEL(BONL_TEST_COMPILED_ONCE)
 // The estimators (their constructor and update, defined outside the class for this:
 // bonl/estimator/recursive_estimator.hpp), for both orders of every model: most of a suite's
 // compile time where it builds estimators. Compiled in compiled_once_estimators.cpp, which defines
-// BONL_TEST_EXTERN_ESTIMATOR as empty (a third compiler job). A
-// suite that must compile its own (one built with Eigen configured otherwise; none is today) defines
-// BONL_TEST_OWN_ESTIMATORS before including this header. The suites that count allocations need
-// not: they count at the C allocator (counting_allocator.hpp).
+// BONL_TEST_EXTERN_ESTIMATOR as empty (a third compiler job). A suite that must compile its own (one
+// built with Eigen configured otherwise; none is today) defines BONL_TEST_OWN_ESTIMATORS before
+// including this header. The suites that count allocations need not: they count at the C allocator
+// (counting_allocator.hpp).
 #ifndef BONL_TEST_EXTERN_ESTIMATOR
 #define BONL_TEST_EXTERN_ESTIMATOR extern
 #endif

@@ -32,6 +32,7 @@ struct SelectionArguments {
   double validation_fraction;
   Eigen::Index window;
   int folds;
+  std::string fold_initial_state;
   IdentifyArguments identify;
   std::optional<bonl::SelectionData<double>> data;  // views inputs and outputs
 };
@@ -42,6 +43,13 @@ bonl::SelectionCriterion criterion_from_string(const std::string& name) {
     if (name == bonl::to_string(criterion)) return criterion;
   }
   bonl::detail::fail("select: criterion must be one of validation, aic, bic, cross_validation, got '" + name + "'");
+}
+
+bonl::InitialState initial_state_from_string(const std::string& name) {
+  for (const auto state : {bonl::InitialState::Measured, bonl::InitialState::Estimated}) {
+    if (name == bonl::to_string(state)) return state;
+  }
+  bonl::detail::fail("select: fold_initial_state must be 'measured' or 'estimated', got '" + name + "'");
 }
 
 /// window= and folds=: an integer (Python's or numpy's, not a bool); its range bonl::SelectionData
@@ -56,14 +64,23 @@ Eigen::Index integer_from(const py::object& value, const char* name, const char*
 std::unique_ptr<SelectionArguments> make_selection(std::vector<Eigen::VectorXd> inputs,
                                                    std::vector<Eigen::VectorXd> outputs, const std::string& criterion,
                                                    double validation_fraction, Eigen::Index window, int folds,
+                                                   const std::string& fold_initial_state,
                                                    const IdentifyArguments& identify) {
-  auto held = std::make_unique<SelectionArguments>(SelectionArguments{
-      std::move(inputs), std::move(outputs), criterion, validation_fraction, window, folds, identify, {}});
+  auto held = std::make_unique<SelectionArguments>(SelectionArguments{std::move(inputs),
+                                                                      std::move(outputs),
+                                                                      criterion,
+                                                                      validation_fraction,
+                                                                      window,
+                                                                      folds,
+                                                                      fold_initial_state,
+                                                                      identify,
+                                                                      {}});
   bonl::SelectOptions options;
   options.criterion = criterion_from_string(criterion);
   options.validation_fraction = validation_fraction;
   options.window = window;
   options.folds = folds;
+  options.fold_initial_state = initial_state_from_string(fold_initial_state);
   options.identify = identify_options(identify);
   bonl::Records<double> records;
   for (std::size_t i = 0; i < held->inputs.size(); ++i) records.emplace_back(held->inputs[i], held->outputs[i]);
@@ -138,25 +155,25 @@ void bind_selection(py::module_& m) {
           records.append(py::make_tuple(to_numpy(s.inputs[i]), to_numpy(s.outputs[i])));
         }
         const IdentifyArguments& a = s.identify;
-        return py::make_tuple(records, s.criterion, s.validation_fraction, s.window, s.folds, a.passes, a.method,
-                              a.forgetting, a.p0, a.refine_iterations, a.normalise, a.operating_point,
-                              a.initialisation_window);
+        return py::make_tuple(records, s.criterion, s.validation_fraction, s.window, s.folds, s.fold_initial_state,
+                              a.passes, a.method, a.forgetting, a.p0, a.refine_iterations, a.normalise,
+                              a.operating_point, a.initialisation_window);
       },
       [](const py::tuple& t) {
         std::vector<Eigen::VectorXd> inputs, outputs;
         read_records(py::none(), py::none(), t[0], "", inputs, outputs);
         return make_selection(std::move(inputs), std::move(outputs), t[1].cast<std::string>(), t[2].cast<double>(),
-                              t[3].cast<Eigen::Index>(), t[4].cast<int>(),
-                              {t[5].cast<int>(), t[6].cast<std::string>(), t[7], t[8].cast<std::optional<double>>(),
-                               t[9].cast<int>(), t[10].cast<bool>(), t[11], t[12].cast<Eigen::Index>()});
+                              t[3].cast<Eigen::Index>(), t[4].cast<int>(), t[5].cast<std::string>(),
+                              {t[6].cast<int>(), t[7].cast<std::string>(), t[8], t[9].cast<std::optional<double>>(),
+                               t[10].cast<int>(), t[11].cast<bool>(), t[12], t[13].cast<Eigen::Index>()});
       }));
   def_with_identify_arguments(
       m, "_selection_data",
       [](const py::typing::Optional<ArrayLike>& u, const py::typing::Optional<ArrayLike>& y,
          const py::typing::Optional<RecordList>& records, const std::string& criterion, double validation_fraction,
-         const py::object& window, const py::object& folds, int passes, const std::string& method,
-         const Forgetting& forgetting, std::optional<double> p0, int refine_iterations, bool normalise,
-         const OperatingPointSource& operating_point, Eigen::Index initialisation_window) {
+         const py::object& window, const py::object& folds, const std::string& fold_initial_state, int passes,
+         const std::string& method, const Forgetting& forgetting, std::optional<double> p0, int refine_iterations,
+         bool normalise, const OperatingPointSource& operating_point, Eigen::Index initialisation_window) {
         std::vector<Eigen::VectorXd> inputs, outputs;
         read_records(u, y, records,
                      "select(candidates, u, y) for one record, select(candidates, records=[(u1, y1), (u2, y2), ...]) "
@@ -168,14 +185,14 @@ void bind_selection(py::module_& m) {
             "select: folds must be an integer >= 2 that fits an int, got " + std::to_string(fold_count));
         return make_selection(
             std::move(inputs), std::move(outputs), criterion, validation_fraction,
-            integer_from(window, "window", ">= 0"), static_cast<int>(fold_count),
+            integer_from(window, "window", ">= 0"), static_cast<int>(fold_count), fold_initial_state,
             {passes, method, forgetting, p0, refine_iterations, normalise, operating_point, initialisation_window});
       },
       py::arg("u") = py::none(), py::arg("y") = py::none(), py::kw_only(), py::arg("records") = py::none(),
       py::arg("criterion") = "validation", py::arg("validation_fraction") = 0.25, py::arg("window") = 0,
-      py::arg("folds") = 5,
+      py::arg("folds") = 5, py::arg("fold_initial_state") = "measured",
       "bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. "
-      "The keyword arguments after window are identify's.");
+      "The keyword arguments after fold_initial_state are identify's.");
   bonl::for_each_model(bonl::Models{}, [&m](auto tag) { def_selection<typename decltype(tag)::type>(m); });
 }
 

@@ -247,6 +247,7 @@ def _refit_best(table: List[Candidate], structures: Sequence[Any], data: Any) ->
 def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
            records: Optional[Sequence[Tuple[ArrayLike, ArrayLike]]] = None, criterion: str = "validation",
            validation_fraction: float = 0.25, window: int = 0, folds: int = 5,
+           fold_initial_state: str = "measured",
            executor: Optional[concurrent.futures.Executor] = None, progress: Optional[bool] = None,
            **identify_options: Any) -> Selection:
     """Fits every candidate structure, ranks them by ``criterion`` and refits the best on all the data.
@@ -284,6 +285,11 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
         the model will be judged by; it must be shorter than every held-out part.
     folds : int, default 5
         criterion 'cross_validation': the blocks every record is cut into, >= 2.
+    fold_initial_state : {'measured', 'estimated'}, default 'measured'
+        criterion 'cross_validation': where each fold's fit parts take their state at the end of their
+        initialisation window: the window's measured outputs, or estimated beside the parameters. A
+        part after a held-out block starts in motion, and an integrating model's state there is its
+        position, which a few noisy outputs set poorly. The refit on all the records is unaffected.
     executor : concurrent.futures.Executor, optional
         Where the candidates run; default: threads on the local cores. A Dask cluster's
         ``client.get_executor()`` spreads a large grid over many machines.
@@ -307,7 +313,8 @@ def select(candidates: Iterable[Any], u: Optional[ArrayLike] = None, y: Optional
             raise ValueError(f"bonl: select: candidates[{i}] must be a bonl model, got {type(structure).__name__}")
     # The records and options checked once, in C++ (ValueError naming the bad one).
     data = _bonl._selection_data(u, y, records=records, criterion=criterion, validation_fraction=validation_fraction,
-                                 window=window, folds=folds, **identify_options)
+                                 window=window, folds=folds, fold_initial_state=fold_initial_state,
+                                 **identify_options)
 
     rows = _score_all(structures, data, executor, progress)
     # Best first; ties (and failures, all inf) keep the candidates' order, as bonl::select ranks them.

@@ -13,11 +13,15 @@ up to 10,000 samples together, 3-fold up to 30,000, and the last quarter of each
 2. **families**: every model family seeded at that linear structure (the nonlinear-feedback model in
    each of its physical variants: a stiffening spring, friction on the velocity with hinges, hysteresis
    with play operators; knots and thresholds placed from the records, :func:`place_from_data`);
+   under cross-validation a family with an integrator is seeded twice, the state of its folds' fits
+   measured and estimated (:func:`_fold_states`);
 3. **nonlinearity**: each family's delay (:data:`SWEPT_DELAYS` beside the linear stage's), then its
-   degrees, hinges and plays swept from its seed (:data:`SWEEPS`);
+   degrees, hinges and plays swept from its seed (:data:`SWEEPS`), each seed of a family on its own
+   and the better kept;
 4. **growth**: the ``families`` best structures grown one step at a time (each order up or down by one,
-   a degree, the hinges and the plays to the next value of a ladder, an integrator in or out, and with
-   a window identify's window in or out), steepest
+   a degree, the hinges and the plays to the next value of a ladder, an integrator in or out, with an
+   integrator the folds' state measured or estimated, and with a window identify's window in or
+   out), steepest
    descent while the held-out RMS error falls by more than ``tolerance``, the families in turn, until
    the time ``budget``;
 5. **choice**: among the candidates whose held-out RMS error is within ``tolerance`` of the best, the
@@ -62,18 +66,29 @@ LADDERS: Dict[str, Tuple[int, ...]] = {
 @dataclasses.dataclass(frozen=True)
 class Setting:
     """How a candidate is identified besides its structure: the operating point and identify's
-    state-initialisation window."""
+    state-initialisation window; under cross-validation, also where the folds' fits take their state
+    (:func:`bonl.select`'s ``fold_initial_state``)."""
 
     operating_point: str
     initialisation_window: int
+    fold_initial_state: str = "measured"
 
     def options(self) -> Dict[str, Any]:
+        """identify's options: those the chosen structure is refitted on all the records with."""
         options: Dict[str, Any] = {}
         if self.operating_point != "zero":
             options["operating_point"] = self.operating_point
         if self.initialisation_window:
             options["initialisation_window"] = self.initialisation_window
         return options
+
+    def scored(self) -> Dict[str, Any]:
+        """options(), and the folds' initial state where it is estimated: how a candidate was scored."""
+        return {**self.options(), **({"fold_initial_state": self.fold_initial_state}
+                                     if self.fold_initial_state != "measured" else {})}
+
+    def folds_from(self, state: str) -> "Setting":
+        return dataclasses.replace(self, fold_initial_state=state)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -99,7 +114,7 @@ class SearchResult:
     linear_setting: Dict[str, Any]   #: identify's options of the linear stage's
     held_out: str                    #: how data were held out ("5-fold blocked cross-validation", ...)
     table: List[Candidate]           #: every candidate scored, best first (failed and refused last)
-    settings: List[Dict[str, Any]]   #: each table row's identify options
+    settings: List[Dict[str, Any]]   #: each table row's identify options (Setting.scored: and its folds' state)
     stages: List[Stage]              #: the stages, in order
     budget_exhausted: bool           #: the growth stopped at the time budget, not at a local minimum
     seconds: float
@@ -110,19 +125,33 @@ class SearchResult:
         return "\n".join(lines)
 
 
+#: The samples of the least-squares slope that stands for the velocity in :func:`place_from_data`.
+VELOCITY_SPAN = 21
+
+
+def _velocity(y: np.ndarray) -> np.ndarray:
+    """The output's velocity per sample: the slope of a straight line fitted by least squares to each
+    VELOCITY_SPAN consecutive samples (its first difference where the record is shorter). A first
+    difference of a measured position is mostly its noise, whose spread is not the motion's."""
+    if y.size < VELOCITY_SPAN:
+        return np.diff(y)
+    offsets = np.arange(VELOCITY_SPAN) - (VELOCITY_SPAN - 1) / 2
+    return np.convolve(y, offsets[::-1] / float(offsets @ offsets), mode="valid")
+
+
 def _velocity_or_output(records: Sequence[Tuple[np.ndarray, np.ndarray]], nv: int, y0: float) -> np.ndarray:
     """What a feedback model's nonlinearity sees, over every record: the output's deviation from the
-    operating point (nv = 0) or its first difference (nv = 1)."""
+    operating point (nv = 0) or its velocity (nv = 1, :func:`_velocity`)."""
     if nv:
-        return np.concatenate([np.diff(y) for _, y in records])
+        return np.concatenate([_velocity(y) for _, y in records])
     return np.concatenate([y for _, y in records]) - y0
 
 
 def place_from_data(structure: Any, records: Sequence[Tuple[np.ndarray, np.ndarray]], y0: float = 0.0) -> Any:
     """A feedback structure's knots and plays' thresholds placed from the records (the rules of the
     data-set scripts, written once): for a nonlinear-feedback model, whose nonlinearity sees s (the
-    output's deviation from ``y0``, or its first difference for nv = 1), with spread sigma the standard
-    deviation of s,
+    output's deviation from ``y0``, or for nv = 1 its velocity, a least-squares slope over
+    :data:`VELOCITY_SPAN` samples), with spread sigma the standard deviation of s,
 
     - hinges: nh / 2 knots on each side of 0, at 0.25, 1, 2, 3, ... sigma (where Coulomb friction and a
       stop change the slope);
@@ -241,6 +270,7 @@ class _Scorer:
     def data(self, setting: Setting):
         if setting not in self._data:
             self._data[setting] = _bonl._selection_data(records=self.records, window=self.window, **self.scheme,
+                                                        fold_initial_state=setting.fold_initial_state,
                                                         **{**self.identify_options, **setting.options()})
         return self._data[setting]
 
@@ -376,6 +406,20 @@ def _describe(structure: Any) -> str:
     return f"{type(structure).__name__} " + " ".join(f"{k}={v}" for k, v in named_orders(structure).items())
 
 
+def _fold_note(setting: Setting) -> str:
+    return ", folds' state estimated" if setting.fold_initial_state != "measured" else ""
+
+
+def _fold_states(structure: Any, cross_validation: bool) -> Tuple[str, ...]:
+    """The folds' initial states a structure is scored with. A fold's fit part after its held-out block
+    starts in motion; an integrator's state there is a position that its first samples' noisy
+    outputs set poorly, and the error stays in every later sample. So under cross-validation a
+    structure with an integrator (ni = 1) is scored with the folds' state measured and estimated
+    (:func:`bonl.select`'s ``fold_initial_state``); without one, the error of a measured state decays,
+    and the estimated state's extra freedom only fits the fold's noise."""
+    return ("measured", "estimated") if cross_validation and _orders(structure).get("ni", 0) == 1 else ("measured",)
+
+
 def search(u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
            records: Optional[Sequence[Tuple[ArrayLike, ArrayLike]]] = None, window: int = 0,
            budget: float = 420.0, tolerance: float = 0.01, families: int = 3,
@@ -490,37 +534,52 @@ def search(u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
     y_all = np.concatenate([y for _, y in records])
     output_point = {"zero": 0.0, "mean": float(np.mean(y_all)), "initial": float(records[0][1][0])}
 
+    cross_validation = scheme["criterion"] == "cross_validation"
+
     def placed(structures, at: Setting):
-        return [(place_from_data(structure, records, output_point[at.operating_point]), at)
+        """The structures placed from the records, each with ``at`` (its folds' state measured where
+        the structure cannot have it estimated: :func:`_fold_states`)."""
+        return [(place_from_data(structure, records, output_point[at.operating_point]),
+                 at if at.fold_initial_state in _fold_states(structure, cross_validation) else at.folds_from("measured"))
                 for structure in structures]
 
     seed_settings = [setting] + ([Setting("zero", setting.initialisation_window)]
                                  if setting.operating_point != "zero" and "zero" in operating_points else [])
-    seeds = []
+    seeds = []  # each family's seed at each of its folds' states: [((structure, setting), row), ...]
+    count = 0
     for structure in _seeds(linear):
-        pairs = [pair for at in seed_settings for pair in placed([structure], at)]
-        rows = scorer.score(pairs)
-        seeds.append(min(zip(pairs, rows), key=lambda entry: entry[1].score))
-    stage("families", ", ".join(f"{_describe(pair[0])} ({pair[1].operating_point}) {_rms(row):.4g}"
-                                for pair, row in seeds),
-          "each family seeded at the linear orders, at the linear model's operating point and at zero, "
-          "held-out RMS", len(seeds) * len(seed_settings), t0)
+        per_state = []
+        for state in _fold_states(structure, cross_validation):
+            pairs = [pair for at in seed_settings for pair in placed([structure], at.folds_from(state))]
+            rows = scorer.score(pairs)
+            count += len(pairs)
+            per_state.append(min(zip(pairs, rows), key=lambda entry: entry[1].score))
+        seeds.append(per_state)
+    stage("families", ", ".join(f"{_describe(pair[0])} ({pair[1].operating_point}{_fold_note(pair[1])}) {_rms(row):.4g}"
+                                for pair, row in (min(per_state, key=lambda e: e[1].score) for per_state in seeds)),
+          "each family seeded at the linear orders, at the linear model's operating point and at zero"
+          + (", an integrator's with the folds' state measured and estimated" if cross_validation else "")
+          + ", held-out RMS", count, t0)
 
     t0 = time.perf_counter()
     lineages = []  # [structure, setting, held-out MSE, done]
     count = 0
-    for (seed, at), seed_row in seeds:
-        structure, row = seed, seed_row
-        for sweep in (_delays, _sweep):  # the delay first, then the nonlinearity at the best delay
-            swept = placed(sweep(structure), at) if time.perf_counter() < deadline else []
-            swept_rows = scorer.score(swept)
-            count += len(swept)
-            (structure, at), row = min(zip([(structure, at)] + swept, [row] + swept_rows), key=lambda e: e[1].score)
-        lineages.append([structure, at, row.score, False])
+    for per_state in seeds:
+        swept_states = []  # each folds' state swept on its own: the better is kept after the sweep
+        for (seed, at), seed_row in per_state:
+            structure, row = seed, seed_row
+            for sweep in (_delays, _sweep):  # the delay first, then the nonlinearity at the best delay
+                swept = placed(sweep(structure), at) if time.perf_counter() < deadline else []
+                swept_rows = scorer.score(swept)
+                count += len(swept)
+                (structure, at), row = min(zip([(structure, at)] + swept, [row] + swept_rows),
+                                           key=lambda e: e[1].score)
+            swept_states.append([structure, at, row.score, False])
+        lineages.append(min(swept_states, key=lambda lineage: lineage[2]))
     lineages.sort(key=lambda lineage: lineage[2])
-    stage("nonlinearity", ", ".join(f"{_describe(s)} {_mse_rms(m):.4g}" for s, _, m, _ in lineages),
-          "each family's delay (0, 1 or the linear one), then its degrees, hinges and plays swept from its seed, "
-          "held-out RMS"
+    stage("nonlinearity", ", ".join(f"{_describe(s)}{_fold_note(at)} {_mse_rms(m):.4g}" for s, at, m, _ in lineages),
+          "each family's delay (0, 1 or the linear one), then its degrees, hinges and plays swept from its seed"
+          + (" (with each of its folds' states, the better kept)" if cross_validation else "") + ", held-out RMS"
           + (", cut short at the budget" if time.perf_counter() > deadline else ""), count, t0)
 
     # 3. The best families grown in turn, within the budget.
@@ -537,18 +596,23 @@ def search(u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
                 break
             neighbours = placed(_neighbours(lineage[0]), lineage[1])
             if len(windows) > 1:  # identify's window in or out, as the integrator is
-                other = Setting(lineage[1].operating_point, 0 if lineage[1].initialisation_window else window)
+                other = dataclasses.replace(lineage[1], initialisation_window=0 if lineage[1].initialisation_window
+                                            else window)
                 neighbours += placed([lineage[0]], other)
+            # the folds' state measured or estimated, as the integrator is in or out
+            neighbours += [(lineage[0], lineage[1].folds_from(state))
+                           for state in _fold_states(lineage[0], cross_validation)
+                           if state != lineage[1].fold_initial_state]
             count += len(neighbours)
             best = _better_step(scorer, neighbours, lineage[2], tolerance)
             if best is not None:
                 (lineage[0], lineage[1]), lineage[2] = best[0], best[1].score
-                _say(show, f"growth: {_describe(lineage[0])} {_mse_rms(lineage[2]):.4g}")
+                _say(show, f"growth: {_describe(lineage[0])}{_fold_note(lineage[1])} {_mse_rms(lineage[2]):.4g}")
             else:
                 lineage[3] = True
         if exhausted:
             break
-    stage("growth", ", ".join(f"{_describe(s)} {_mse_rms(m):.4g}" for s, _, m, _ in lineages),
+    stage("growth", ", ".join(f"{_describe(s)}{_fold_note(at)} {_mse_rms(m):.4g}" for s, at, m, _ in lineages),
           "steepest descent from each of the best families" + (", stopped at the budget" if exhausted else ""),
           count, t0)
 
@@ -573,11 +637,12 @@ def search(u: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None, *,
     if model is None:
         raise _bonl.NumericalError("bonl: search: no candidate has a finite held-out score and a bounded free run"
                                    + (f"; {refused[0]}" if refused else ""))
-    stage("choice", f"{_describe(model)}, {setting.operating_point} operating point, held-out RMS {_rms(chosen):.4g}",
+    stage("choice", f"{_describe(model)}, {setting.operating_point} operating point{_fold_note(setting)}, held-out RMS "
+          f"{_rms(chosen):.4g}",
           rule + (f"; {len(refused)} refused once refitted" if refused else ""), len(entries), t0)
     linear_model, _ = _bonl._refit(linear, scorer.data(linear_setting))
     return SearchResult(model, linear_model, setting.options(), _rms(chosen), linear_rms, linear_setting.options(),
-                        held_out, [e[0] for e in entries], [e[2].options() for e in entries], stages,
+                        held_out, [e[0] for e in entries], [e[2].scored() for e in entries], stages,
                         exhausted, time.perf_counter() - start)
 
 

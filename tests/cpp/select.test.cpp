@@ -232,18 +232,25 @@ TEST_CASE("cross-validation holds each block out once and scores it by the fold'
   const auto [u2, y2] = noisy_record<bonl::Hammersteind>(500, 5, 0.02, 84);
   const bonl::Records<double> records{{u, y}, {u2, y2}};
   const bonl::Hammersteind structure(2, 1, 2, 2);
-  for (const Eigen::Index window : {Eigen::Index(0), Eigen::Index(6)}) {
+  for (const auto& [window, state] : {std::pair{Eigen::Index(0), bonl::InitialState::Measured},
+                                      std::pair{Eigen::Index(6), bonl::InitialState::Measured},
+                                      std::pair{Eigen::Index(0), bonl::InitialState::Estimated},
+                                      std::pair{Eigen::Index(6), bonl::InitialState::Estimated}}) {
+    CAPTURE(window, bonl::to_string(state));
     bonl::SelectOptions options;
     options.criterion = bonl::SelectionCriterion::CrossValidation;
     options.folds = 3;
     options.window = window;
+    options.fold_initial_state = state;
     const auto row = bonl::score_candidate(structure, bonl::SelectionData<double>(records, options));
     REQUIRE(row.error.empty());
     REQUIRE(row.fold_mse.size() == 3);
     // The oracle: each fold fitted with identify on the parts around its blocks (after a window of
-    // kFoldFitWindow samples), each block simulated with the public simulate().
+    // kFoldFitWindow samples, its state from there as fold_initial_state says), each block simulated
+    // with the public simulate().
     bonl::IdentifyOptions fit;
     fit.initialisation_window = std::max(window, bonl::kFoldFitWindow);
+    fit.initial_state = state;
     double squared = 0.0, count = 0.0;
     for (int f = 0; f < 3; ++f) {
       bonl::Records<double> parts;
@@ -278,7 +285,14 @@ TEST_CASE("cross-validation holds each block out once and scores it by the fold'
     }
     CHECK(near(row.score, squared / count, 1e-12));
     CHECK(row.validation_mse == row.score);
-    // The refit on all the records: after the window, as the folds were fitted and as it is scored.
+    // The estimated state is a fit of its own: the folds' models, and so the score, differ.
+    options.fold_initial_state = bonl::InitialState::Measured;
+    if (state == bonl::InitialState::Estimated) {
+      CHECK(row.score != bonl::score_candidate(structure, bonl::SelectionData<double>(records, options)).score);
+    }
+    // The refit on all the records: after the window, as the folds were fitted and as it is scored,
+    // with identify's own (measured) state whatever the folds'.
+    options.fold_initial_state = state;
     bonl::IdentifyOptions refit;
     refit.initialisation_window = window;
     const auto selection = bonl::select(std::vector<bonl::Hammersteind>{structure}, records, options);
@@ -295,6 +309,14 @@ TEST_CASE("cross-validation's folds and blocks are checked", "[select][bad_input
   CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
                     Catch::Matchers::Contains("folds must be >= 2, got 1"));
   options.folds = 5;
+  // The folds' initial state is cross-validation's alone.
+  options.criterion = bonl::SelectionCriterion::Validation;
+  options.fold_initial_state = bonl::InitialState::Estimated;
+  CHECK_THROWS_WITH(bonl::SelectionData<double>(records, options),
+                    Catch::Matchers::Contains("fold_initial_state 'estimated' applies to criterion "
+                                              "'cross_validation' only, got criterion 'validation'"));
+  options.criterion = bonl::SelectionCriterion::CrossValidation;
+  options.fold_initial_state = bonl::InitialState::Measured;
   options.window = 20;  // blocks of 20 samples
   CHECK_THROWS_WITH(
       bonl::SelectionData<double>(records, options),

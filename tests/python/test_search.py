@@ -62,7 +62,9 @@ def test_the_delay_is_the_first_significant_tap_no_later_than_the_rise():
 def test_knots_and_thresholds_are_placed_from_the_records_by_the_rule():
     u = random_levels(1000, 5, 1.0, 6)
     y = np.cumsum(u) * 0.01 + 0.5
-    sigma_v = np.std(np.diff(y))
+    # The velocity: each 21 samples' straight-line fit by least squares (np.polyfit), the slope.
+    span = structure_search.VELOCITY_SPAN
+    sigma_v = np.std([np.polyfit(np.arange(span), y[k:k + span], 1)[0] for k in range(y.size - span + 1)])
     friction = bonl.place_from_data(bonl.NonlinearFeedback(1, 0, 1, 1, 4, 1, 1, 0, 1), [(u, y)])
     np.testing.assert_allclose(friction.knots, sigma_v * np.array([-1.0, -0.25, 0.25, 1.0]))
     sigma_y = np.std(y - 0.5)
@@ -72,6 +74,23 @@ def test_knots_and_thresholds_are_placed_from_the_records_by_the_rule():
     np.testing.assert_allclose(three.knots, sigma_v * np.array([-0.25, 0.25, 1.0]))
     other = bonl.Hammerstein(2, 1, 1, 2)
     assert bonl.place_from_data(other, [(u, y)]) is other
+
+
+def test_only_an_integrators_folds_are_also_scored_with_their_state_estimated():
+    """Under cross-validation every candidate with ni = 1, and no other, is scored with the folds' state
+    measured and estimated; under the last quarter's scheme none is estimated."""
+    truth = bonl.ARX(1, 0, 1, 1, b=[0.05], a=[-0.6])  # an integrator behind a first-order lag
+    u, y = _record(truth, 1200, 9, noise=0.02)
+    found = bonl.search(u, y, budget=60, families=2)
+    rows = list(zip(found.table, found.settings))
+    assert all(row.orders.get("ni", 0) == 1 for row, setting in rows if "fold_initial_state" in setting)
+    assert any(setting.get("fold_initial_state") == "estimated" for _, setting in rows)
+    scored = {(row.name, tuple(row.orders.items()), setting.get("fold_initial_state", "measured"))
+              for row, setting in rows if row.orders.get("ni", 0) == 1}
+    assert any((name, orders, "estimated") in scored for name, orders, state in scored if state == "measured")
+    assert "fold_initial_state" not in found.setting  # the refit keeps identify's own state
+    assert structure_search._fold_states(bonl.ARX(1, 0, 1, 1), False) == ("measured",)
+    assert structure_search._fold_states(bonl.ARX(1, 0, 1, 0), True) == ("measured",)
 
 
 def test_the_scheme_is_cross_validation_on_short_records_and_the_last_quarter_on_long_ones():

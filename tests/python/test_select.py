@@ -211,6 +211,10 @@ def test_progress_bar_on_request(capsys):
      "folds must be >= 2, got 1"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, criterion="cross_validation", folds=True),
      "folds must be an integer >= 2, got True"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, criterion="cross_validation", fold_initial_state="zero"),
+     "fold_initial_state must be 'measured' or 'estimated', got 'zero'"),
+    (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, fold_initial_state="estimated"),
+     "fold_initial_state 'estimated' applies to criterion 'cross_validation' only, got criterion 'validation'"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, validation_fraction=1.0), r"validation_fraction must be in \(0, 1\)"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=-1), "window must be an integer >= 0, got -1"),
     (lambda u, y: bonl.select([bonl.ARX(2, 1, 0)], u, y, window=2.5), "window must be an integer >= 0, got 2.5"),
@@ -224,7 +228,8 @@ def test_progress_bar_on_request(capsys):
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1]), "ARX takes the orders na, nb, nk, ni; missing: nk"),
     (lambda u, y: bonl.grid(bonl.ARX, na=[1], nb=[1], nk=[0], r=[2]), "unknown: r"),
     (lambda u, y: bonl.grid(int, na=[1]), "model_class must be one of bonl.MODELS"),
-], ids=["empty", "not a model", "criterion", "one fold", "boolean folds", "fraction", "negative window", "fractional window", "window with aic",
+], ids=["empty", "not a model", "criterion", "one fold", "boolean folds", "fold state",
+        "fold state without folds", "fraction", "negative window", "fractional window", "window with aic",
         "window too long", "no y", "not a pair", "identify option", "grid missing",
         "grid unknown", "grid class"])
 def test_bad_input_is_a_value_error(call, message):
@@ -257,12 +262,19 @@ def test_a_model_whose_free_run_diverges_beyond_the_measured_inputs_is_not_chose
         bonl.select(candidates[:1], u, y)
 
 
-def test_cross_validation_survives_pickling_as_a_dask_worker_receives_it():
+@pytest.mark.parametrize("fold_initial_state", ["measured", "estimated"])
+def test_cross_validation_survives_pickling_as_a_dask_worker_receives_it(fold_initial_state):
     import pickle
     _, u, y = _system()
-    data = bonl._bonl._selection_data(u, y, criterion="cross_validation", folds=4, window=3)
+    data = bonl._bonl._selection_data(u, y, criterion="cross_validation", folds=4, window=3,
+                                      fold_initial_state=fold_initial_state)
     copy = pickle.loads(pickle.dumps(data))
     structure = bonl.Hammerstein(2, 1, 2, 2)
     original, received = bonl._bonl._score_candidate(structure, data), bonl._bonl._score_candidate(structure, copy)
     assert len(original[5]) == 4
     assert received[0] == original[0] and received[5] == original[5]
+    # The folds' state travels with the data: the other state scores differently.
+    other = bonl._bonl._selection_data(u, y, criterion="cross_validation", folds=4, window=3,
+                                       fold_initial_state="estimated" if fold_initial_state == "measured"
+                                       else "measured")
+    assert bonl._bonl._score_candidate(structure, other)[0] != received[0]

@@ -90,7 +90,13 @@ struct SelectOptions {
   /// values, and scored after them) instead of as the continuation of its record simulated from rest;
   /// 0: no window.
   Eigen::Index window = 0;
-  int folds = 5;             ///< CrossValidation only: the blocks every record is cut into, each held out once (>= 2)
+  int folds = 5;  ///< CrossValidation only: the blocks every record is cut into, each held out once (>= 2)
+  /// CrossValidation only: where the folds' fit parts take their state at the end of their
+  /// initialisation window (IdentifyOptions::initial_state): a part after a held-out block starts in
+  /// motion, and an integrating model's state there is its position, which the window's noisy measured
+  /// outputs set poorly (InitialState::Estimated estimates it beside the parameters). The refit on all
+  /// the records keeps identify's own.
+  InitialState fold_initial_state = InitialState::Measured;
   unsigned threads = 0;      ///< select()'s threads; 0: one per hardware thread
   IdentifyOptions identify;  ///< for every identification
 };
@@ -167,6 +173,10 @@ class SelectionData {
                                 "criterion '") +
                         to_string(options.criterion) + "'");
     detail::require(options.folds >= 2, "select: folds must be >= 2, got " + std::to_string(options.folds));
+    detail::require(options.fold_initial_state == InitialState::Measured || cross_validation,
+                    std::string("select: fold_initial_state 'estimated' applies to criterion 'cross_validation' only, "
+                                "got criterion '") +
+                        to_string(options.criterion) + "'");
     options.identify.validate();
     m_checked.emplace(records, 0);
     m_refit_identify = options.identify;
@@ -242,6 +252,7 @@ class SelectionData {
     m_fold_identify = m_options.identify;
     m_fold_identify.initialisation_window =
         std::max({m_options.identify.initialisation_window, m_options.window, kFoldFitWindow});
+    m_fold_identify.initial_state = m_options.fold_initial_state;
     const Eigen::Index fit_window = m_fold_identify.initialisation_window;
     const auto edge = [&](Eigen::Index n, int f) {
       return static_cast<Eigen::Index>(std::llround(static_cast<double>(n) * f / m_options.folds));

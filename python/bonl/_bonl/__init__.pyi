@@ -2697,7 +2697,7 @@ class _SelectionData:
     """
     The records and options of a selection, checked once (bonl::SelectionData); made by _selection_data.
     """
-    def __getstate__(self) -> tuple[list, str, float, int, int, int, str, typing.Any, float | None, int, bool, typing.Any, int]:
+    def __getstate__(self) -> tuple[list, str, float, int, int, str, int, str, typing.Any, float | None, int, bool, typing.Any, int]:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
@@ -2836,9 +2836,9 @@ def _select(candidates: collections.abc.Sequence[BoucWenFeedback], data: _Select
     """
     C++'s bonl::select over candidates of one model class, on its own threads. Returns (table, best): the rows best first as (structure, _score_candidate's tuple), and the best refitted on all the records.
     """
-def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, folds: typing.Any = 5, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> _SelectionData:
+def _selection_data(u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, criterion: str = 'validation', validation_fraction: typing.SupportsFloat | typing.SupportsIndex = 0.25, window: typing.Any = 0, folds: typing.Any = 5, fold_initial_state: str = 'measured', passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> _SelectionData:
     """
-    bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. The keyword arguments after window are identify's.
+    bonl.select's records and options checked once (bonl::SelectionData): ValueError naming the bad one. The keyword arguments after fold_initial_state are identify's.
     """
 @typing.overload
 def identify(model: ARX, u: numpy.typing.ArrayLike | None = None, y: numpy.typing.ArrayLike | None = None, *, records: collections.abc.Sequence[tuple[numpy.typing.ArrayLike, numpy.typing.ArrayLike]] | None = None, c0: typing.SupportsFloat | typing.SupportsIndex | None = None, backlash_hold: typing.SupportsInt | typing.SupportsIndex | None = None, passes: typing.SupportsInt | typing.SupportsIndex = 1, method: str = 'output_error', forgetting: float | tuple[float, int, float] | str | None = None, p0: typing.SupportsFloat | typing.SupportsIndex | None = None, refine_iterations: typing.SupportsInt | typing.SupportsIndex = 100, normalise: bool = True, operating_point: str | None = None, initialisation_window: typing.SupportsInt | typing.SupportsIndex = 0) -> ARX:
